@@ -1,0 +1,105 @@
+// Entry point of the page side. Starts (or adopts) the grading worker once per
+// tab, and initialises every exercise on every page, including pages reached by
+// mkdocs-material's instant navigation.
+
+import { initExercise } from "./widgets.js";
+import { Progress } from "./progress.js";
+import { Runtime } from "./runtime.js";
+
+const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
+const progress = new Progress(siteRoot);
+
+function servedFromFile() {
+  return location.protocol === "file:";
+}
+
+function showRuntimeProblem(message) {
+  for (const el of document.querySelectorAll("[data-exercise-id]")) {
+    const box = el.querySelector('[data-role="feedback"]');
+    if (box && !box.textContent) {
+      const p = document.createElement("p");
+      p.className = "wb-runtime-problem";
+      p.innerHTML = message;
+      box.replaceChildren(p);
+    }
+  }
+}
+
+const FILE_MESSAGE =
+  "Exercises are graded by Python running in your browser, which cannot start from a file opened directly. " +
+  "Serve the folder instead: <code>python3 -m http.server --directory site 8000</code>, then open " +
+  "<a href='http://127.0.0.1:8000/'>http://127.0.0.1:8000/</a>.";
+
+let runtime = null;
+if (servedFromFile() || typeof Worker === "undefined") {
+  document.documentElement.dataset.workbookRuntime = "failed";
+} else {
+  const early = window.__workbookEarly || null;
+  window.__workbookEarly = null;
+  runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
+}
+window.workbook = { runtime, progress };
+
+const offline = {
+  status: "error",
+  tag: "runtime",
+  message: "Python cannot run on a page opened from a file. Serve the site with: python3 -m http.server --directory site 8000",
+  data: {},
+};
+const shared = {
+  runtime: runtime || { request: async () => offline },
+  progress,
+  renderMath,
+};
+
+function renderMath(scope) {
+  const katex = window.katex;
+  if (!katex) return;
+  for (const el of scope.querySelectorAll(".arithmatex")) {
+    if (el.dataset.rendered) continue;
+    const tex = el.textContent.trim();
+    const display = el.tagName === "DIV";
+    const body = display ? tex.replace(/^\\\[|\\\]$/g, "") : tex.replace(/^\\\(|\\\)$/g, "");
+    try {
+      katex.render(body, el, { displayMode: display, throwOnError: false });
+      el.dataset.rendered = "true";
+    } catch {
+      /* leave the TeX source visible */
+    }
+  }
+}
+
+function initPage() {
+  renderMath(document);
+  for (const el of document.querySelectorAll("[data-exercise-id]")) initExercise(el, shared);
+  if (servedFromFile()) showRuntimeProblem(FILE_MESSAGE);
+  else if (runtime?.failure) showRuntimeProblem(runtime.failure);
+  if (progress.notice) showNotice(progress.notice);
+}
+
+function showNotice(text) {
+  const main = document.querySelector(".md-content__inner");
+  if (!main || main.querySelector(".wb-notice")) return;
+  const div = document.createElement("div");
+  div.className = "admonition warning wb-notice";
+  div.setAttribute("role", "alert");
+  div.innerHTML = '<p class="admonition-title">Progress</p>';
+  const p = document.createElement("p");
+  p.textContent = text;
+  div.append(p);
+  main.prepend(div);
+}
+
+document.addEventListener("workbook:runtime", (event) => {
+  if (event.detail === "failed") showRuntimeProblem(runtime.failure);
+});
+document.addEventListener("workbook:storage-error", (event) => showNotice(event.detail));
+
+// mkdocs-material emits every page (the first and each instant navigation) on document$.
+if (window.document$ && typeof window.document$.subscribe === "function") {
+  window.document$.subscribe(() => initPage());
+} else if (document.readyState === "loading") {
+  document.addEventListener("DOMContentLoaded", initPage);
+} else {
+  initPage();
+}

@@ -1,0 +1,64 @@
+"""The exercise bank: one module per chapter, ``chN_topic.py``.
+
+Each chapter module defines ``EXERCISES``, a tuple of exercises in page order.
+Chapters are imported lazily, so grading exercise 4.2 imports chapter 4 only.
+"""
+
+from __future__ import annotations
+
+import importlib
+import pkgutil
+from functools import cache
+
+from ..exercises import Exercise
+
+
+@cache
+def _chapter_modules() -> dict[int, str]:
+    found = {}
+    for info in pkgutil.iter_modules(__path__):
+        head, _, _ = info.name.partition("_")
+        if head.startswith("ch") and head[2:].isdigit():
+            found[int(head[2:])] = f"{__name__}.{info.name}"
+    return dict(sorted(found.items()))
+
+
+@cache
+def chapter(n: int) -> tuple[Exercise, ...]:
+    """The exercises of chapter ``n``, in page order."""
+    name = _chapter_modules().get(n)
+    if name is None:
+        raise KeyError(f"no chapter {n}")
+    exercises = importlib.import_module(name).EXERCISES
+    for ex in exercises:
+        if ex.id.split(".")[0] != str(n):
+            raise ValueError(f"exercise {ex.id} sits in chapter {n}'s module")
+    return exercises
+
+
+def chapters() -> list[int]:
+    return list(_chapter_modules())
+
+
+def get(exercise_id: str) -> Exercise:
+    """Look an exercise up by its id, e.g. ``get("4.2")``."""
+    head, dot, tail = str(exercise_id).partition(".")
+    if not (dot and head.isdigit() and tail.isdigit()):
+        raise KeyError(f"not an exercise id: {exercise_id!r}")
+    for ex in chapter(int(head)) if int(head) in _chapter_modules() else ():
+        if ex.id == exercise_id:
+            return ex
+    raise KeyError(f"no exercise {exercise_id}")
+
+
+def all_exercises() -> list[Exercise]:
+    """Every exercise in the workbook, in order; ids are checked to be unique."""
+    out: list[Exercise] = []
+    seen: set[str] = set()
+    for n in chapters():
+        for ex in chapter(n):
+            if ex.id in seen:
+                raise ValueError(f"duplicate exercise id {ex.id}")
+            seen.add(ex.id)
+            out.append(ex)
+    return out

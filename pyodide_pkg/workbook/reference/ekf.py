@@ -1,0 +1,160 @@
+"""The extended Kalman filter for a planar robot: predict with the velocity
+model, update with a range-and-bearing landmark sighting.
+
+The state is the pose ``(x, y, theta)``; matrices are lists of rows.
+"""
+
+from __future__ import annotations
+
+import math
+
+from .linalg import Matrix, add, identity, inverse, matmul, matvec, sub, transpose
+
+
+def motion_model(state, v: float, omega: float, dt: float) -> tuple[float, float, float]:
+    """Drive for ``dt`` seconds at speed ``v`` and turn rate ``omega``.
+
+    x' = x + v cosθ dt,  y' = y + v sinθ dt,  θ' = θ + ω dt.
+
+    Exercise 3.1: from the origin facing east, 1 m/s for 1 s.
+
+    >>> motion_model((0, 0, 0), 1, 0, 1)
+    (1.0, 0.0, 0)
+
+    Exercise 3.2: facing 45°, 2 m/s for 0.5 s.
+
+    >>> [round(s, 4) for s in motion_model((0, 0, math.pi / 4), 2, 0, 0.5)]
+    [0.7071, 0.7071, 0.7854]
+    """
+    x, y, theta = state
+    return (x + v * math.cos(theta) * dt,
+            y + v * math.sin(theta) * dt,
+            theta + omega * dt)
+
+
+def motion_jacobian(state, v: float, omega: float, dt: float) -> Matrix:
+    """F = ∂f/∂x of the velocity model at ``state``.
+
+    Only the heading column differs from the identity.
+
+    Exercise 3.3: facing north, v = 1, dt = 0.5 gives F(1,3) = −0.5.
+
+    >>> round(motion_jacobian((0, 0, math.pi / 2), 1, 0, 0.5)[0][2], 12)
+    -0.5
+    >>> motion_jacobian((0, 0, 0), 1, 0, 1)
+    [[1.0, 0.0, -0.0], [0.0, 1.0, 1.0], [0.0, 0.0, 1.0]]
+    """
+    _, _, theta = state
+    return [[1.0, 0.0, -v * math.sin(theta) * dt],
+            [0.0, 1.0, v * math.cos(theta) * dt],
+            [0.0, 0.0, 1.0]]
+
+
+def ekf_predict(state, P: Matrix, v: float, omega: float, dt: float, Q: Matrix):
+    """The predict step: move the pose, then P⁻ = F P Fᵀ + Q.
+
+    Returns ``(state', P')``; F is taken at the *old* state.
+
+    Exercise 3.4: P⁻(1,1) = 1.01 and P⁻(2,2) = 1.11.
+
+    >>> P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]
+    >>> Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
+    >>> s, Pm = ekf_predict((0, 0, 0), P, 1, 0, 1, Q)
+    >>> s
+    (1.0, 0.0, 0)
+    >>> [[round(p, 4) + 0.0 for p in row] for row in Pm]
+    [[1.01, 0.0, 0.0], [0.0, 1.11, 0.1], [0.0, 0.1, 0.101]]
+    """
+    F = motion_jacobian(state, v, omega, dt)
+    P_pred = add(matmul(matmul(F, P), transpose(F)), Q)
+    return motion_model(state, v, omega, dt), P_pred
+
+
+def range_bearing(state, landmark) -> tuple[float, float]:
+    """h(x): the range and bearing from the pose to a landmark at (lx, ly).
+
+    φ = atan2(dy, dx) − θ, in radians (not wrapped).
+
+    Exercises 4.1 and 4.2: from the origin facing east, the landmark (3, 4)
+    is 5 m away at 53.13°.
+
+    >>> r, phi = range_bearing((0, 0, 0), (3, 4))
+    >>> r, round(math.degrees(phi), 2)
+    (5.0, 53.13)
+    """
+    x, y, theta = state
+    dx, dy = landmark[0] - x, landmark[1] - y
+    return math.hypot(dx, dy), math.atan2(dy, dx) - theta
+
+
+def measurement_jacobian(state, landmark) -> Matrix:
+    """H = ∂h/∂x of the range-bearing model (2×3).
+
+    With dx = lx − x, dy = ly − y, q = dx² + dy²:
+    H = [[−dx/√q, −dy/√q, 0], [dy/q, −dx/q, −1]].
+
+    Exercise 4.3: H(1,1) = −3/5 for the landmark (3, 4) seen from the origin.
+
+    >>> [[round(h, 4) for h in row] for row in measurement_jacobian((0, 0, 0), (3, 4))]
+    [[-0.6, -0.8, 0.0], [0.16, -0.12, -1.0]]
+    """
+    x, y, _ = state
+    dx, dy = landmark[0] - x, landmark[1] - y
+    q = dx * dx + dy * dy
+    r = math.sqrt(q)
+    return [[-dx / r, -dy / r, 0.0],
+            [dy / q, -dx / q, -1.0]]
+
+
+def ekf_update(x: float, P: float, z: float, R: float) -> tuple[float, float]:
+    """The scalar update with h(x) = x (so H = 1): K = P/(P+R).
+
+    Returns ``(x + K(z − x), (1 − K) P)``.
+
+    Exercise 4.5, with the numbers of chapter 9: K = 0.5/0.7 ≈ 0.714.
+
+    >>> [round(v, 4) for v in ekf_update(5.866, 0.5, 5.7, 0.2)]
+    [5.7474, 0.1429]
+
+    A perfect sensor (R = 0) hands over the measurement (exercise 4.6).
+
+    >>> ekf_update(2.0, 1.0, 3.0, 0.0)
+    (3.0, 0.0)
+    """
+    K = P / (P + R)
+    return x + K * (z - x), (1 - K) * P
+
+
+def ekf_update_matrix(x, P: Matrix, z, h, H: Matrix, R: Matrix):
+    """The general update, given the predicted measurement ``h`` = h(x⁻).
+
+    y = z − h,  S = H P Hᵀ + R,  K = P Hᵀ S⁻¹,  x⁺ = x + K y,  P⁺ = (I − K H) P.
+    Returns ``(x_new, P_new)`` with ``x_new`` a list.
+
+    Exercise 4.4's numbers: h = (5, 0.9273), z = (4.8, 0.95), so the range
+    innovation is −0.2 and the update pulls the robot toward the landmark
+    at (3, 4) (its x and y grow).
+
+    >>> x0 = [0.0, 0.0, 0.0]
+    >>> P0 = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]
+    >>> H = measurement_jacobian(x0, (3, 4))
+    >>> R = [[0.1, 0], [0, 0.01]]
+    >>> xn, Pn = ekf_update_matrix(x0, P0, [4.8, 0.95], [5, 0.9273], H, R)
+    >>> [round(v, 4) for v in xn]
+    [0.1333, 0.1273, -0.0151]
+    >>> round(Pn[0][0], 4) < 1
+    True
+
+    With one state and H = 1 it is :func:`ekf_update`.
+
+    >>> xn, Pn = ekf_update_matrix([5.866], [[0.5]], [5.7], [5.866], [[1]], [[0.2]])
+    >>> round(xn[0], 4), round(Pn[0][0], 4)
+    (5.7474, 0.1429)
+    """
+    innovation = [zi - hi for zi, hi in zip(z, h)]
+    Ht = transpose(H)
+    S = add(matmul(matmul(H, P), Ht), R)
+    K = matmul(matmul(P, Ht), inverse(S))
+    x_new = [xi + di for xi, di in zip(x, matvec(K, innovation))]
+    P_new = matmul(sub(identity(len(x)), matmul(K, H)), P)
+    return x_new, P_new

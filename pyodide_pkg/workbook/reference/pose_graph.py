@@ -1,0 +1,152 @@
+"""Pose-graph SLAM in the plane: variables, edge errors, information, cost.
+
+A pose is ``(x, y, theta)``; an odometry edge from pose i to pose j carries the
+measured motion ``z`` expressed in the frame of pose i.
+"""
+
+from __future__ import annotations
+
+import math
+from typing import Iterable, Sequence
+
+from .linalg import Matrix, Vector, inverse, matvec
+
+Pose = Sequence[float]
+
+
+def pose_graph_variables(n_poses: int, pose_dof: int = 3) -> int:
+    """How many unknowns a graph of ``n_poses`` poses has: one per degree of freedom.
+
+    Exercise 5.1: 100 planar poses of 3 DOF each.
+
+    >>> pose_graph_variables(100)
+    300
+    >>> pose_graph_variables(100, pose_dof=6)
+    600
+    """
+    return n_poses * pose_dof
+
+
+def gauss_newton_size(n_poses: int, pose_dof: int, n_landmarks: int = 0, landmark_dof: int = 0) -> int:
+    """The side of the square matrix H in the Gauss–Newton step H Δx = b.
+
+    H has one row (and one column) per unknown, poses and landmarks alike.
+
+    Exercise 5.5: 1000 poses of 6 DOF and 500 landmarks of 3 DOF.
+
+    >>> gauss_newton_size(1000, 6, 500, 3)
+    7500
+    """
+    return pose_graph_variables(n_poses, pose_dof) + n_landmarks * landmark_dof
+
+
+def wrap_angle(a: float) -> float:
+    """Bring an angle into (−π, π].
+
+    >>> round(wrap_angle(3 * math.pi / 2), 4)
+    -1.5708
+    >>> wrap_angle(math.pi) == math.pi
+    True
+    """
+    w = math.atan2(math.sin(a), math.cos(a))
+    return math.pi if w == -math.pi else w
+
+
+def compose_pose(a: Pose, b: Pose) -> tuple[float, float, float]:
+    """a ⊕ b: pose ``b``, given in the frame of ``a``, expressed in the world.
+
+    >>> [round(v, 4) + 0.0 for v in compose_pose((1, 0, math.pi / 2), (1, 0, 0))]
+    [1.0, 1.0, 1.5708]
+    """
+    x, y, t = a
+    c, s = math.cos(t), math.sin(t)
+    return (x + c * b[0] - s * b[1], y + s * b[0] + c * b[1], wrap_angle(t + b[2]))
+
+
+def invert_pose(a: Pose) -> tuple[float, float, float]:
+    """a⁻¹, the pose with a ⊕ a⁻¹ = (0, 0, 0).
+
+    >>> [round(v, 4) + 0.0 for v in invert_pose((1, 0, math.pi / 2))]
+    [0.0, 1.0, -1.5708]
+    """
+    x, y, t = a
+    c, s = math.cos(t), math.sin(t)
+    return (-c * x - s * y, s * x - c * y, wrap_angle(-t))
+
+
+def relative_pose(xi: Pose, xj: Pose) -> tuple[float, float, float]:
+    """xi⁻¹ ⊕ xj: where pose j sits as seen from pose i (what odometry should read).
+
+    >>> [round(v, 4) + 0.0 for v in relative_pose((0, 0, 0), (1.1, 0.05, 0.02))]
+    [1.1, 0.05, 0.02]
+    >>> [round(v, 4) + 0.0 for v in relative_pose((1, 1, math.pi / 2), (1, 2, math.pi / 2))]
+    [1.0, 0.0, 0.0]
+    """
+    return compose_pose(invert_pose(xi), xj)
+
+
+def edge_error_simple(xi: Pose, xj: Pose, z: Pose) -> list[float]:
+    """The workbook's simple edge error e = z − (xj − xi), component by component.
+
+    It is exact when pose i sits at the origin facing east, and a fair
+    approximation while headings stay small.
+
+    Exercise 5.2: odometry said (1, 0, 0); the poses differ by (1.1, 0.05, 0.02).
+
+    >>> [round(v, 4) + 0.0 for v in edge_error_simple((0, 0, 0), (1.1, 0.05, 0.02), (1, 0, 0))]
+    [-0.1, -0.05, -0.02]
+    """
+    return [zk - (bj - ai) for zk, ai, bj in zip(z, xi, xj)]
+
+
+def edge_error(xi: Pose, xj: Pose, z: Pose) -> list[float]:
+    """The relative-pose edge error e = z ⊖ (xi⁻¹ ⊕ xj), angle wrapped.
+
+    Here a ⊖ b = b⁻¹ ⊕ a, the pose of ``a`` seen from ``b``: the measured
+    motion z seen from the predicted motion h = xi⁻¹ ⊕ xj. It is zero exactly
+    when h = z, and it does not change if the whole graph is moved or turned.
+    To first order it matches :func:`edge_error_simple` when pose i is the
+    origin (exercise 5.2: −0.101 against −0.1 in x).
+
+    >>> [round(v, 3) + 0.0 for v in edge_error((0, 0, 0), (1.1, 0.05, 0.02), (1, 0, 0))]
+    [-0.101, -0.048, -0.02]
+    >>> e = edge_error((2, 3, 1.0), compose_pose((2, 3, 1.0), (1, 0, 0)), (1, 0, 0))
+    >>> [round(v, 12) + 0.0 for v in e]
+    [0.0, 0.0, 0.0]
+    """
+    h = relative_pose(xi, xj)
+    return list(relative_pose(h, z))
+
+
+def information_matrix(sigma: Matrix) -> Matrix:
+    """Ω = Σ⁻¹: small variance, large information.
+
+    Exercise 5.3: Σ = diag(0.01, 0.01, 0.001) gives Ω = diag(100, 100, 1000).
+
+    >>> [[round(w, 6) + 0.0 for w in row] for row in information_matrix(
+    ...     [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]])]
+    [[100.0, 0.0, 0.0], [0.0, 100.0, 0.0], [0.0, 0.0, 1000.0]]
+    """
+    return inverse(sigma)
+
+
+def edge_cost(e: Vector, omega: Matrix) -> float:
+    """eᵀ Ω e, the squared error of one edge weighted by its information.
+
+    Exercise 5.2's error weighted by exercise 5.3's Ω:
+    100·0.01 + 100·0.0025 + 1000·0.0004 = 1.65.
+
+    >>> round(edge_cost([-0.1, -0.05, -0.02], [[100, 0, 0], [0, 100, 0], [0, 0, 1000]]), 6)
+    1.65
+    """
+    return sum(ek * wk for ek, wk in zip(e, matvec(omega, e)))
+
+
+def total_cost(edges: Iterable[tuple[Vector, Matrix]]) -> float:
+    """F(x) = Σ eᵀ Ω e over all edges, each given as a pair (e, Ω).
+
+    >>> W = [[100, 0, 0], [0, 100, 0], [0, 0, 1000]]
+    >>> round(total_cost([([-0.1, -0.05, -0.02], W), ([0.1, 0, 0], W)]), 6)
+    2.65
+    """
+    return sum(edge_cost(e, omega) for e, omega in edges)

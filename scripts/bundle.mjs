@@ -1,0 +1,16 @@
+// Bundle the page's JavaScript with esbuild: docs/assets/js -> docs/assets/dist.
+// main.js is an ES module with code splitting (the CodeMirror editor loads only
+// on pages with a Build exercise); worker.js is a classic worker script.
+import { build } from "esbuild";
+
+const common = { bundle: true, minify: true, sourcemap: true, target: ["es2020"], logLevel: "warning", legalComments: "linked" };
+
+await build({
+  ...common,
+  entryPoints: { workbook: "docs/assets/js/main.js" },
+  outdir: "docs/assets/dist",
+  format: "esm",
+  splitting: true,
+  chunkNames: "chunks/[name]-[hash]",
+});
+await build({ ...common, entryPoints: { worker: "docs/assets/js/worker.js" }, outdir: "docs/assets/dist", format: "iife" });
