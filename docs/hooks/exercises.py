@@ -17,17 +17,24 @@ A chapter page writes an exercise as a block::
 The hook renders the prompt, hint and solution with the site's own Markdown
 extensions, asks the grading package (``workbook.render``) for the widget's
 HTML, and fails the build on an unknown, duplicate or missing exercise id.
+
+A line ``::: figure NAME`` (alone on its line, outside exercise blocks) places
+an interactive figure: its first frame, controls and readouts come from
+``workbook.figures.html``; an unknown name fails the build.
 """
 
 from __future__ import annotations
 
+import json
 import logging
 import re
+from pathlib import Path
 
 import markdown
 from mkdocs.exceptions import PluginError
 
-from workbook import bank
+from workbook import bank, figures
+from workbook.figures.html import figure_html
 from workbook.render import dom_id, exercise_html
 
 log = logging.getLogger("mkdocs.hooks.exercises")
@@ -36,10 +43,16 @@ OPEN = re.compile(r"^::: exercise\s+(?P<id>\S+)\s*(?:\|\s*(?P<title>.*?))?\s*$")
 SECTION = re.compile(r"^::: (?P<name>hint|solution)\s*$")
 CLOSE = re.compile(r"^:::\s*$")
 SLOT = '<div data-wb-slot="{id}"></div>'
+FIGURE = re.compile(r"^::: figure\s+(?P<name>\S+)\s*$")
+FIGURE_SLOT = '<div data-wb-figure-slot="{name}"></div>'
 
 _md: markdown.Markdown | None = None
 _placed: dict[str, str] = {}  # exercise id -> page that holds it
 _slots: dict[str, dict[str, str]] = {}  # page -> exercise id -> html
+_figure_slots: dict[str, dict[str, str]] = {}  # page -> figure name -> html
+_pages: dict[str, tuple[str, str]] = {}  # page -> (url, title), for the progress manifest
+_nav_order: list[str] = []  # pages in navigation order
+MANIFEST = "assets/exercises.json"  # which exercise ids each chapter holds (read by progress-ui.js)
 
 
 def _convert(text: str) -> str:
@@ -58,6 +71,8 @@ def on_config(config, **kwargs):
     _md = markdown.Markdown(extensions=config.markdown_extensions, extension_configs=config.mdx_configs)
     _placed.clear()
     _slots.clear()
+    _figure_slots.clear()
+    _pages.clear()
     return config
 
 
@@ -112,7 +127,26 @@ def on_page_markdown(text, page, config, files, **kwargs):
     for start, end, block in reversed(replacements):
         out_lines[start : end + 1] = [block]
     _slots[path] = slots
-    return "\n".join(out_lines)
+    return "\n".join(_place_figures(out_lines, path))
+
+
+def _place_figures(lines: list[str], path: str) -> list[str]:
+    """Swap each ``::: figure NAME`` line for a slot and remember its HTML."""
+    placed = _figure_slots.setdefault(path, {})
+    placed.clear()
+    out = []
+    for line in lines:
+        m = FIGURE.match(line)
+        if m:
+            name = m["name"]
+            if name not in figures.names():
+                raise PluginError(f"{path}: unknown figure {name!r} (known: {', '.join(figures.names())})")
+            if name in placed:
+                raise PluginError(f"{path}: figure {name!r} is placed twice on this page")
+            placed[name] = figure_html(name)
+            line = "\n" + FIGURE_SLOT.format(name=name) + "\n"
+        out.append(line)
+    return out
 
 
 def on_page_content(html, page, config, files, **kwargs):
@@ -122,6 +156,11 @@ def on_page_content(html, page, config, files, **kwargs):
         if slot not in html:
             raise PluginError(f"{page.file.src_uri}: the widget slot of exercise {ex_id} was lost in rendering")
         html = html.replace(slot, widget)
+    for name, figure in _figure_slots.get(page.file.src_uri, {}).items():
+        slot = FIGURE_SLOT.format(name=name)
+        if slot not in html:
+            raise PluginError(f"{page.file.src_uri}: the slot of figure {name!r} was lost in rendering")
+        html = html.replace(slot, figure)
     return html
 
 
@@ -129,3 +168,27 @@ def on_post_build(config, **kwargs):
     missing = [ex.id for ex in bank.all_exercises() if ex.id not in _placed]
     if missing:
         raise PluginError(f"exercises with no page: {', '.join(missing)} (place each with '::: exercise ID')")
+    _write_manifest(config)
+
+
+def on_nav(nav, config, files, **kwargs):
+    _nav_order[:] = [page.file.src_uri for page in nav.pages]
+    return nav
+
+
+def on_page_context(context, page, config, nav, **kwargs):
+    _pages[page.file.src_uri] = (page.url, page.title or "")
+    return context
+
+
+def _write_manifest(config) -> None:
+    """site/assets/exercises.json: the chapters in navigation order and the ids on each."""
+    order = {src: i for i, src in enumerate(_nav_order)}
+    chapters = [
+        {"url": _pages[src][0], "title": _pages[src][1], "ids": list(ids)}
+        for src, ids in sorted(_slots.items(), key=lambda item: (order.get(item[0], len(order)), item[0]))
+        if ids and src in _pages
+    ]
+    out = Path(config.site_dir) / MANIFEST
+    out.parent.mkdir(parents=True, exist_ok=True)
+    out.write_text(json.dumps({"version": 1, "chapters": chapters}, ensure_ascii=False, separators=(",", ":")))

@@ -77,7 +77,7 @@ def _normalise(text: str) -> tuple[str, str | None]:
     s = re.sub(r"√\s*(\d+(?:\.\d*)?|[a-z]+)", r"sqrt(\1)", s)
     s = s.replace("√", "sqrt")
     # implicit products the way people write them: 2pi, 2(3), (1)(2), 2sqrt(3)
-    s = re.sub(r"(?<=\d)\s*(?=pi\b|tau\b|sqrt|sin|cos|tan|\()", "*", s)
+    s = re.sub(r"(?<![\w.])(\d+(?:\.\d*)?)\s*(?=pi\b|tau\b|sqrt|sin|cos|tan|\()", r"\1*", s)
     s = re.sub(r"\)\s*(?=[\d(a-z])", ")*", s)
     return s, unit
 

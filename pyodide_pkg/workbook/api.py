@@ -1,7 +1,9 @@
 """The one entry point the page's worker calls: a JSON request in, JSON out.
 
 Requests: ``{"op": "grade", "exercise": "4.2", "answer": ...}`` for Derive, Trace,
-Debug and Design; ``{"op": "run", "exercise": "0.5", "code": "..."}`` for Build.
+Debug and Design; ``{"op": "run", "exercise": "0.5", "code": "..."}`` for Build;
+``{"op": "figure", "figure": "rotation-2d", "params": {"theta": 30}}`` for a
+figure's next frame (``data`` holds its ``svg``, ``readouts`` and ``flags``).
 """
 
 from __future__ import annotations
@@ -17,6 +19,8 @@ def dispatch(request: dict[str, Any]) -> Result:
     op = request.get("op")
     if op == "ping":
         return Result("correct", "pong")
+    if op == "figure":
+        return _figure(request)
     if op not in ("grade", "run"):
         return Result("error", f"Unknown request {op!r}.")
     try:
@@ -32,6 +36,16 @@ def dispatch(request: dict[str, Any]) -> Result:
     from .checkers import check
 
     return check(ex, request.get("answer"))
+
+
+def _figure(request: dict[str, Any]) -> Result:
+    from . import figures
+
+    try:
+        frame = figures.render(str(request.get("figure")), request.get("params"))
+    except figures.FigureError as err:
+        return Result("error", str(err), tag="figure")
+    return Result("correct", "", data=frame)
 
 
 def handle(raw: str) -> str:

@@ -5,13 +5,11 @@
 import { initExercise } from "./widgets.js";
 import { Progress } from "./progress.js";
 import { Runtime } from "./runtime.js";
+import { initProgressPage } from "./progress-ui.js";
+import { registerOffline } from "./offline.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
-
-function servedFromFile() {
-  return location.protocol === "file:";
-}
 
 function showRuntimeProblem(message) {
   for (const el of document.querySelectorAll("[data-exercise-id]")) {
@@ -19,19 +17,14 @@ function showRuntimeProblem(message) {
     if (box && !box.textContent) {
       const p = document.createElement("p");
       p.className = "wb-runtime-problem";
-      p.innerHTML = message;
+      p.textContent = message;
       box.replaceChildren(p);
     }
   }
 }
 
-const FILE_MESSAGE =
-  "Exercises are graded by Python running in your browser, which cannot start from a file opened directly. " +
-  "Serve the folder instead: <code>python3 -m http.server --directory site 8000</code>, then open " +
-  "<a href='http://127.0.0.1:8000/'>http://127.0.0.1:8000/</a>.";
-
 let runtime = null;
-if (servedFromFile() || typeof Worker === "undefined") {
+if (typeof Worker === "undefined") {
   document.documentElement.dataset.workbookRuntime = "failed";
 } else {
   const early = window.__workbookEarly || null;
@@ -39,15 +32,16 @@ if (servedFromFile() || typeof Worker === "undefined") {
   runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
 }
 window.workbook = { runtime, progress };
+registerOffline(siteRoot);
 
-const offline = {
+const noWorker = {
   status: "error",
   tag: "runtime",
-  message: "Python cannot run on a page opened from a file. Serve the site with: python3 -m http.server --directory site 8000",
+  message: "This browser cannot run the Python grader (no Web Worker support).",
   data: {},
 };
 const shared = {
-  runtime: runtime || { request: async () => offline },
+  runtime: runtime || { request: async () => noWorker },
   progress,
   renderMath,
 };
@@ -72,9 +66,10 @@ function renderMath(scope) {
 function initPage() {
   renderMath(document);
   for (const el of document.querySelectorAll("[data-exercise-id]")) initExercise(el, shared);
-  if (servedFromFile()) showRuntimeProblem(FILE_MESSAGE);
-  else if (runtime?.failure) showRuntimeProblem(runtime.failure);
+  if (!runtime) showRuntimeProblem(noWorker.message);
+  else if (runtime.failure) showRuntimeProblem(runtime.failure);
   if (progress.notice) showNotice(progress.notice);
+  initProgressPage(progress, siteRoot);
 }
 
 function showNotice(text) {

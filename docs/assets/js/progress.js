@@ -1,10 +1,18 @@
 // Learner progress in localStorage: namespaced per site, versioned, never lost.
 //
-// One record per exercise: {solved, revealed, solvedAfterReveal, attempts,
-// last, code, updated}. A value that cannot be read is set aside under a
-// backup key, never silently wiped; a full quota is reported, not swallowed.
+// One record per exercise: {solved, revealed, solvedAfterReveal, hinted,
+// attempts, last, code, draftOrder, updated}. A value that cannot be read is set
+// aside under a backup key, never silently wiped; a full quota is reported, not
+// swallowed (the record stays in memory and can still be exported).
+//
+// Export/import: a JSON file {format, version, exported, exercises}. An import is
+// checked field by field against FIELDS below (add a new record field there) and
+// merged per exercise, the newer `updated` winning; anything unexpected refuses
+// the whole file and changes nothing.
 
 export const SCHEMA_VERSION = 1;
+export const EXPORT_FORMAT = "robotics-math-workbook-progress";
+export const MAX_IMPORT_BYTES = 1_000_000;
 
 function storage() {
   try {
@@ -22,6 +30,82 @@ const MIGRATIONS = {
   // 0 -> 1 would go here: (data) => ({ ...data, version: 1 })
 };
 
+// ---- The record schema (used to validate imports) ---------------------------
+const DAY_MS = 86_400_000;
+const isBool = (v) => typeof v === "boolean";
+const isKeyList = (v) => Array.isArray(v) && v.length <= 50 && v.every((k) => typeof k === "string" && k.length <= 200);
+const FIELDS = {
+  solved: [isBool, "true or false"],
+  revealed: [isBool, "true or false"],
+  solvedAfterReveal: [isBool, "true or false"],
+  hinted: [isBool, "true or false"],
+  attempts: [(v) => Number.isSafeInteger(v) && v >= 0 && v <= 1_000_000, "a whole number from 0 to 1,000,000"],
+  last: [(v) => (typeof v === "string" && v.length <= 2000) || Number.isFinite(v) || isKeyList(v), "a short answer (text, number or list of step keys)"],
+  draftOrder: [isKeyList, "a list of step keys"],
+  code: [(v) => typeof v === "string" && v.length <= 100_000, "text of at most 100,000 characters"],
+  updated: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS, "a time (milliseconds since 1970) not in the future"],
+};
+const FORBIDDEN_KEYS = new Set(["__proto__", "constructor", "prototype"]);
+const isObject = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+
+class ImportError extends Error {}
+
+function checkKeys(obj, where) {
+  for (const key of Object.keys(obj)) {
+    if (FORBIDDEN_KEYS.has(key)) throw new ImportError(`${where} contains the forbidden key “${key}”.`);
+  }
+}
+
+function cleanRecord(id, raw) {
+  if (!isObject(raw)) throw new ImportError(`The entry for exercise ${id} is not an object.`);
+  checkKeys(raw, `The entry for exercise ${id}`);
+  const record = {};
+  for (const [field, value] of Object.entries(raw)) {
+    const rule = FIELDS[field];
+    if (!rule) throw new ImportError(`The entry for exercise ${id} has an unknown field “${field.slice(0, 40)}”.`);
+    if (!rule[0](value)) throw new ImportError(`In exercise ${id}, “${field}” must be ${rule[1]}.`);
+    record[field] = value;
+  }
+  return record;
+}
+
+/**
+ * Check the text of a progress file. Returns {ok: true, exercises} with clean
+ * records, or {ok: false, reason} saying what is wrong. `knownIds` (a Set) lists
+ * the site's exercises; ids outside it are refused.
+ */
+export function parseImport(text, knownIds) {
+  try {
+    if (typeof text !== "string") throw new ImportError("The file could not be read as text.");
+    if (text.length > MAX_IMPORT_BYTES) throw new ImportError(`The file is too large (over ${MAX_IMPORT_BYTES.toLocaleString("en")} characters); a progress file is much smaller.`);
+    let data;
+    try {
+      data = JSON.parse(text);
+    } catch {
+      throw new ImportError("The file is not valid JSON.");
+    }
+    if (!isObject(data)) throw new ImportError("The file does not hold a progress record (expected a JSON object).");
+    checkKeys(data, "The file");
+    if (data.format !== EXPORT_FORMAT) throw new ImportError("The file is not a Robotics Math Workbook progress export (its “format” is missing or different).");
+    if (!Number.isInteger(data.version) || data.version < 1) throw new ImportError("The file has no valid “version”.");
+    if (data.version > SCHEMA_VERSION) throw new ImportError(`The file was written by a newer version of the workbook (version ${data.version}); update this page first.`);
+    for (const key of Object.keys(data)) {
+      if (!["format", "version", "exported", "site", "exercises"].includes(key)) throw new ImportError(`The file has an unexpected entry “${key.slice(0, 40)}”.`);
+    }
+    if (!isObject(data.exercises)) throw new ImportError("The file has no “exercises” object.");
+    checkKeys(data.exercises, "The exercise list");
+    const exercises = {};
+    for (const [id, raw] of Object.entries(data.exercises)) {
+      if (knownIds && !knownIds.has(id)) throw new ImportError(`The file mentions exercise “${id.slice(0, 20)}”, which this workbook does not have.`);
+      exercises[id] = cleanRecord(id, raw);
+    }
+    return { ok: true, exercises };
+  } catch (err) {
+    if (err instanceof ImportError) return { ok: false, reason: err.message };
+    return { ok: false, reason: "The file could not be checked." };
+  }
+}
+
 export class Progress {
   constructor(siteRoot) {
     const scope = new URL(siteRoot).pathname.replace(/\/+$/, "") || "/";
@@ -29,6 +113,12 @@ export class Progress {
     this.store = storage();
     this.listeners = new Set();
     this.data = this.load();
+    // Another tab saved progress: take it over, so both tabs agree.
+    window.addEventListener("storage", (event) => {
+      if (event.key !== this.key || event.storageArea !== this.store) return;
+      this.data = this.load();
+      this.notify(null, null);
+    });
   }
 
   load() {
@@ -62,12 +152,21 @@ export class Progress {
     return this.data.exercises[id] || {};
   }
 
+  /** Every record, keyed by exercise id (a copy). */
+  all() {
+    return structuredClone(this.data.exercises);
+  }
+
   update(id, patch) {
     const next = { ...this.get(id), ...patch, updated: Date.now() };
     this.data.exercises[id] = next;
     this.save();
-    for (const fn of this.listeners) fn(id, next);
+    this.notify(id, next);
     return next;
+  }
+
+  notify(id, record) {
+    for (const fn of this.listeners) fn(id, record);
   }
 
   save() {
@@ -81,6 +180,44 @@ export class Progress {
       document.dispatchEvent(new CustomEvent("workbook:storage-error", { detail: this.saveError }));
       return false;
     }
+  }
+
+  /** The export file's content (an object; JSON.stringify it). */
+  exportData() {
+    return { format: EXPORT_FORMAT, version: SCHEMA_VERSION, exported: new Date().toISOString(), exercises: this.all() };
+  }
+
+  /**
+   * Merge clean records (from parseImport): per exercise, the record with the
+   * newer `updated` wins; a tie keeps the one here. Returns the ids added,
+   * replaced and kept.
+   */
+  merge(records) {
+    const summary = { added: [], replaced: [], kept: [] };
+    const next = { ...this.data.exercises };
+    for (const [id, record] of Object.entries(records)) {
+      const mine = next[id];
+      if (!mine) summary.added.push(id);
+      else if ((record.updated ?? 0) > (mine.updated ?? 0)) summary.replaced.push(id);
+      else {
+        summary.kept.push(id);
+        continue;
+      }
+      next[id] = structuredClone(record);
+    }
+    if (summary.added.length || summary.replaced.length) {
+      this.data.exercises = next;
+      this.save();
+      this.notify(null, null);
+    }
+    return summary;
+  }
+
+  /** Forget every exercise's record (answers, code, solved marks). */
+  reset() {
+    this.data.exercises = {};
+    this.save();
+    this.notify(null, null);
   }
 
   onChange(fn) {

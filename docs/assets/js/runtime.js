@@ -1,17 +1,32 @@
 // The page's side of the grading worker: requests with ids and time limits.
 //
 // A request waits until the worker is ready, then gets a limit. When a limit
-// fires, the worker is terminated and a fresh one started; the request that ran
-// too long is answered with a "timeout" result and every other request waits for
-// the new worker instead of failing.
+// fires on a cross-origin isolated page (the service worker adds COOP/COEP), the
+// page writes SIGINT into a buffer it shares with the worker, and Python raises
+// KeyboardInterrupt; if the worker has not answered within a second, or the page
+// is not isolated, the worker is terminated and a fresh one started. Either way
+// the request that ran too long is answered with a "timeout" result, and every
+// other request waits for the worker instead of failing.
 
 const root = document.documentElement;
 const DEFAULT_LIMIT_MS = 10_000;
 const LOAD_LIMIT_MS = 120_000; // fetching a package (NumPy) before a run starts
+const INTERRUPT_GRACE_MS = 1_000; // after an interrupt, how long to wait before terminating
+const SIGINT = 2;
 
 function setRuntimeState(state) {
   root.dataset.workbookRuntime = state;
   document.dispatchEvent(new CustomEvent("workbook:runtime", { detail: state }));
+}
+
+function timeoutResult(entry) {
+  const seconds = (entry.limitMs / 1000).toLocaleString();
+  return {
+    status: "error",
+    tag: "timeout",
+    message: `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). The Python runtime was restarted; your code is kept.`,
+    data: {},
+  };
 }
 
 export class Runtime {
@@ -22,6 +37,9 @@ export class Runtime {
     this.readyAt = null;
     this.failure = null;
     this.listeners = new Set();
+    this.restarts = 0; // runs stopped by terminating the worker
+    this.interrupts = 0; // runs stopped by KeyboardInterrupt
+    this.lastStop = null; // "interrupt" | "terminate"
     this.spawn(early);
   }
 
@@ -35,6 +53,12 @@ export class Runtime {
       event.preventDefault?.();
       this.fail("The Python runtime could not start" + (event.message ? `: ${event.message}` : "."));
     };
+    // Shared with the worker: [0] Pyodide's signal slot, [1] the id of the request now running.
+    this.interrupt = null;
+    if (self.crossOriginIsolated && typeof SharedArrayBuffer === "function") {
+      this.interrupt = new Int32Array(new SharedArrayBuffer(8));
+      this.worker.postMessage({ type: "interrupt-buffer", buffer: this.interrupt });
+    }
     if (early) for (const data of early.messages.splice(0)) this.receive(data);
   }
 
@@ -60,7 +84,11 @@ export class Runtime {
     } else if (data.type === "result") {
       clearTimeout(entry.timer);
       this.pending.delete(data.id);
-      entry.resolve(data.result);
+      if (entry.interrupted) {
+        this.interrupts++;
+        this.lastStop = "interrupt";
+        entry.resolve(timeoutResult(entry));
+      } else entry.resolve(data.result);
     }
   }
 
@@ -85,16 +113,22 @@ export class Runtime {
   }
 
   expire(entry) {
+    const buffer = this.interrupt;
+    if (buffer && !entry.interrupted && Atomics.load(buffer, 1) === entry.msg.id) {
+      entry.interrupted = true; // answered as a timeout when the worker replies
+      Atomics.store(buffer, 0, SIGINT);
+      entry.timer = setTimeout(() => this.terminate(entry), INTERRUPT_GRACE_MS);
+      return;
+    }
+    this.terminate(entry);
+  }
+
+  terminate(entry) {
     this.pending.delete(entry.msg.id);
     this.worker.terminate();
-    const seconds = (entry.limitMs / 1000).toLocaleString();
-    entry.resolve({
-      status: "error",
-      tag: "timeout",
-      message: `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). The Python runtime was restarted; your code is kept.`,
-      data: {},
-    });
-    this.restarts = (this.restarts || 0) + 1;
+    entry.resolve(timeoutResult(entry));
+    this.restarts++;
+    this.lastStop = "terminate";
     this.spawn(null); // other pending requests are re-sent once the new worker is ready
   }
 

@@ -181,6 +181,7 @@ async function initBuild(ctx) {
     onRun: () => run(),
   });
   host.querySelector(".wb-starter")?.remove();
+  host.wbEditor = editor; // for tests and tools: getCode(), setCode(), markLine()
   const runButton = el.querySelector('[data-role="run"]');
   async function run() {
     const code = editor.getCode();

@@ -1,11 +1,13 @@
 // The grading worker: loads Pyodide and the grading package once, then answers
 // requests from the page. One request at a time; the page enforces time limits
-// by terminating this worker (or by an interrupt when it is cross-origin isolated).
+// by an interrupt when it is cross-origin isolated (it shares a buffer, see
+// runtime.js), else by terminating this worker.
 /* global loadPyodide, importScripts */
 
 const indexURL = new URL("../vendor/pyodide/", self.location.href).href;
 let handle = null;
 let pyodide = null;
+let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the request running
 
 const ready = (async () => {
   const t0 = performance.now();
@@ -31,13 +33,26 @@ async function serve(msg) {
   }
   if (msg.op === "run") self.postMessage({ id: msg.id, type: "started" });
   const { id, ...request } = msg;
-  return JSON.parse(handle(JSON.stringify(request)));
+  if (interruptBuffer) {
+    Atomics.store(interruptBuffer, 0, 0); // a late signal meant for an earlier request
+    Atomics.store(interruptBuffer, 1, id);
+  }
+  try {
+    return JSON.parse(handle(JSON.stringify(request)));
+  } finally {
+    if (interruptBuffer) Atomics.store(interruptBuffer, 1, 0);
+  }
 }
 
 // Requests are served strictly one after another.
 let queue = Promise.resolve();
 self.onmessage = (event) => {
   const msg = event.data;
+  if (msg?.type === "interrupt-buffer") {
+    interruptBuffer = msg.buffer;
+    ready.then(() => pyodide.setInterruptBuffer(interruptBuffer)).catch(() => {});
+    return;
+  }
   if (!msg || typeof msg.id !== "number") return;
   queue = queue.then(async () => {
     let result;

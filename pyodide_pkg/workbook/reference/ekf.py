@@ -152,9 +152,54 @@ def ekf_update_matrix(x, P: Matrix, z, h, H: Matrix, R: Matrix):
     (5.7474, 0.1429)
     """
     innovation = [zi - hi for zi, hi in zip(z, h)]
-    Ht = transpose(H)
-    S = add(matmul(matmul(H, P), Ht), R)
-    K = matmul(matmul(P, Ht), inverse(S))
+    K = kalman_gain(P, H, R)
     x_new = [xi + di for xi, di in zip(x, matvec(K, innovation))]
     P_new = matmul(sub(identity(len(x)), matmul(K, H)), P)
     return x_new, P_new
+
+
+def kalman_gain(P: Matrix, H: Matrix, R: Matrix) -> Matrix:
+    """K = P Hᵀ S⁻¹ with S = H P Hᵀ + R: how far the update trusts each measurement.
+
+    Scalar case of exercise 4.5 (P = 0.5, R = 0.2): K = 0.5 / 0.7.
+
+    >>> round(kalman_gain([[0.5]], [[1]], [[0.2]])[0][0], 4)
+    0.7143
+
+    A perfect sensor (R = 0) gets the full gain (exercise 4.6).
+
+    >>> kalman_gain([[1.0]], [[1]], [[0.0]])
+    [[1.0]]
+    """
+    Ht = transpose(H)
+    S = add(matmul(matmul(H, P), Ht), R)
+    return matmul(matmul(P, Ht), inverse(S))
+
+
+def covariance_ellipse(P: Matrix, n_sigma: float = 1.0) -> tuple[float, float, float]:
+    """The x–y uncertainty ellipse of a covariance: ``(a, b, angle)``.
+
+    Uses the top-left 2×2 block [[pxx, pxy], [pxy, pyy]] of ``P``. ``a`` ≥ ``b``
+    are the semi-axes, ``n_sigma`` standard deviations long (the square roots of
+    the block's eigenvalues, scaled), and ``angle`` (radians) is the direction of
+    the major axis, measured from the x-axis.
+
+    Exercise 3.4's P⁻ = diag(1.01, 1.11, …) is widest along y.
+
+    >>> a, b, angle = covariance_ellipse([[1.01, 0, 0], [0, 1.11, 0.1], [0, 0.1, 0.101]])
+    >>> round(a, 4), round(b, 4), round(math.degrees(angle), 1)
+    (1.0536, 1.005, 90.0)
+
+    A correlated block tilts the ellipse: here by 45°.
+
+    >>> [round(v, 4) for v in covariance_ellipse([[2, 1], [1, 2]], n_sigma=2)[:2]]
+    [3.4641, 2.0]
+    >>> round(math.degrees(covariance_ellipse([[2, 1], [1, 2]])[2]), 1)
+    45.0
+    """
+    pxx, pxy, pyy = P[0][0], P[0][1], P[1][1]
+    mean = (pxx + pyy) / 2
+    spread = math.hypot((pxx - pyy) / 2, pxy)
+    big, small = mean + spread, max(0.0, mean - spread)
+    angle = 0.5 * math.atan2(2 * pxy, pxx - pyy)
+    return n_sigma * math.sqrt(big), n_sigma * math.sqrt(small), angle

@@ -9,7 +9,7 @@ from __future__ import annotations
 import math
 from typing import Iterable, Sequence
 
-from .linalg import Matrix, Vector, inverse, matvec
+from .linalg import Matrix, Vector, inverse, matmul, matvec, transpose
 
 Pose = Sequence[float]
 
@@ -150,3 +150,110 @@ def total_cost(edges: Iterable[tuple[Vector, Matrix]]) -> float:
     2.65
     """
     return sum(edge_cost(e, omega) for e, omega in edges)
+
+
+Edge = tuple[int, int, Pose, Matrix]  # (i, j, z_ij, Ω_ij)
+
+
+def graph_cost(poses: Sequence[Pose], edges: Iterable[Edge]) -> float:
+    """F(x) = Σ e_ijᵀ Ω_ij e_ij with :func:`edge_error`, for edges given as (i, j, z, Ω).
+
+    Two poses one metre apart, and an odometry edge that says so: no cost.
+
+    >>> W = [[100, 0, 0], [0, 100, 0], [0, 0, 1000]]
+    >>> graph_cost([(0, 0, 0), (1, 0, 0)], [(0, 1, (1, 0, 0), W)])
+    0.0
+    >>> round(graph_cost([(0, 0, 0), (1.1, 0, 0)], [(0, 1, (1, 0, 0), W)]), 6)
+    1.0
+    """
+    return total_cost((edge_error(poses[i], poses[j], z), omega) for i, j, z, omega in edges)
+
+
+def _edge_jacobians(xi: Pose, xj: Pose, z: Pose, h: float = 1e-6) -> tuple[Matrix, Matrix]:
+    """∂e/∂xi and ∂e/∂xj (3×3 each) by central differences."""
+    def column(k: int, which: int) -> list[float]:
+        plus, minus = [list(xi), list(xj)], [list(xi), list(xj)]
+        plus[which][k] += h
+        minus[which][k] -= h
+        ep, em = edge_error(*plus, z), edge_error(*minus, z)
+        return [(p - m) / (2 * h) for p, m in zip(ep, em)]
+    A = transpose([column(k, 0) for k in range(3)])
+    B = transpose([column(k, 1) for k in range(3)])
+    return A, B
+
+
+def gauss_newton(poses: Sequence[Pose], edges: Sequence[Edge], fixed: int = 0,
+                 max_iterations: int = 10, tol: float = 1e-9) -> tuple[list[tuple[float, float, float]], list[float]]:
+    """Minimise F(x) over every pose but ``fixed`` (which anchors the graph).
+
+    Each iteration linearises every edge error, e ≈ e0 + A Δxi + B Δxj, adds
+    AᵀΩA, AᵀΩB, … into H and AᵀΩe0, BᵀΩe0 into b, solves H Δx = −b and moves all
+    poses at once. A step that would raise the cost is halved until it does not
+    (a simple line search). Stops when the cost falls by less than ``tol``
+    (relative). Returns ``(poses, costs)``, ``costs[0]`` being the cost before
+    the first step. The Jacobians A and B are taken by central differences.
+
+    A square driven with a heading error of 0.05 rad per corner, then a loop
+    closure saying the fourth pose is back at the start:
+
+    >>> W = [[100, 0, 0], [0, 100, 0], [0, 0, 1000]]
+    >>> z = (1, 0, math.pi / 2 + 0.05)
+    >>> drifted = [(0.0, 0.0, 0.0)]
+    >>> for _ in range(4):
+    ...     drifted.append(compose_pose(drifted[-1], z))
+    >>> edges = [(k, k + 1, z, W) for k in range(4)] + [(4, 0, (0, 0, 0), W)]
+    >>> solved, costs = gauss_newton(drifted, edges)
+    >>> round(costs[0], 2), round(costs[-1], 2)
+    (41.9, 8.02)
+    >>> all(a >= b for a, b in zip(costs, costs[1:]))
+    True
+
+    The cost cannot reach zero, as the measurements disagree: the 0.2 rad of
+    extra heading ends up shared by the five edges, 0.04 rad each, and
+    5 · 1000 · 0.04² = 8.
+    """
+    x = [tuple(float(v) for v in p) for p in poses]
+    free = [k for k in range(len(x)) if k != fixed]
+    slot = {k: 3 * n for n, k in enumerate(free)}
+    size = 3 * len(free)
+    costs = [graph_cost(x, edges)]
+    for _ in range(max_iterations):
+        H = [[0.0] * size for _ in range(size)]
+        b = [0.0] * size
+        for i, j, z, omega in edges:
+            e = edge_error(x[i], x[j], z)
+            A, B = _edge_jacobians(x[i], x[j], z)
+            blocks = {i: A, j: B}
+            for p, Jp in blocks.items():
+                if p not in slot:
+                    continue
+                JtW = matmul(transpose(Jp), omega)
+                g = matvec(JtW, e)
+                for r in range(3):
+                    b[slot[p] + r] += g[r]
+                for q, Jq in blocks.items():
+                    if q not in slot:
+                        continue
+                    block = matmul(JtW, Jq)
+                    for r in range(3):
+                        for c in range(3):
+                            H[slot[p] + r][slot[q] + c] += block[r][c]
+        step = matvec(inverse(H), [-v for v in b])
+        scale = 1.0
+        while True:
+            trial = list(x)
+            for k in free:
+                s = slot[k]
+                px, py, pt = x[k]
+                trial[k] = (px + scale * step[s], py + scale * step[s + 1], wrap_angle(pt + scale * step[s + 2]))
+            cost = graph_cost(trial, edges)
+            if cost <= costs[-1] or scale < 1e-3:
+                break
+            scale /= 2
+        if cost > costs[-1]:
+            break
+        x = trial
+        costs.append(cost)
+        if costs[-2] - cost <= tol * max(costs[-2], 1e-12):
+            break
+    return x, costs

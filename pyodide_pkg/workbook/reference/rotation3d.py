@@ -131,3 +131,35 @@ def gimbal_locked(pitch: float, tol: float = 1e-9) -> bool:
     (True, True, False)
     """
     return abs(math.cos(pitch)) < tol
+
+
+def quat_from_matrix(R: Matrix) -> tuple[float, float, float, float]:
+    """The unit quaternion (w, x, y, z) of a rotation matrix, with w ≥ 0.
+
+    Starts from the largest of w², x², y², z² (each read off the diagonal), so it
+    stays accurate near 180° turns too. q and −q are the same rotation; this
+    picks the one with w ≥ 0.
+
+    Exercise 2.3 again, now from the matrix: Rz(90°).
+
+    >>> [round(v, 4) + 0.0 for v in quat_from_matrix(rz(math.pi / 2))]
+    [0.7071, 0.0, 0.0, 0.7071]
+
+    Exercise 2.4: 180° about x.
+
+    >>> [round(v, 4) + 0.0 for v in quat_from_matrix(rx(math.pi))]
+    [0.0, 1.0, 0.0, 0.0]
+    """
+    (m00, m01, m02), (m10, m11, m12), (m20, m21, m22) = R
+    squares = (1 + m00 + m11 + m22, 1 + m00 - m11 - m22, 1 - m00 + m11 - m22, 1 - m00 - m11 + m22)
+    k = max(range(4), key=lambda i: squares[i])
+    s = 2 * math.sqrt(max(squares[k], 0.0))  # 4·|component k|
+    if k == 0:
+        q = (s / 4, (m21 - m12) / s, (m02 - m20) / s, (m10 - m01) / s)
+    elif k == 1:
+        q = ((m21 - m12) / s, s / 4, (m01 + m10) / s, (m02 + m20) / s)
+    elif k == 2:
+        q = ((m02 - m20) / s, (m01 + m10) / s, s / 4, (m12 + m21) / s)
+    else:
+        q = ((m10 - m01) / s, (m02 + m20) / s, (m12 + m21) / s, s / 4)
+    return q if q[0] >= 0 else tuple(-c for c in q)

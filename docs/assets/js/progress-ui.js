@@ -1,0 +1,258 @@
+// Progress at a glance (chapter pages, the home page, a ✓ in the navigation) and
+// the "Your progress" page's controls: export, import, reset.
+//
+// Which exercises each chapter holds comes from assets/exercises.json, written
+// at build time by docs/hooks/exercises.py. initProgressPage() runs on every page
+// (the first and each instant navigation) and is idempotent.
+
+import { MAX_IMPORT_BYTES, parseImport } from "./progress.js";
+
+let manifestPromise = null;
+let listening = false;
+let current = { progress: null, siteRoot: null };
+
+function loadManifest(siteRoot) {
+  manifestPromise ??= fetch(new URL("assets/exercises.json", siteRoot))
+    .then((r) => (r.ok ? r.json() : null))
+    .catch(() => null)
+    .then((m) => {
+      if (!m || !Array.isArray(m.chapters)) manifestPromise = null; // try again on the next page
+      return m && Array.isArray(m.chapters) ? m : null;
+    });
+  return manifestPromise;
+}
+
+function tally(progress, ids) {
+  let solved = 0;
+  let afterReveal = 0;
+  for (const id of ids) {
+    const r = progress.get(id);
+    if (r.solved) r.solvedAfterReveal ? afterReveal++ : solved++;
+  }
+  return { solved, afterReveal, total: ids.length, done: ids.length > 0 && solved + afterReveal === ids.length };
+}
+
+function phrase({ solved, afterReveal, total }, noun = "exercises") {
+  const extra = afterReveal ? ` (and ${afterReveal} more after revealing the solution)` : "";
+  return `${solved} of ${total} ${noun} solved${extra}`;
+}
+
+function el(tag, props = {}, ...children) {
+  const node = Object.assign(document.createElement(tag), props);
+  node.append(...children);
+  return node;
+}
+
+const pathOf = (href) => {
+  const url = new URL(href, location.href);
+  return url.hash && url.pathname === location.pathname ? null : url.pathname;
+};
+
+// ---- At a glance ------------------------------------------------------------
+function markNavigation(manifest, progress, siteRoot) {
+  const done = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, tally(progress, c.ids).done]));
+  for (const link of document.querySelectorAll(".md-nav--primary a.md-nav__link")) {
+    const url = new URL(link.href);
+    const finished = !url.hash && done.get(url.pathname);
+    const mark = link.querySelector(".wb-nav-done");
+    if (finished && !mark) {
+      link.append(el("span", { className: "wb-nav-done", title: "All exercises solved" },
+        el("span", { ariaHidden: "true", textContent: "✓" }), el("span", { className: "wb-sr-only", textContent: " (finished)" })));
+    } else if (!finished && mark) mark.remove();
+  }
+}
+
+function meter(count, label) {
+  return el("progress", { max: count.total, value: count.solved + count.afterReveal, ariaLabel: label });
+}
+
+function chapterSummary(manifest, progress, siteRoot) {
+  const chapter = manifest.chapters.find((c) => new URL(c.url, siteRoot).pathname === location.pathname);
+  const article = document.querySelector(".md-content__inner");
+  if (!chapter || !article) return;
+  const count = tally(progress, chapter.ids);
+  let box = article.querySelector(".wb-chapter-progress");
+  if (!box) {
+    box = el("p", { className: "wb-chapter-progress" });
+    const h1 = article.querySelector("h1");
+    if (h1) h1.after(box);
+    else article.prepend(box);
+  }
+  box.classList.toggle("is-done", count.done);
+  box.replaceChildren(meter(count, "Progress in this chapter"),
+    el("span", { textContent: `${count.done ? "✓ Chapter finished: " : "This chapter: "}${phrase(count)}.` }));
+}
+
+function overallSummary(manifest, progress, siteRoot) {
+  const slots = document.querySelectorAll("[data-wb-overall-progress]");
+  if (!slots.length) return;
+  const all = tally(progress, manifest.chapters.flatMap((c) => c.ids));
+  const finished = manifest.chapters.filter((c) => tally(progress, c.ids).done).length;
+  for (const slot of slots) {
+    slot.classList.add("wb-overall-progress");
+    slot.replaceChildren(meter(all, "Progress in the whole workbook"),
+      el("span", { textContent: `So far: ${phrase(all)}; ${finished} of ${manifest.chapters.length} chapters finished.` }));
+  }
+  // Badges next to the chapter links of the page's own list (the home page).
+  const byPath = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, c]));
+  for (const link of document.querySelectorAll(".md-content__inner li > a[href]")) {
+    const chapter = byPath.get(pathOf(link.href));
+    if (!chapter) continue;
+    const count = tally(progress, chapter.ids);
+    let badge = link.nextElementSibling?.classList.contains("wb-badge") ? link.nextElementSibling : null;
+    if (!badge) {
+      badge = el("span", { className: "wb-badge" });
+      link.after(badge);
+    }
+    badge.classList.toggle("is-done", count.done);
+    badge.textContent = `${count.done ? "✓ " : ""}${count.solved + count.afterReveal}/${count.total}`;
+    badge.title = phrase(count);
+  }
+}
+
+// ---- The "Your progress" page -------------------------------------------------
+function table(manifest, progress, siteRoot) {
+  const rows = manifest.chapters.map((c) => {
+    const count = tally(progress, c.ids);
+    return el("tr", {},
+      el("td", {}, el("a", { href: new URL(c.url, siteRoot).href, textContent: c.title })),
+      el("td", { textContent: `${count.solved} / ${count.total}` }),
+      el("td", { textContent: String(count.afterReveal) }),
+      el("td", { textContent: count.done ? "✓ finished" : "" }));
+  });
+  return el("table", { className: "wb-progress-table" },
+    el("caption", { className: "wb-sr-only", textContent: "Exercises solved per chapter" }),
+    el("thead", {}, el("tr", {}, ...["Chapter", "Solved", "After reveal", "Status"].map((t) => el("th", { scope: "col", textContent: t })))),
+    el("tbody", {}, ...rows));
+}
+
+function download(name, text) {
+  const url = URL.createObjectURL(new Blob([text], { type: "application/json" }));
+  const a = el("a", { href: url, download: name });
+  document.body.append(a);
+  a.click();
+  a.remove();
+  setTimeout(() => URL.revokeObjectURL(url), 10_000);
+}
+
+const list = (ids) => (ids.length <= 12 ? ` (${ids.join(", ")})` : "");
+
+function describeMerge({ added, replaced, kept }) {
+  const total = added.length + replaced.length + kept.length;
+  if (!total) return "The file holds no exercises; nothing changed.";
+  const parts = [];
+  if (added.length) parts.push(`${added.length} added${list(added)}`);
+  if (replaced.length) parts.push(`${replaced.length} replaced by the file's newer record${list(replaced)}`);
+  if (kept.length) parts.push(`${kept.length} kept as they were, yours being as new or newer${list(kept)}`);
+  return `Imported a file with ${total} exercise${total === 1 ? "" : "s"}: ${parts.join("; ")}.`;
+}
+
+function buildPanel(panel, manifest, progress, siteRoot) {
+  const knownIds = new Set(manifest.chapters.flatMap((c) => c.ids));
+  const message = el("div", { className: "wb-progress-message", role: "status" });
+  message.setAttribute("aria-live", "polite");
+  message.dataset.wbProgressMessage = "";
+  const say = (text, kind = "info") => {
+    message.dataset.kind = kind;
+    message.replaceChildren(el("p", { textContent: text }));
+  };
+  const button = (text, action) => {
+    const b = el("button", { type: "button", className: "md-button", textContent: text });
+    b.dataset.wbAction = action;
+    return b;
+  };
+  const exportButton = button("Export progress", "export");
+  const importButton = button("Import progress…", "import");
+  const resetButton = button("Reset all progress…", "reset");
+  const file = el("input", { type: "file", accept: "application/json,.json", hidden: true });
+  file.dataset.wbAction = "import-file";
+  file.setAttribute("aria-label", "Progress file to import");
+
+  const dialog = el("dialog", { className: "wb-confirm" });
+  dialog.setAttribute("aria-labelledby", "wb-confirm-title");
+  const form = el("form", { method: "dialog" },
+    el("p", { id: "wb-confirm-title", className: "wb-confirm-title", textContent: "Erase all progress?" }),
+    el("p", { textContent: "Every answer, solved mark and piece of Build code saved in this browser for this workbook will be erased. Export first if you may want it back." }),
+    el("div", { className: "wb-confirm-buttons" },
+      el("button", { value: "cancel", className: "md-button", textContent: "Cancel", autofocus: true }),
+      el("button", { value: "reset", className: "md-button md-button--primary", textContent: "Erase everything" })));
+  form.querySelector('[value="reset"]').dataset.wbAction = "confirm-reset";
+  dialog.append(form);
+
+  exportButton.addEventListener("click", () => {
+    const data = progress.exportData();
+    const name = `robotics-math-workbook-progress-${data.exported.slice(0, 10)}.json`;
+    download(name, JSON.stringify(data, null, 1));
+    const n = Object.keys(data.exercises).length;
+    say(`Exported ${n} exercise record${n === 1 ? "" : "s"} to ${name}.`, "ok");
+  });
+  importButton.addEventListener("click", () => file.click());
+  file.addEventListener("change", async () => {
+    const chosen = file.files?.[0];
+    file.value = "";
+    if (!chosen) return;
+    let result;
+    if (chosen.size > MAX_IMPORT_BYTES) {
+      result = { ok: false, reason: `The file is too large (${chosen.size.toLocaleString("en")} bytes); a progress file is much smaller.` };
+    } else {
+      result = parseImport(await chosen.text().catch(() => null), knownIds);
+    }
+    if (!result.ok) {
+      say(`Import refused: ${result.reason} Nothing was changed.`, "error");
+      return;
+    }
+    say(describeMerge(progress.merge(result.exercises)), "ok");
+  });
+  resetButton.addEventListener("click", () => dialog.showModal());
+  dialog.addEventListener("close", () => {
+    if (dialog.returnValue === "reset") {
+      progress.reset();
+      say("All progress was erased.", "ok");
+    }
+    dialog.returnValue = "";
+    resetButton.focus();
+  });
+
+  panel.replaceChildren(
+    el("div", { className: "wb-progress-table-wrap" }),
+    el("div", { className: "wb-progress-actions" }, exportButton, importButton, resetButton, file),
+    message, dialog);
+  panel.dataset.wbBuilt = "true";
+}
+
+function progressPanel(manifest, progress, siteRoot) {
+  for (const panel of document.querySelectorAll("[data-wb-progress-panel]")) {
+    if (!panel.dataset.wbBuilt) buildPanel(panel, manifest, progress, siteRoot);
+    panel.querySelector(".wb-progress-table-wrap").replaceChildren(table(manifest, progress, siteRoot));
+  }
+}
+
+async function refresh() {
+  const { progress, siteRoot } = current;
+  const manifest = await loadManifest(siteRoot);
+  if (!manifest) return;
+  markNavigation(manifest, progress, siteRoot);
+  chapterSummary(manifest, progress, siteRoot);
+  overallSummary(manifest, progress, siteRoot);
+  progressPanel(manifest, progress, siteRoot);
+}
+
+let scheduled = false;
+function scheduleRefresh() {
+  if (scheduled) return;
+  scheduled = true;
+  queueMicrotask(() => {
+    scheduled = false;
+    refresh();
+  });
+}
+
+/** Call on every page (first load and each instant navigation). */
+export function initProgressPage(progress, siteRoot) {
+  current = { progress, siteRoot };
+  if (!listening) {
+    listening = true;
+    progress.onChange(scheduleRefresh);
+  }
+  return refresh();
+}

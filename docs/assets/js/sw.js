@@ -1,0 +1,109 @@
+// The workbook's service worker: every page and runtime file, offline.
+//
+// This is a template: docs/hooks/offline.py writes it to the site root (sw.js)
+// after each build, with VERSION (a hash of every file) and FILES (each file's
+// URL relative to the site root and its sha256, as a fetch `integrity`) filled in.
+//
+// - install: fetch every file, each checked against its hash, into one cache
+//   named after VERSION. Only a complete cache lets the worker install, so a new
+//   version is never served half-downloaded.
+// - the new version waits until the page asks it to take over (the learner
+//   presses "Reload" in the update banner); activation deletes older caches.
+// - fetch: files of the version are served from its cache (one version for
+//   HTML, scripts and Python alike), anything else from the network; every
+//   response gets COOP/COEP headers, so pages are cross-origin isolated and a
+//   long run can be interrupted instead of the worker being killed.
+
+const VERSION = __WB_VERSION__;
+const FILES = __WB_FILES__;
+
+const SCOPE = self.registration.scope;
+const PREFIX = `robotics-workbook:${new URL(SCOPE).pathname}:`;
+const CACHE = PREFIX + VERSION;
+const KNOWN = new Set(FILES.map(([path]) => new URL(path, SCOPE).href));
+const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
+
+async function precache() {
+  const cache = await caches.open(CACHE);
+  // A previous, interrupted install of this same version already fetched some files.
+  const have = new Set((await cache.keys()).map((request) => request.url));
+  const todo = FILES.filter(([path]) => !have.has(new URL(path, SCOPE).href));
+  let next = 0;
+  async function lane() {
+    while (next < todo.length) {
+      const [path, integrity] = todo[next++];
+      const url = new URL(path, SCOPE).href;
+      const response = await fetch(new Request(url, { cache: "no-cache", integrity, credentials: "same-origin" }));
+      if (!response.ok) throw new Error(`${path}: HTTP ${response.status}`);
+      await cache.put(url, response);
+    }
+  }
+  await Promise.all(Array.from({ length: 6 }, lane));
+}
+
+self.addEventListener("install", (event) => {
+  event.waitUntil(precache());
+});
+
+self.addEventListener("activate", (event) => {
+  event.waitUntil(
+    (async () => {
+      for (const name of await caches.keys()) {
+        if (name.startsWith(PREFIX) && name !== CACHE) await caches.delete(name);
+      }
+      await self.clients.claim();
+    })(),
+  );
+});
+
+self.addEventListener("message", (event) => {
+  if (event.data?.type === "activate-update") self.skipWaiting();
+  else if (event.data?.type === "version") event.source?.postMessage({ type: "version", version: VERSION });
+});
+
+function isolate(response) {
+  if (!response || response.type === "opaque" || response.type === "opaqueredirect" || response.status === 0) return response;
+  const headers = new Headers(response.headers);
+  for (const [name, value] of Object.entries(ISOLATION)) headers.set(name, value);
+  return new Response(response.body, { status: response.status, statusText: response.statusText, headers });
+}
+
+/** The precached URL a request stands for, or null. */
+function cacheKey(url) {
+  url = new URL(url);
+  url.search = "";
+  url.hash = "";
+  if (url.pathname.endsWith("/index.html")) url.pathname = url.pathname.slice(0, -"index.html".length);
+  return KNOWN.has(url.href) ? url.href : null;
+}
+
+async function respond(request) {
+  const key = cacheKey(request.url);
+  if (key) {
+    const cached = await caches.open(CACHE).then((cache) => cache.match(key));
+    if (cached) return isolate(cached);
+  }
+  if (request.mode === "navigate" && !key) {
+    // "chapters/x" for "chapters/x/": send the browser to the real address.
+    const url = new URL(request.url);
+    url.pathname += "/";
+    url.search = "";
+    if (KNOWN.has(url.href)) return Response.redirect(url.href, 301);
+  }
+  try {
+    return isolate(await fetch(request));
+  } catch (err) {
+    if (request.mode === "navigate") {
+      const missing = await caches.open(CACHE).then((cache) => cache.match(new URL("404.html", SCOPE).href));
+      if (missing) return isolate(new Response(missing.body, { status: 404, statusText: "Not Found", headers: missing.headers }));
+    }
+    throw err;
+  }
+}
+
+self.addEventListener("fetch", (event) => {
+  const { request } = event;
+  if (request.method !== "GET" || !request.url.startsWith(SCOPE)) return;
+  if (request.cache === "only-if-cached" && request.mode !== "same-origin") return;
+  event.respondWith(respond(request));
+});

@@ -1,0 +1,73 @@
+"""MkDocs hook: write the offline service worker to the site root.
+
+After every build, list each file of the built site (pages, the Pyodide runtime
+and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
+``site/sw.js`` from the template ``docs/assets/js/sw.js`` with:
+
+* ``FILES``: ``[url relative to the site root, "sha256-…" integrity]`` per file
+  (``chapters/00-rotations-2d/`` for ``chapters/00-rotations-2d/index.html``);
+* ``VERSION``: a hash over the template and every file, so any change to the
+  site gives a new version (and a new cache).
+
+Source maps and the gzipped sitemap are left out (nothing at runtime reads them).
+Under ``mkdocs serve`` the service worker only unregisters itself, so a worker
+left by ``make serve`` on the same address does not serve stale pages.
+"""
+
+from __future__ import annotations
+
+import base64
+import hashlib
+import json
+import logging
+from pathlib import Path
+
+log = logging.getLogger("mkdocs.hooks.offline")
+
+TEMPLATE = "assets/js/sw.js"
+OUTPUT = "sw.js"
+SKIP_SUFFIXES = (".map", ".gz")
+_serving = False
+
+UNREGISTER = """// mkdocs serve: no offline cache while authoring; remove any earlier worker.
+self.addEventListener("install", () => self.skipWaiting());
+self.addEventListener("activate", (event) => event.waitUntil(self.registration.unregister()));
+"""
+
+
+def on_startup(command, dirty, **kwargs):
+    global _serving
+    _serving = command == "serve"
+
+
+def precache_list(site: Path) -> list[tuple[str, str, int]]:
+    """(url, integrity, size) for every file the site serves at runtime, sorted."""
+    out = []
+    for path in sorted(site.rglob("*")):
+        rel = path.relative_to(site).as_posix()
+        if not path.is_file() or rel == OUTPUT or rel.endswith(SKIP_SUFFIXES):
+            continue
+        if any(part.startswith(".") for part in rel.split("/")):
+            continue  # build stamps and the like
+        digest = hashlib.sha256(path.read_bytes()).digest()
+        url = rel.removesuffix("index.html") if rel == "index.html" or rel.endswith("/index.html") else rel
+        out.append((url or "./", "sha256-" + base64.b64encode(digest).decode("ascii"), path.stat().st_size))
+    return out
+
+
+def on_post_build(config, **kwargs):
+    site = Path(config.site_dir)
+    if _serving:
+        (site / OUTPUT).write_text(UNREGISTER)
+        return
+    template = (Path(config.docs_dir) / TEMPLATE).read_text()
+    files = precache_list(site)
+    h = hashlib.sha256(template.encode())
+    for url, integrity, _ in files:
+        h.update(f"\n{url} {integrity}".encode())
+    version = h.hexdigest()[:16]
+    listing = "[\n" + ",\n".join(json.dumps([url, integrity]) for url, integrity, _ in files) + "\n]"
+    text = template.replace("__WB_VERSION__", json.dumps(version)).replace("__WB_FILES__", listing)
+    (site / OUTPUT).write_text(text)
+    total = sum(size for *_, size in files)
+    log.info("offline: sw.js version %s precaches %d files, %d bytes", version, len(files), total)

@@ -1,0 +1,125 @@
+"""Interactive figures: one module per figure, each drawn as SVG from the
+reference implementations.
+
+A figure declares its controls (sliders, or toggle buttons with the values 0
+and 1) and its readouts, and ``render(params)`` returns::
+
+    {"svg": "<svg …>…</svg>", "readouts": {"key": "text", …}, "flags": ["…"]}
+
+``flags`` name states the page styles (``singular``, ``unreachable``, …). The
+page never computes anything: it sends the control values (``api`` op
+``figure``) and swaps in what comes back. ``html.figure_html`` renders the
+first frame at build time.
+
+>>> "rotation-2d" in names()
+True
+>>> sorted(render("rotation-2d", {"theta": 90})["readouts"])
+['R', 'image', 'point']
+"""
+
+from __future__ import annotations
+
+import importlib
+import math
+from dataclasses import dataclass, field
+from typing import Any, Callable
+
+MODULES = {
+    "rotation-2d": "rotation_2d",
+    "frames": "frames",
+    "euler-3d": "euler_3d",
+    "ekf-predict": "ekf_predict",
+    "ekf-update": "ekf_update",
+    "pose-graph": "pose_graph",
+    "arm-2link": "arm_2link",
+    "jacobian": "jacobian",
+    "pid-response": "pid_response",
+    "capstone": "capstone",
+}
+
+
+class FigureError(ValueError):
+    """An unknown figure or a parameter it cannot draw."""
+
+
+@dataclass(frozen=True)
+class Control:
+    """A slider (``kind="range"``) or a toggle button (``kind="toggle"``, values 0 and 1)."""
+
+    name: str
+    label: str
+    min: float = 0.0
+    max: float = 1.0
+    step: float = 1.0
+    default: float = 0.0
+    unit: str = ""
+    kind: str = "range"
+
+
+@dataclass(frozen=True)
+class Readout:
+    """A live number; ``matrix`` readouts hold one row per line."""
+
+    key: str
+    label: str
+    matrix: bool = False
+
+
+@dataclass(frozen=True)
+class Figure:
+    name: str
+    title: str
+    caption: str
+    controls: tuple[Control, ...]
+    readouts: tuple[Readout, ...]
+    draw: Callable[[dict[str, float]], dict[str, Any]] = field(repr=False)
+
+    def defaults(self) -> dict[str, float]:
+        return {c.name: c.default for c in self.controls}
+
+    def params(self, given: dict[str, Any] | None) -> dict[str, float]:
+        """The defaults overridden by ``given``; raises FigureError on anything odd."""
+        if given is None:
+            given = {}
+        if not isinstance(given, dict):
+            raise FigureError("The figure's parameters must be a dictionary.")
+        controls = {c.name: c for c in self.controls}
+        unknown = sorted(set(given) - set(controls))
+        if unknown:
+            raise FigureError(f"Figure {self.name!r} has no control {unknown[0]!r}.")
+        out = self.defaults()
+        for name, raw in given.items():
+            c = controls[name]
+            try:
+                value = float(raw)
+            except (TypeError, ValueError):
+                raise FigureError(f"{c.label}: {raw!r} is not a number.") from None
+            if isinstance(raw, bool) or not math.isfinite(value):
+                raise FigureError(f"{c.label}: {raw!r} is not a number.")
+            span = 1e-9 * max(1.0, abs(c.max - c.min))
+            if not c.min - span <= value <= c.max + span:
+                raise FigureError(f"{c.label}: {value:g} is outside [{c.min:g}, {c.max:g}].")
+            if c.kind == "toggle" and value not in (0.0, 1.0):
+                raise FigureError(f"{c.label}: a toggle is 0 or 1, not {value:g}.")
+            out[name] = value
+        return out
+
+    def render(self, given: dict[str, Any] | None = None) -> dict[str, Any]:
+        result = self.draw(self.params(given))
+        result.setdefault("flags", [])
+        return result
+
+
+def names() -> list[str]:
+    return list(MODULES)
+
+
+def get(name: str) -> Figure:
+    """The figure called ``name``; its module is imported on first use."""
+    if name not in MODULES:
+        raise FigureError(f"There is no figure called {name!r}.")
+    return importlib.import_module(f"{__name__}.{MODULES[name]}").FIGURE
+
+
+def render(name: str, params: dict[str, Any] | None = None) -> dict[str, Any]:
+    return get(name).render(params)

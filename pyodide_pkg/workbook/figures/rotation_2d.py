@@ -1,0 +1,66 @@
+"""Chapter 0: a point p and its image R(θ)p, the arc between them, and R(θ) itself."""
+
+from __future__ import annotations
+
+import math
+
+from ..reference.rotation2d import rot2, rotate_2d
+from . import Control, Figure, Readout
+from .svg import Canvas, matrix, vec
+
+
+def arc_points(radius: float, start: float, sweep: float, n: int = 48) -> list[tuple[float, float]]:
+    """Points on a circle about the origin from angle ``start`` through ``sweep`` (radians).
+
+    >>> [tuple(round(v, 3) + 0.0 for v in p) for p in arc_points(1, 0, math.pi / 2, n=2)]
+    [(1.0, 0.0), (0.0, 1.0)]
+    """
+    return [(radius * math.cos(start + sweep * k / (n - 1)), radius * math.sin(start + sweep * k / (n - 1)))
+            for k in range(n)]
+
+
+def draw(p: dict[str, float]) -> dict:
+    theta = math.radians(p["theta"])
+    px, py = p["px"], p["py"]
+    qx, qy = rotate_2d(px, py, theta)
+    R = rot2(theta)
+    c = Canvas(400, 400, (-2.6, 2.6), (-2.6, 2.6))
+    c.grid(1.0)
+    # the rotated basis: the columns of R(θ)
+    c.arrow((0, 0), (R[0][0], R[1][0]), "wb-fig-c wb-fig-thin")
+    c.arrow((0, 0), (R[0][1], R[1][1]), "wb-fig-c wb-fig-thin")
+    c.text((R[0][0] * 1.12, R[1][0] * 1.12), "col 1", "wb-fig-label wb-fig-small wb-fig-c")
+    c.text((R[0][1] * 1.12, R[1][1] * 1.12), "col 2", "wb-fig-label wb-fig-small wb-fig-c")
+    radius = math.hypot(px, py)
+    if radius > 1e-9:
+        start = math.atan2(py, px)
+        c.polyline(arc_points(radius, 0, 2 * math.pi, 96), "wb-fig-muted wb-fig-thin wb-fig-dash")
+        if abs(theta) > 1e-9:
+            pts = arc_points(radius * 0.45, start, theta)
+            c.polyline(pts[:-1], "wb-fig-b wb-fig-thin")
+            c.arrow(pts[-4], pts[-1], "wb-fig-b wb-fig-thin", head=8)
+            mid = arc_points(radius * 0.45 + 0.25, start, theta / 2, n=2)[-1]
+            c.text(mid, "θ", "wb-fig-label wb-fig-b", dy=5)
+    c.arrow((0, 0), (px, py), "wb-fig-a wb-fig-thick")
+    c.arrow((0, 0), (qx, qy), "wb-fig-b wb-fig-thick")
+    c.dot((px, py), 5, "wb-fig-a wb-fig-solid")
+    c.dot((qx, qy), 5, "wb-fig-b wb-fig-solid")
+    c.tag((px, py), "p", "wb-fig-label wb-fig-a")
+    c.tag((qx, qy), "p′ = R(θ)p", "wb-fig-label wb-fig-b")
+    svg = c.svg(f"The point p = ({px:g}, {py:g}) turned by {p['theta']:g}° about the origin")
+    return {"svg": svg, "readouts": {"R": matrix(R), "point": vec((px, py)), "image": vec((qx, qy))}}
+
+
+FIGURE = Figure(
+    name="rotation-2d",
+    title="Rotating a point",
+    caption="Drag the angle: p′ = R(θ)p swings along the dashed circle, and the columns of R(θ) "
+            "are where the x- and y-axes land.",
+    controls=(
+        Control("theta", "Angle θ", -180, 180, 1, 30, "°"),
+        Control("px", "Point x", -2, 2, 0.1, 1.5),
+        Control("py", "Point y", -2, 2, 0.1, 0.5),
+    ),
+    readouts=(Readout("R", "R(θ)", matrix=True), Readout("point", "p"), Readout("image", "p′ = R(θ)p")),
+    draw=draw,
+)

@@ -1,0 +1,84 @@
+"""Small helpers over the page contract (../shared/GUIDE.md §1)."""
+
+from __future__ import annotations
+
+from playwright.sync_api import Locator, Page
+
+CHAPTERS = {
+    0: "chapters/00-rotations-2d/", 1: "chapters/01-transforms/", 2: "chapters/02-rotations-3d/",
+    3: "chapters/03-ekf-predict/", 4: "chapters/04-ekf-update/", 5: "chapters/05-pose-graph-slam/",
+    6: "chapters/06-arm-kinematics/", 7: "chapters/07-jacobians/", 8: "chapters/08-pid-control/",
+    9: "chapters/09-capstone/",
+}
+
+
+def open_chapter(page: Page, site_url: str, n: int, wait_ready: bool = True) -> None:
+    page.goto(site_url + CHAPTERS[n])
+    if wait_ready:
+        wait_runtime(page)
+
+
+def wait_runtime(page: Page, state: str = "ready", timeout: float = 60_000) -> None:
+    page.wait_for_function(
+        "s => document.documentElement.dataset.workbookRuntime === s", arg=state, timeout=timeout
+    )
+
+
+def exercise(page: Page, ex_id: str) -> Locator:
+    return page.locator(f'[data-exercise-id="{ex_id}"]')
+
+
+def settle(ex: Locator, timeout: float = 30_000) -> str:
+    """Wait until the exercise is no longer pending; return its state."""
+    ex.page.wait_for_function(
+        "el => el.dataset.state !== 'pending'", arg=ex.element_handle(), timeout=timeout
+    )
+    return ex.get_attribute("data-state")
+
+
+def check(ex: Locator, timeout: float = 30_000) -> str:
+    ex.locator('[data-role="check"]').click()
+    return settle(ex, timeout)
+
+
+def answer_derive(ex: Locator, text: str) -> str:
+    ex.locator('[data-role="answer"]').fill(text)
+    return check(ex)
+
+
+def answer_trace(ex: Locator, key: str) -> str:
+    ex.locator(f'[data-role="choice"][value="{key}"]').check()
+    return check(ex)
+
+
+def answer_debug(ex: Locator, line: int) -> str:
+    ex.locator(f'[data-role="line"][data-line="{line}"]').click()
+    return check(ex)
+
+
+def arrange_design(ex: Locator, order: list[str]) -> None:
+    """Reorder the steps with the move-up buttons (the keyboard path)."""
+    for target, key in enumerate(order):
+        while True:
+            keys = ex.locator('[data-role="step"]').evaluate_all("els => els.map(e => e.dataset.step)")
+            pos = keys.index(key)
+            if pos == target:
+                break
+            ex.locator(f'[data-role="step"][data-step="{key}"] [data-role="move-up"]').click()
+
+
+def set_editor(page: Page, ex: Locator, code: str) -> None:
+    ex.locator(".cm-editor").wait_for()
+    ex.evaluate(
+        "(el, code) => el.querySelector('[data-role=editor]').wbEditor.setCode(code)",
+        code,
+    )
+
+
+def run_build(ex: Locator, timeout: float = 60_000) -> str:
+    ex.locator('[data-role="run"]').click()
+    return settle(ex, timeout)
+
+
+def feedback(ex: Locator) -> str:
+    return ex.locator('[data-role="feedback"]').inner_text()

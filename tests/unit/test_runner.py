@@ -1,0 +1,75 @@
+"""The Build test runner: what a learner sees for each kind of code."""
+
+import numpy as np  # noqa: F401  (available natively; the worker loads it on demand)
+
+from workbook import bank
+from workbook.runner import STDOUT_CAP, run_build
+
+EX = bank.get("0.5")
+GOOD = "import math\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c*x - s*y, s*x + c*y)\n"
+
+
+def test_correct_solution_passes_visible_and_hidden_tests():
+    result = run_build(EX, GOOD)
+    assert result.status == "correct"
+    rows = result.data["tests"]
+    assert len(rows) == len(EX.examples) + 1
+    assert all(r["passed"] for r in rows)
+    assert rows[0]["input"].startswith("rotate_2d(3, 0, ")
+
+
+def test_lists_tuples_and_numpy_arrays_are_all_fine():
+    for wrap in ("list", "tuple", "np.array"):
+        code = "import numpy as np\n" + GOOD.replace("return (c*x - s*y, s*x + c*y)", f"return {wrap}([c*x - s*y, s*x + c*y])")
+        assert run_build(EX, code).status == "correct", wrap
+
+
+def test_wrong_type_and_shape_are_named():
+    r = run_build(EX, "def rotate_2d(x, y, theta):\n    return 5\n")
+    assert "expected a sequence of 2 numbers, got int" in r.data["tests"][0]["message"]
+    r = run_build(EX, "def rotate_2d(x, y, theta):\n    return (1, 2, 3)\n")
+    assert "expected 2 numbers, got 3" in r.data["tests"][0]["message"]
+    r = run_build(EX, "def rotate_2d(x, y, theta):\n    return [[1], [2]]\n")
+    assert "plain numbers" in r.data["tests"][0]["message"]
+
+
+def test_syntax_error_points_at_the_learners_line():
+    r = run_build(EX, "import math\n\ndef rotate_2d(x, y, theta)\n    return x, y\n")
+    assert (r.status, r.tag) == ("incorrect", "syntax")
+    assert r.data["error"]["line"] == 3
+    assert "line 3" in r.message.lower()
+
+
+def test_exception_traceback_shows_only_learner_frames():
+    code = "def helper(v):\n    return v / 0\n\ndef rotate_2d(x, y, theta):\n    return helper(x), y\n"
+    r = run_build(EX, code)
+    assert r.tag == "exception"
+    tb = r.data["error"]["traceback"]
+    assert "line 5, in rotate_2d" in tb and "line 2, in helper" in tb
+    assert "ZeroDivisionError" in tb
+    assert "runner.py" not in tb and "workbook" not in tb
+    assert r.data["error"]["line"] == 2
+
+
+def test_error_while_loading_the_code():
+    r = run_build(EX, "import math\nundefined_name\n")
+    assert r.tag == "exception" and r.data["error"]["line"] == 2
+
+
+def test_missing_function_is_named():
+    r = run_build(EX, "def rotate(x, y, theta):\n    return x, y\n")
+    assert r.tag == "missing" and "rotate_2d(x, y, theta)" in r.message
+
+
+def test_print_output_is_captured_and_capped():
+    r = run_build(EX, GOOD.replace("    c, s", "    print('x' * 1000)\n    c, s"))
+    assert r.status == "correct"
+    assert len(r.data["stdout"]) <= STDOUT_CAP + 40
+    assert r.data["stdout"].endswith("(output cut)")
+
+
+def test_hidden_cases_report_the_first_failing_input():
+    code = "import math\ndef rotate_2d(x, y, theta):\n    if abs(theta) < 0.2:\n        return (x, y)\n    c, s = math.cos(theta), math.sin(theta)\n    return (c*x - s*y, s*x + c*y)\n"
+    r = run_build(EX, code)
+    hidden = r.data["tests"][-1]
+    assert hidden["passed"] is False and hidden["input"].startswith("rotate_2d(")
