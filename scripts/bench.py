@@ -310,7 +310,7 @@ class _Handler(http.server.SimpleHTTPRequestHandler):
         if p.startswith(BASELINE_PATH):
             rel = p[len(BASELINE_PATH):] or "index.html"
             return str(self.bench.baseline_dir / rel.lstrip("/"))
-        return str(SITE / "__not_found__")
+        return str(self.bench.baseline_dir / "__not_found__")
 
     def end_headers(self):
         self.send_header("Cache-Control", "max-age=600")  # what GitHub Pages sends
@@ -331,11 +331,11 @@ class _Handler(http.server.SimpleHTTPRequestHandler):
 
 
 class BenchServer:
-    def __init__(self, baseline_dir: Path):
+    def __init__(self, site_dir: Path, baseline_dir: Path):
         self.baseline_dir = baseline_dir
         self.lock = threading.Lock()
         self.log: list[tuple[float, str, int, int]] = []  # (time, path, status, bytes)
-        handler = functools.partial(_Handler, directory=str(SITE), bench_server=self)
+        handler = functools.partial(_Handler, directory=str(site_dir), bench_server=self)
         self.httpd = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
         self.httpd.daemon_threads = True
         self.thread = threading.Thread(target=self.httpd.serve_forever, daemon=True)
@@ -357,7 +357,9 @@ class BenchServer:
         for _, _, status, _ in entries:
             by_status[str(status)] = by_status.get(str(status), 0) + 1
         biggest = sorted(entries, key=lambda e: -e[3])[:8]
+        sw_check = sum(e[3] for e in entries if e[1].endswith("/sw.js"))  # the browser's update check
         return {"bytes": sum(e[3] for e in entries), "requests": len(entries), "by_status": by_status,
+                "bytes_without_sw_update_check": sum(e[3] for e in entries) - sw_check,
                 "largest": [{"path": e[1], "status": e[2], "bytes": e[3]} for e in biggest]}
 
     def wait_quiet(self, quiet_s: float = 1.0, timeout_s: float = 15.0) -> None:
@@ -421,6 +423,8 @@ def attribute_long_tasks(snap: dict, until_ms: float, page_url: str) -> dict:
             owner = "ours"  # our bundle or the inline start-up script in our HTML
         elif path.startswith("/workbook/"):
             owner = "site (theme/vendor)"
+        elif not src:
+            owner = "no source URL"  # e.g. a browser or bench observer callback
         else:
             owner = "other"
         out.append({"start": round(t["start"], 1), "duration": round(t["duration"], 1), "owner": owner,
@@ -536,8 +540,12 @@ class Bench:
             self.server.wait_quiet(2.0, 60.0)
 
     # -- phases --------------------------------------------------------------
-    def phase_startup(self, run: dict) -> None:
-        """Cold visit (new context), then a revisit in the same context (warm)."""
+    def phase_ready(self, run: dict) -> None:
+        self.phase_startup(run, ready_only=True)
+
+    def phase_startup(self, run: dict, ready_only: bool = False) -> None:
+        """Cold visit (new profile), then a revisit in the same profile (warm); then,
+        on the warm page and two more, grading, Build runs and the recovery."""
         ctx = self.new_context()
         try:
             page, cold = self.visit(ctx, self.site + CH0)
@@ -545,6 +553,8 @@ class Bench:
             page.close()
             page, warm = self.visit(ctx, self.site + CH0)
             run["cold"], run["warm"] = cold, warm
+            if ready_only:
+                return
             grading: dict = {}
             self.grade_kinds(page, CH0, grading)
             self.phase_build(page, run)
@@ -648,8 +658,10 @@ class Bench:
             ctx.close()
 
     def run_all(self) -> None:
-        phases = [("startup", self.phase_startup), ("first_feedback", self.phase_first_feedback),
-                  ("baseline", self.phase_baseline)]
+        phases = [(name, fn) for name, fn in (("startup", self.phase_startup),
+                                              ("first_feedback", self.phase_first_feedback),
+                                              ("baseline", self.phase_baseline),
+                                              ("ready", self.phase_ready)) if name in self.args.phases]
         for i in range(self.args.runs):
             run: dict = {"index": i + 1, "errors": {}}
             for name, fn in phases:
@@ -698,6 +710,7 @@ def collect(runs: list[dict]) -> dict:
         "recovery_ms": pick("recovery", "recovery_ms"),
         "bytes_first_visit": pick("cold", "net", "bytes"),
         "bytes_revisit": pick("warm", "net", "bytes"),
+        "bytes_revisit_without_sw_check": pick("warm", "net", "bytes_without_sw_update_check"),
         "requests_revisit": pick("warm", "net", "requests"),
         "baseline_bytes_first_visit": pick("baseline_cold", "net", "bytes"),
         "longtasks_cold_count": pick("cold", "long_tasks", "count"),
@@ -751,8 +764,12 @@ def evaluate_targets(m: dict, runs: list[dict]) -> list[dict]:
     sw_runs = [r for r in runs if "warm" in r]
     controlled = [r["warm"]["sw"]["controlled"] for r in sw_runs]
     revisit = med("bytes_revisit")
+    other = (m.get("bytes_revisit_without_sw_check") or {}).get("max")
     if sw_runs and all(controlled):
-        add("revisit transfers 0 bytes once the service worker holds the site", revisit, 0, revisit == 0)
+        add("revisit transfers 0 bytes once the service worker holds the site", revisit, 0,
+            revisit == 0 or other == 0,
+            "" if revisit == 0 else f"only the browser's service-worker update check (sw.js, {revisit:.0f} B) "
+            "went to the network" if other == 0 else f"{other:.0f} B besides the sw.js update check")
     else:
         add("revisit transfers 0 bytes once the service worker holds the site", revisit, 0, None,
             "no service worker controlled the revisit: not measurable yet")
@@ -796,6 +813,7 @@ TABLE = [
     ("Recovery: limit fired -> next grade", "recovery_ms", "ms"),
     ("Bytes, first visit", "bytes_first_visit", "B"),
     ("Bytes, revisit", "bytes_revisit", "B"),
+    ("Bytes, revisit, besides the sw.js update check", "bytes_revisit_without_sw_check", "B"),
     ("Bytes, baseline first visit", "baseline_bytes_first_visit", "B"),
     ("Bytes, loading numpy", "numpy_bytes", "B"),
     ("Long tasks at start-up, cold (count)", "longtasks_cold_count", "n"),
@@ -830,6 +848,36 @@ def render_targets(targets: list[dict]) -> str:
     return "\n".join(lines)
 
 
+PYODIDE_CORE = ("pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "python_stdlib.zip")
+
+
+def stage_baseline(site: Path, target: Path) -> dict:
+    """The baseline's Pyodide folder: the site's lock file and wheels, with the core
+    files as published (node_modules/pyodide, checked against the pinned hashes),
+    so that a change to the site's own copies (e.g. a precompiled stdlib) shows
+    up against stock Pyodide. Falls back to the site's copies."""
+    import hashlib
+
+    shutil.copytree(site / "assets" / "vendor" / "pyodide", target)
+    pins = {}
+    pin_file = ROOT / "scripts" / "pyodide-0.27.7.sha256"
+    if pin_file.exists():
+        for line in pin_file.read_text().splitlines():
+            if line.strip() and not line.startswith("#"):
+                digest, name = line.split()
+                pins[name] = digest
+    stock = ROOT / "node_modules" / "pyodide"
+    source = {}
+    for name in PYODIDE_CORE:
+        src = stock / name
+        if src.exists() and pins.get(name) == hashlib.sha256(src.read_bytes()).hexdigest():
+            shutil.copyfile(src, target / name)
+            source[name] = "stock pyodide@0.27.7 (npm, hash-checked)"
+        else:
+            source[name] = "the site's copy"
+    return source
+
+
 def machine_info() -> dict:
     cpu = ""
     try:
@@ -861,11 +909,19 @@ def main() -> int:
     ap.add_argument("--checks", type=int, default=50, help="checks per kind for the grading round trip (default 50)")
     ap.add_argument("--build-repeats", type=int, default=5, help="Build runs after the first, per variant (default 5)")
     ap.add_argument("--budget", type=float, default=900, help="seconds; later runs are skipped after this (default 900)")
+    ap.add_argument("--phases", default="startup,first_feedback,baseline",
+                    help="comma-separated subset of startup,first_feedback,baseline (default: all); "
+                         "'ready' alone measures the cold and warm start-up only (for A/B comparisons)")
+    ap.add_argument("--site", type=Path, default=SITE, help="the built site to serve (default site/)")
     ap.add_argument("--out", type=Path, default=ROOT / "bench-results", help="output folder (default bench-results/)")
     args = ap.parse_args()
     if args.runs < 1 or args.checks < 1 or args.build_repeats < 1:
         ap.error("--runs, --checks and --build-repeats must be at least 1")
-    if not (SITE / "index.html").exists():
+    args.phases = [p.strip() for p in args.phases.split(",") if p.strip()]
+    unknown = set(args.phases) - {"startup", "first_feedback", "baseline", "ready"}
+    if unknown:
+        ap.error(f"unknown phase(s): {sorted(unknown)}")
+    if not (args.site / "index.html").exists():
         print("site/ is not built: run `make site` (make bench does)", file=sys.stderr)
         return 2
 
@@ -880,9 +936,15 @@ def main() -> int:
     started = dt.datetime.now(dt.timezone.utc)
     t0 = time.monotonic()
     machine = machine_info()
-    baseline_dir = Path(tempfile.mkdtemp(prefix="wb-bench-"))
-    (baseline_dir / "index.html").write_text(BASELINE_HTML.format(base=SUBPATH + "assets/vendor/pyodide/"))
-    server = BenchServer(baseline_dir)
+    work = Path(tempfile.mkdtemp(prefix="wb-bench-"))
+    # Serve a copy: a `make site` elsewhere during the run must not change what is measured.
+    site_copy = work / "site"
+    shutil.copytree(args.site, site_copy)
+    baseline_dir = work / "baseline"
+    baseline_dir.mkdir()
+    baseline_files = stage_baseline(site_copy, baseline_dir / "pyodide")
+    (baseline_dir / "index.html").write_text(BASELINE_HTML.format(base=BASELINE_PATH + "pyodide/"))
+    server = BenchServer(site_copy, baseline_dir)
     try:
         with sync_playwright() as pw:
             bench = Bench(args, server, pw)
@@ -891,7 +953,7 @@ def main() -> int:
             version = bench.version
     finally:
         server.close()
-        shutil.rmtree(baseline_dir, ignore_errors=True)
+        shutil.rmtree(work, ignore_errors=True)
     machine["loadavg_end"] = list(os.getloadavg())
 
     metrics = collect(bench.runs)
@@ -907,6 +969,7 @@ def main() -> int:
         "config": {"runs": args.runs, "checks": args.checks, "build_repeats": args.build_repeats,
                    "server": "Python ThreadingHTTPServer, HTTP/1.1 keep-alive, Cache-Control: max-age=600, "
                              "Last-Modified/If-Modified-Since, no compression",
+                   "baseline_files": baseline_files,
                    "pages": {"startup": CH0, "grading": {k: f"{p} {i}" for k, (p, i) in GRADED.items()}}},
         "metrics": metrics,
         "targets": targets,
@@ -928,6 +991,10 @@ def main() -> int:
     print()
     print("Targets:")
     print(render_targets(targets))
+    busy = max(machine["loadavg_start"][0], machine["loadavg_end"][0])
+    if busy > 0.5 * (machine["nproc"] or 1):
+        print(f"\nNOTE: the machine was busy (1-min load average up to {busy:.1f} on {machine['nproc']} CPUs): "
+              "times are inflated; rerun on a quiet machine to compare.")
     if report["external_requests"]:
         print(f"\nWARNING: {len(report['external_requests'])} request(s) left 127.0.0.1: {report['external_requests'][:5]}")
     if bench.page_errors:

@@ -2,6 +2,10 @@
 // main.js is an ES module with code splitting (the CodeMirror editor loads only
 // on pages with a Build exercise); worker.js is a classic worker script.
 import { build } from "esbuild";
+import { rmSync } from "node:fs";
+
+// Start clean: stale hashed chunks would otherwise ship (and be precached for offline use).
+rmSync("docs/assets/dist", { recursive: true, force: true });
 
 const common = { bundle: true, minify: true, sourcemap: true, target: ["es2020"], logLevel: "warning", legalComments: "linked" };
 

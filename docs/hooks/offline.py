@@ -9,7 +9,11 @@ and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
 * ``VERSION``: a hash over the template and every file, so any change to the
   site gives a new version (and a new cache).
 
-Source maps and the gzipped sitemap are left out (nothing at runtime reads them).
+Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
+and so are the search's word splitters and stemmers for other languages when the
+search is in English only (it then never loads them).
+``sitemap.xml`` is cached without a hash check: hosts may rewrite its absolute
+URLs, and a stale list of pages cannot break anything.
 Under ``mkdocs serve`` the service worker only unregisters itself, so a worker
 left by ``make serve`` on the same address does not serve stale pages.
 """
@@ -27,6 +31,8 @@ log = logging.getLogger("mkdocs.hooks.offline")
 TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map", ".gz")
+UNCHECKED = {"sitemap.xml"}
+LUNR_LANGUAGES = "assets/javascripts/lunr/"
 _serving = False
 
 UNREGISTER = """// mkdocs serve: no offline cache while authoring; remove any earlier worker.
@@ -40,12 +46,21 @@ def on_startup(command, dirty, **kwargs):
     _serving = command == "serve"
 
 
-def precache_list(site: Path) -> list[tuple[str, str, int]]:
+def _english_only(config) -> bool:
+    search = config.plugins.get("material/search") or config.plugins.get("search")
+    lang = getattr(search, "config", {}).get("lang") if search else None
+    lang = lang or [config.theme.get("language") or "en"]
+    return [code for code in lang if code != "en"] == []
+
+
+def precache_list(site: Path, english_only: bool = True) -> list[tuple[str, str, int]]:
     """(url, integrity, size) for every file the site serves at runtime, sorted."""
     out = []
     for path in sorted(site.rglob("*")):
         rel = path.relative_to(site).as_posix()
         if not path.is_file() or rel == OUTPUT or rel.endswith(SKIP_SUFFIXES):
+            continue
+        if english_only and rel.startswith(LUNR_LANGUAGES):
             continue
         if any(part.startswith(".") for part in rel.split("/")):
             continue  # build stamps and the like
@@ -61,12 +76,12 @@ def on_post_build(config, **kwargs):
         (site / OUTPUT).write_text(UNREGISTER)
         return
     template = (Path(config.docs_dir) / TEMPLATE).read_text()
-    files = precache_list(site)
+    files = precache_list(site, _english_only(config))
     h = hashlib.sha256(template.encode())
     for url, integrity, _ in files:
         h.update(f"\n{url} {integrity}".encode())
     version = h.hexdigest()[:16]
-    listing = "[\n" + ",\n".join(json.dumps([url, integrity]) for url, integrity, _ in files) + "\n]"
+    listing = "[\n" + ",\n".join(json.dumps([url, "" if url in UNCHECKED else integrity]) for url, integrity, _ in files) + "\n]"
     text = template.replace("__WB_VERSION__", json.dumps(version)).replace("__WB_FILES__", listing)
     (site / OUTPUT).write_text(text)
     total = sum(size for *_, size in files)

@@ -56,7 +56,7 @@ def _derive(ex: Derive, base: str) -> str:
 def _trace(ex: Trace, base: str, inline: Inline) -> str:
     items = "".join(
         f'<label class="wb-choice"><input type="radio" name="{base}-choice" value="{escape(o.key)}" data-role="choice">'
-        f'<span class="wb-choice-key" aria-hidden="true">{escape(o.key)}</span>'
+        f'<span class="wb-choice-key">{escape(o.key)}</span>'
         f'<span class="wb-choice-text">{inline(o.text)}</span></label>'
         for o in ex.options
     )

@@ -3,9 +3,10 @@
 
 import { indentWithTab } from "@codemirror/commands";
 import { python } from "@codemirror/lang-python";
-import { indentUnit } from "@codemirror/language";
+import { HighlightStyle, indentUnit, syntaxHighlighting } from "@codemirror/language";
 import { EditorState, StateEffect, StateField } from "@codemirror/state";
 import { Decoration, EditorView, keymap } from "@codemirror/view";
+import { tags as t } from "@lezer/highlight";
 import { basicSetup } from "codemirror";
 
 const setErrorLine = StateEffect.define();
@@ -29,10 +30,24 @@ const paletteTheme = EditorView.theme({
   "&": { color: "var(--md-code-fg-color)", backgroundColor: "var(--md-code-bg-color)", fontSize: ".8rem" },
   ".cm-content": { fontFamily: "var(--md-code-font-family, monospace)", caretColor: "var(--md-typeset-color)" },
   ".cm-gutters": { backgroundColor: "var(--md-code-bg-color)", color: "var(--md-default-fg-color--light)", border: "none" },
-  ".cm-activeLine, .cm-activeLineGutter": { backgroundColor: "var(--md-code-hl-color--light, rgba(0,0,0,.04))" },
+  // The current line is marked in the gutter only: a tinted line lowers the text's contrast.
+  ".cm-activeLine": { backgroundColor: "transparent" },
+  ".cm-activeLineGutter": { backgroundColor: "var(--md-default-fg-color--lightest)", color: "var(--md-default-fg-color)" },
   "&.cm-focused .cm-cursor": { borderLeftColor: "var(--md-typeset-color)" },
   ".cm-selectionBackground, &.cm-focused .cm-selectionBackground": { backgroundColor: "var(--md-accent-fg-color--transparent) !important" },
 });
+
+// Syntax colours from the palette's own code colours (readable in light and dark).
+const paletteHighlight = HighlightStyle.define([
+  { tag: [t.keyword, t.controlKeyword, t.definitionKeyword, t.moduleKeyword, t.operatorKeyword, t.self], color: "var(--md-code-hl-keyword-color)" },
+  { tag: [t.string, t.special(t.string)], color: "var(--md-code-hl-string-color)" },
+  { tag: [t.number, t.bool, t.null], color: "var(--md-code-hl-number-color)" },
+  { tag: t.comment, color: "var(--md-code-hl-comment-color)", fontStyle: "italic" },
+  { tag: [t.function(t.variableName), t.function(t.propertyName), t.function(t.definition(t.variableName))], color: "var(--md-code-hl-function-color)" },
+  { tag: [t.className, t.definition(t.className)], color: "var(--md-code-hl-name-color)" },
+  { tag: [t.operator, t.punctuation, t.bracket], color: "var(--md-code-hl-punctuation-color)" },
+  { tag: t.invalid, color: "var(--md-code-hl-special-color)" },
+]);
 
 export function createEditor(host, doc, { onChange, onRun }) {
   const view = new EditorView({
@@ -41,13 +56,14 @@ export function createEditor(host, doc, { onChange, onRun }) {
       doc,
       extensions: [
         keymap.of([{ key: "Mod-Enter", run: () => (onRun(), true) }, indentWithTab]),
+        syntaxHighlighting(paletteHighlight),
         basicSetup,
         python(),
         indentUnit.of("    "),
         EditorState.tabSize.of(4),
         paletteTheme,
         errorLine,
-        EditorView.contentAttributes.of({ "aria-label": "Python code editor. Tab indents; press Escape then Tab to leave." }),
+        EditorView.contentAttributes.of({ "aria-label": "Python code editor. Tab indents; press Escape then Tab to leave.", tabindex: "0" }),
         EditorView.updateListener.of((update) => {
           if (update.docChanged) onChange(update.state.doc.toString());
         }),

@@ -65,7 +65,7 @@ export function renderTests(el, result) {
       }
       tr.lastChild.replaceChildren(row.passed ? "✓ pass" : "✗ fail");
       body.append(tr);
-      if (!row.passed && row.message) {
+      if (!row.passed && row.message && row.message !== "values differ") {
         const note = document.createElement("tr");
         note.className = "wb-test-note";
         const td = document.createElement("td");

@@ -5,8 +5,10 @@
 import { initExercise } from "./widgets.js";
 import { Progress } from "./progress.js";
 import { Runtime } from "./runtime.js";
+import { initFigures } from "./figures.js";
 import { initProgressPage } from "./progress-ui.js";
 import { registerOffline } from "./offline.js";
+import { initScrollRegions } from "./a11y.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
@@ -33,6 +35,7 @@ if (typeof Worker === "undefined") {
 }
 window.workbook = { runtime, progress };
 registerOffline(siteRoot);
+initScrollRegions();
 
 const noWorker = {
   status: "error",
@@ -66,6 +69,7 @@ function renderMath(scope) {
 function initPage() {
   renderMath(document);
   for (const el of document.querySelectorAll("[data-exercise-id]")) initExercise(el, shared);
+  initFigures(document, shared.runtime);
   if (!runtime) showRuntimeProblem(noWorker.message);
   else if (runtime.failure) showRuntimeProblem(runtime.failure);
   if (progress.notice) showNotice(progress.notice);

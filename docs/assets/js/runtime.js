@@ -126,6 +126,7 @@ export class Runtime {
   terminate(entry) {
     this.pending.delete(entry.msg.id);
     this.worker.terminate();
+    for (const other of this.pending.values()) clearTimeout(other.timer); // re-armed when re-sent
     entry.resolve(timeoutResult(entry));
     this.restarts++;
     this.lastStop = "terminate";

@@ -2,7 +2,8 @@
 //
 // This is a template: docs/hooks/offline.py writes it to the site root (sw.js)
 // after each build, with VERSION (a hash of every file) and FILES (each file's
-// URL relative to the site root and its sha256, as a fetch `integrity`) filled in.
+// URL relative to the site root and its sha256, as a fetch `integrity`, or "" for
+// no check) filled in.
 //
 // - install: fetch every file, each checked against its hash, into one cache
 //   named after VERSION. Only a complete cache lets the worker install, so a new

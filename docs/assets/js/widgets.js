@@ -47,6 +47,7 @@ function initTrace(ctx) {
     event.preventDefault();
     const picked = choices.find((c) => c.checked);
     if (!picked) {
+      setPending(ctx.el);
       showResult(ctx.el, { status: "invalid", message: "Choose one of the options first." });
       return;
     }
@@ -92,6 +93,7 @@ function initDebug(ctx) {
     event.preventDefault();
     const picked = lines.find((l) => l.classList.contains("is-selected"));
     if (!picked) {
+      setPending(ctx.el);
       showResult(ctx.el, { status: "invalid", message: "Click the line you think holds the bug, then check." });
       return;
     }

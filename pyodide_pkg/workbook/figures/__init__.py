@@ -58,11 +58,12 @@ class Control:
 
 @dataclass(frozen=True)
 class Readout:
-    """A live number; ``matrix`` readouts hold one row per line."""
+    """A live value; ``matrix`` readouts hold one row per line, ``text`` ones a sentence."""
 
     key: str
     label: str
     matrix: bool = False
+    text: bool = False
 
 
 @dataclass(frozen=True)

@@ -36,7 +36,7 @@ def draw(p: dict[str, float]) -> dict:
     outer, inner = L1 + L2, abs(L1 - L2)
     ox, oy = c.xy(0, 0)
     ro, ri = outer * c.scale, inner * c.scale
-    c.add(f'<path class="wb-fig-c wb-fig-annulus" fill-rule="evenodd" d="M {ox - ro:.1f} {oy:.1f} '
+    c.add(f'<path class="wb-fig-muted wb-fig-annulus" fill-rule="evenodd" d="M {ox - ro:.1f} {oy:.1f} '
           f'a {ro:.1f} {ro:.1f} 0 1 0 {2 * ro:.1f} 0 a {ro:.1f} {ro:.1f} 0 1 0 {-2 * ro:.1f} 0 Z '
           f'M {ox - ri:.1f} {oy:.1f} a {ri:.1f} {ri:.1f} 0 1 0 {2 * ri:.1f} 0 '
           f'a {ri:.1f} {ri:.1f} 0 1 0 {-2 * ri:.1f} 0 Z"/>')
@@ -88,7 +88,7 @@ FIGURE = Figure(
     ),
     readouts=(
         Readout("tip", "tip of the solid arm (x, y)"),
-        Readout("reach", "target"),
+        Readout("reach", "target", text=True),
         Readout("elbow_up", "elbow-up solution"),
         Readout("elbow_down", "elbow-down solution"),
     ),

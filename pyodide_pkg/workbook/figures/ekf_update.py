@@ -13,7 +13,7 @@ from .svg import Canvas, matrix, num
 
 PREDICTED = (2.0, 1.0, math.radians(30))
 TRUE_POSE = (2.4, 0.7, math.radians(27))
-LANDMARK = (5.0, 3.5)
+LANDMARK = (4.5, 3.0)
 THETA_SIGMA = math.radians(5)
 
 
@@ -24,7 +24,7 @@ def update(p: dict[str, float]):
 
     >>> P, z, h, K, x, Pn = update({"sigma_prior": 0.5, "sigma_r": 0.2, "sigma_phi": 3})
     >>> round(z[0], 4), round(h[0], 4)
-    (4.2426, 3.9051)
+    (3.1145, 3.2016)
     """
     s = p["sigma_prior"]
     P = [[s * s, 0.0, 0.0], [0.0, s * s, 0.0], [0.0, 0.0, THETA_SIGMA ** 2]]
@@ -48,11 +48,11 @@ def _robot(c: Canvas, pose, cls: str) -> None:
 def draw(p: dict[str, float]) -> dict:
     P, z, h, K, x_post, P_post = update(p)
     prior, post = covariance_ellipse(P), covariance_ellipse(P_post)
-    c = Canvas(440, 340, (-0.3, 5.8), (-0.8, 4.2))
-    c.grid(1.0)
+    c = Canvas(440, 320, (0.4, 5.4), (-0.2, 3.6))
+    c.grid(1.0, labels=False)
     lx, ly = LANDMARK
     c.polygon([(lx, ly + 0.22), (lx + 0.16, ly), (lx, ly - 0.22), (lx - 0.16, ly)], "wb-fig-c wb-fig-solid")
-    c.tag(LANDMARK, "landmark", "wb-fig-label wb-fig-c")
+    c.text(LANDMARK, "landmark", "wb-fig-label wb-fig-c", dy=-18)
     seen = (PREDICTED[0] + z[0] * math.cos(PREDICTED[2] + z[1]), PREDICTED[1] + z[0] * math.sin(PREDICTED[2] + z[1]))
     c.line(PREDICTED[:2], seen, "wb-fig-c wb-fig-thin wb-fig-dash")
     c.dot(seen, 4, "wb-fig-c")

@@ -114,7 +114,7 @@ FIGURE = Figure(
         Readout("R", "R", matrix=True),
         Readout("q", "quaternion (w, x, y, z)"),
         Readout("apart", "angle between yaw and roll axes"),
-        Readout("gimbal", "gimbal"),
+        Readout("gimbal", "gimbal", text=True),
     ),
     draw=draw,
 )

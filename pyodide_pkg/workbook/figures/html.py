@@ -48,7 +48,7 @@ def _control(fig: Figure, c: Control) -> str:
         f'<output for="{cid}" data-role="control-value">{escape(text)}</output>'
         f'<input type="range" id="{cid}" data-param="{c.name}" min="{c.min:g}" max="{c.max:g}" '
         f'step="{c.step:g}" value="{c.default:g}" data-suffix="{escape(unit_suffix(c.unit))}" '
-        f'aria-valuetext="{escape(text)}"></div>'
+        f'aria-valuetext="{escape(text)}"/></div>'
     )
 
 
@@ -58,7 +58,7 @@ def figure_html(name: str) -> str:
     frame = fig.render()
     base = f"fig-{fig.name}"
     readouts = "".join(
-        f'<div class="wb-fig-readout{" wb-fig-matrix" if r.matrix else ""}"><dt>{escape(r.label)}</dt>'
+        f'<div class="wb-fig-readout{" wb-fig-matrix" if r.matrix else ""}{" wb-fig-text" if r.text else ""}"><dt>{escape(r.label)}</dt>'
         f'<dd data-role="readout" data-readout="{r.key}">{escape(frame["readouts"][r.key])}</dd></div>'
         for r in fig.readouts
     )

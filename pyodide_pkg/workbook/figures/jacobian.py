@@ -73,7 +73,7 @@ FIGURE = Figure(
     readouts=(
         Readout("J", "J", matrix=True),
         Readout("det", "det J"),
-        Readout("status", "status"),
+        Readout("status", "status", text=True),
     ),
     draw=draw,
 )

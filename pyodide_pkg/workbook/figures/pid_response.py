@@ -48,7 +48,7 @@ def draw(p: dict[str, float]) -> dict:
     if m.settling_time is not None:
         band = 0.02 * abs(final)
         c.polygon([(0, final - band), (DURATION, final - band), (DURATION, final + band), (0, final + band)],
-                  "wb-fig-c wb-fig-area")
+                  "wb-fig-c wb-fig-area wb-fig-thin")
         c.line((m.settling_time, Y_RANGE[0]), (m.settling_time, Y_RANGE[1]), "wb-fig-c wb-fig-thin wb-fig-dash")
     c.line((0, 1), (DURATION, 1), "wb-fig-b wb-fig-dash")
     c.text((DURATION, 1), "target", "wb-fig-label wb-fig-small wb-fig-b", dx=-4, dy=-6, anchor="end")

@@ -79,8 +79,8 @@ def draw(p: dict[str, float]) -> dict:
         _graph(c, optimised, "wb-fig-a", "wb-fig-b wb-fig-thick")
     else:
         _graph(c, drifted, "wb-fig-a", "wb-fig-bad wb-fig-thick wb-fig-dash")
-    c.tag(shown[0][:2], "pose 0 (fixed)", "wb-fig-label wb-fig-small")
-    c.tag(shown[-1][:2], f"pose {SIDES}", "wb-fig-label wb-fig-small")
+    c.text(shown[0][:2], "pose 0 (fixed)", "wb-fig-label wb-fig-small", dx=-10, dy=22, anchor="end")
+    c.text(shown[-1][:2], f"pose {SIDES}", "wb-fig-label wb-fig-small", dx=10, dy=22, anchor="start")
     gap = math.dist(shown[-1][:2], shown[0][:2])
     cost = graph_cost(shown, edges)
     title = (f"Pose graph with {SIDES} odometry edges and a loop closure, "

@@ -24,7 +24,7 @@ def draw(p: dict[str, float]) -> dict:
     px, py = p["px"], p["py"]
     qx, qy = rotate_2d(px, py, theta)
     R = rot2(theta)
-    c = Canvas(400, 400, (-2.6, 2.6), (-2.6, 2.6))
+    c = Canvas(400, 400, (-2.3, 2.3), (-2.3, 2.3))
     c.grid(1.0)
     # the rotated basis: the columns of R(θ)
     c.arrow((0, 0), (R[0][0], R[1][0]), "wb-fig-c wb-fig-thin")

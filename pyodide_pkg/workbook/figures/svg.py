@@ -43,7 +43,7 @@ def matrix(rows: Sequence[Sequence[float]], digits: int = 3) -> str:
     """
     cells = [[num(v, digits) for v in row] for row in rows]
     width = max(len(c) for row in cells for c in row)
-    return "\n".join(" ".join(c.rjust(width + 1) for c in row) for row in cells)
+    return "\n".join("  ".join(c.rjust(width) for c in row) for row in cells)
 
 
 def _f(v: float) -> str:

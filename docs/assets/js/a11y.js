@@ -1,0 +1,57 @@
+// Keyboard access to boxes that scroll sideways: a wide formula, a table of test
+// results or the printed output may not fit the column (at 360 px many do). Such
+// a box is only reachable by mouse or touch unless it can take the focus, so each
+// one that overflows gets tabindex=0 (the arrow keys then scroll it) and a name;
+// one that stops overflowing gives them back. Boxes are re-checked when the page
+// changes (instant navigation, a revealed derivation, a test run) or is resized.
+
+const BOXES = [
+  [".md-typeset div.arithmatex, .md-typeset .katex-display", "Formula (scrolls sideways)"],
+  [".wb-tests", "Test results (scroll sideways)"],
+  [".wb-stdout", "Printed output (scrolls)"],
+  [".wb-progress-table-wrap", "Progress table (scrolls sideways)"],
+];
+
+function scrolls(box) {
+  const style = getComputedStyle(box);
+  const x = /auto|scroll/.test(style.overflowX) && box.scrollWidth > box.clientWidth + 1;
+  const y = /auto|scroll/.test(style.overflowY) && box.scrollHeight > box.clientHeight + 1;
+  return x || y;
+}
+
+function scan() {
+  for (const [selector, label] of BOXES) {
+    for (const box of document.querySelectorAll(selector)) {
+      const mine = box.dataset.wbScrollable === "true";
+      if (box.hidden || box.closest("[hidden]")) continue;
+      if (scrolls(box)) {
+        if (mine || box.hasAttribute("tabindex")) continue;
+        Object.assign(box, { tabIndex: 0 });
+        box.setAttribute("role", "group");
+        box.setAttribute("aria-label", label);
+        box.dataset.wbScrollable = "true";
+      } else if (mine) {
+        box.removeAttribute("tabindex");
+        box.removeAttribute("role");
+        box.removeAttribute("aria-label");
+        delete box.dataset.wbScrollable;
+      }
+    }
+  }
+}
+
+let queued = false;
+function later() {
+  if (queued) return;
+  queued = true;
+  requestAnimationFrame(() => {
+    queued = false;
+    scan();
+  });
+}
+
+export function initScrollRegions() {
+  new MutationObserver(later).observe(document.body, { childList: true, subtree: true, attributeFilter: ["hidden"] });
+  window.addEventListener("resize", later);
+  later();
+}

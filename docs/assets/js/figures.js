@@ -1,0 +1,128 @@
+// Interactive figures (data-role="figure"). The page computes nothing: it sends
+// the control values to the worker ({op: "figure"}) and swaps in the SVG,
+// readouts and flags that come back. At most one request per figure is in
+// flight; changes made meanwhile are sent, latest values only, when it returns.
+// Before the runtime is ready the static first frame stays on screen and the
+// request waits in the runtime's queue.
+
+const LIMIT_MS = 10_000;
+
+class FigureView {
+  constructor(el, runtime) {
+    this.el = el;
+    this.runtime = runtime;
+    this.name = el.dataset.figure;
+    this.canvas = el.querySelector('[data-role="figure-canvas"]');
+    this.status = el.querySelector('[data-role="figure-status"]');
+    this.controls = [...el.querySelectorAll("[data-param]")];
+    this.inFlight = false;
+    for (const control of this.controls) {
+      if (control.type === "range") {
+        control.addEventListener("input", () => this.changed(control));
+      } else {
+        control.addEventListener("click", () => {
+          const on = control.getAttribute("aria-pressed") !== "true";
+          control.setAttribute("aria-pressed", String(on));
+          this.changed(control);
+        });
+      }
+    }
+    this.canvas.addEventListener("pointerdown", (event) => this.startDrag(event));
+  }
+
+  params() {
+    const out = {};
+    for (const control of this.controls) {
+      out[control.dataset.param] =
+        control.type === "range" ? Number(control.value) : control.getAttribute("aria-pressed") === "true" ? 1 : 0;
+    }
+    return out;
+  }
+
+  key() {
+    return JSON.stringify(this.params());
+  }
+
+  changed(control) {
+    if (control.type === "range") {
+      const text = control.value + (control.dataset.suffix || "");
+      control.setAttribute("aria-valuetext", text);
+      const output = control.parentElement.querySelector('[data-role="control-value"]');
+      if (output) output.textContent = text;
+    }
+    if (!this.inFlight) this.send();
+  }
+
+  async send() {
+    const key = this.key();
+    this.inFlight = true;
+    this.el.dataset.state = "pending";
+    const result = await this.runtime.request(
+      { op: "figure", figure: this.name, params: JSON.parse(key) },
+      { limitMs: LIMIT_MS },
+    );
+    this.inFlight = false;
+    if (result.status === "correct") {
+      this.apply(result.data);
+      this.status.textContent = "";
+      this.el.dataset.state = "ready";
+    } else {
+      this.status.textContent = result.message;
+      this.el.dataset.state = "error";
+    }
+    if (this.key() !== key && result.tag !== "runtime") this.send();
+  }
+
+  apply({ svg, readouts, flags }) {
+    this.canvas.innerHTML = svg;
+    for (const [name, text] of Object.entries(readouts || {})) {
+      const out = this.el.querySelector(`[data-role="readout"][data-readout="${name}"]`);
+      if (out) out.textContent = text;
+    }
+    this.el.dataset.flags = (flags || []).join(" ");
+  }
+
+  // Dragging a handle (data-drag-x / data-drag-y): the SVG's own transform maps
+  // the pointer into the figure's coordinates; the sliders then clamp and snap it.
+  startDrag(event) {
+    const handle = event.target.closest?.("[data-drag-x]");
+    if (!handle) return;
+    event.preventDefault();
+    const pointerId = event.pointerId;
+    this.canvas.setPointerCapture?.(pointerId);
+    const move = (e) => {
+      if (e.pointerId !== pointerId) return;
+      const frame = this.canvas.querySelector("[data-drag-x]")?.parentNode;
+      const ctm = frame?.getScreenCTM();
+      if (!ctm) return;
+      const q = new DOMPoint(e.clientX, e.clientY).matrixTransform(ctm.inverse());
+      this.setSlider(handle.dataset.dragX, q.x);
+      this.setSlider(handle.dataset.dragY, q.y);
+    };
+    const stop = (e) => {
+      if (e.pointerId !== pointerId) return;
+      this.canvas.removeEventListener("pointermove", move);
+      this.canvas.removeEventListener("pointerup", stop);
+      this.canvas.removeEventListener("pointercancel", stop);
+    };
+    this.canvas.addEventListener("pointermove", move);
+    this.canvas.addEventListener("pointerup", stop);
+    this.canvas.addEventListener("pointercancel", stop);
+    move(event);
+  }
+
+  setSlider(param, value) {
+    const input = this.controls.find((c) => c.dataset.param === param && c.type === "range");
+    if (!input) return;
+    const before = input.value;
+    input.value = String(value); // the browser clamps to [min, max] and snaps to the step
+    if (input.value !== before) input.dispatchEvent(new Event("input", { bubbles: true }));
+  }
+}
+
+/** Wire up every figure under `root` once (pages arrive again with instant navigation). */
+export function initFigures(root, runtime) {
+  for (const el of root.querySelectorAll('[data-role="figure"][data-figure]')) {
+    if (!el.wbFigure) el.wbFigure = new FigureView(el, runtime);
+  }
+}

@@ -1,0 +1,245 @@
+"""Accessibility and small screens: an axe-core audit of every page in the light
+and dark palettes (no serious or critical violation, with hints and solutions
+open), every exercise kind worked from the keyboard alone with a visible focus,
+and every page usable 360 px wide (no sideways scrolling, editors and figures
+fit, touch targets at least 24 px).
+
+axe-core comes from node_modules and is injected by the test only; the site
+never ships it."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from conftest import ROOT
+from helpers import CHAPTERS, exercise, open_chapter, settle, wait_runtime
+from playwright.sync_api import Page, expect
+
+from workbook import bank
+
+AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
+PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
+ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
+
+
+def settle_page(page: Page) -> None:
+    """Wait until the page's script has drawn everything it draws."""
+    page.wait_for_function("""() => {
+      const exercises = [...document.querySelectorAll('[data-exercise-id]')];
+      const builds = exercises.filter(e => e.dataset.kind === 'build');
+      return exercises.every(e => e.dataset.wbReady) &&
+        builds.every(e => e.querySelector('.cm-editor')) &&
+        (!exercises.length || document.querySelector('.wb-chapter-progress')) &&
+        [...document.querySelectorAll('[data-wb-progress-panel]')].every(p => p.querySelector('table'));
+    }""")
+
+
+def open_all_help(page: Page) -> None:
+    for button in page.locator('[data-role="hint"], [data-role="reveal"]').all():
+        button.click()
+    page.wait_for_function("() => [...document.querySelectorAll('.wb-solution')].every(s => !s.hidden)")
+
+
+def audit(page: Page) -> list[str]:
+    if not page.evaluate("typeof window.axe === 'object'"):
+        page.add_script_tag(path=str(AXE))
+    result = page.evaluate("""async () => {
+      const r = await axe.run(document, { resultTypes: ['violations'] });
+      return r.violations.filter(v => v.impact === 'serious' || v.impact === 'critical')
+        .map(v => `${v.id} (${v.impact}): ${v.help} — ` +
+                  v.nodes.slice(0, 4).map(n => `${n.target.join(' ')} ${n.any.map(a => a.message).join('; ')}`).join(' | '));
+    }""")
+    return result
+
+
+@pytest.mark.parametrize("scheme", ["light", "dark"])
+def test_axe_finds_no_serious_violation_on_any_page(page, site_url, scheme):
+    page.emulate_media(color_scheme=scheme)
+    found = {}
+    for path in PAGES:
+        page.goto(site_url + path)
+        expected = "slate" if scheme == "dark" else "default"
+        assert page.evaluate("document.body.getAttribute('data-md-color-scheme')") == expected
+        settle_page(page)
+        open_all_help(page)
+        problems = audit(page)
+        if path == "progress/":
+            page.get_by_role("button", name="Reset all progress…").click()
+            problems += [f"(reset dialog) {p}" for p in audit(page)]
+            page.keyboard.press("Escape")
+        if problems:
+            found[path or "home"] = problems
+    assert found == {}, "\n".join(f"{p}:\n  " + "\n  ".join(v) for p, v in found.items())
+
+
+def test_exercise_feedback_states_pass_the_audit(page, site_url):
+    """Right, wrong and invalid feedback and a Build test table, in both palettes."""
+    open_chapter(page, site_url, 0)
+    ex = exercise(page, "0.1")
+    ex.locator('[data-role="answer"]').fill("2")
+    ex.locator('[data-role="check"]').click()
+    settle(ex)
+    trace = exercise(page, "0.3")
+    trace.locator('[data-role="check"]').click()  # nothing chosen: invalid
+    build = exercise(page, "0.5")
+    build.locator('[data-role="run"]').click()
+    settle(build, timeout=120_000)
+    assert build.locator('[data-role="test-result"]').count() > 0
+    # Colours are measured as they are, not halfway through the theme's colour transitions.
+    page.add_style_tag(content="*, *::before, *::after { transition: none !important; }")
+    for scheme in ("light", "dark"):
+        page.emulate_media(color_scheme=scheme)
+        page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", "slate" if scheme == "dark" else "default")
+        assert audit(page) == [], scheme
+
+
+def has_visible_focus(page: Page) -> bool:
+    return page.evaluate("""() => {
+      const el = document.activeElement;
+      const s = getComputedStyle(el);
+      return (s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) >= 1) || s.boxShadow !== 'none';
+    }""")
+
+
+def tab_to(page: Page, selector: str, limit: int = 60) -> None:
+    """Press Tab until the focus is on an element matching `selector`."""
+    for _ in range(limit):
+        page.keyboard.press("Tab")
+        if page.evaluate("s => document.activeElement?.matches(s)", selector):
+            assert has_visible_focus(page), f"no visible focus on {selector}"
+            return
+    raise AssertionError(f"Tab never reached {selector}")
+
+
+def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
+    open_chapter(page, site_url, 1)
+    # Derive: type, Enter.
+    exercise(page, "1.1").locator('[data-role="answer"]').focus()
+    page.keyboard.type("4")
+    page.keyboard.press("Enter")
+    assert settle(exercise(page, "1.1")) == "correct"
+    # Hint and derivation: Tab to the buttons, Enter and Space.
+    tab_to(page, '[data-exercise-id="1.1"] [data-role="hint"]')
+    page.keyboard.press("Enter")
+    expect(exercise(page, "1.1").locator(".wb-hint")).to_be_visible()
+    tab_to(page, '[data-exercise-id="1.1"] [data-role="reveal"]')
+    page.keyboard.press(" ")
+    expect(exercise(page, "1.1").locator(".wb-solution")).to_be_visible()
+    assert exercise(page, "1.1").locator('[data-role="reveal"]').get_attribute("aria-expanded") == "true"
+    # Trace: Tab into the options, arrows choose, Tab to Check, Enter.
+    spec = bank.get("1.4")
+    tab_to(page, '[data-exercise-id="1.4"] [data-role="choice"]')
+    keys = [o.key for o in spec.options]
+    page.keyboard.press(" ")
+    for _ in range(keys.index(spec.answer)):
+        page.keyboard.press("ArrowDown")
+    assert exercise(page, "1.4").locator(f'[data-role="choice"][value="{spec.answer}"]').is_checked()
+    tab_to(page, '[data-exercise-id="1.4"] [data-role="check"]')
+    page.keyboard.press("Enter")
+    assert settle(exercise(page, "1.4")) == "correct"
+    # Design: Tab to the move buttons, Enter moves a step (focus stays on the button).
+    design = exercise(page, "1.5")
+    solution = list(bank.get("1.5").solution)
+    for target, key in enumerate(solution):
+        while True:
+            order = design.locator('[data-role="step"]').evaluate_all("els => els.map(e => e.dataset.step)")
+            if order.index(key) == target:
+                break
+            design.locator(f'[data-step="{key}"] [data-role="move-up"]').focus()
+            assert has_visible_focus(page)
+            page.keyboard.press("Enter")
+    assert "is now step" in design.locator('[data-role="feedback"]').inner_text()
+    tab_to(page, '[data-exercise-id="1.5"] [data-role="check"]')
+    page.keyboard.press("Enter")
+    assert settle(design) == "correct"
+
+    # Debug: arrows move between lines, Space picks, Enter checks.
+    open_chapter(page, site_url, 3)
+    bug = bank.get("3.5").bug_line
+    tab_to(page, '[data-exercise-id="3.5"] [data-role="line"]')
+    for _ in range(bug - 1):
+        page.keyboard.press("ArrowDown")
+    assert has_visible_focus(page)
+    page.keyboard.press(" ")
+    assert exercise(page, "3.5").locator(f'[data-line="{bug}"]').get_attribute("aria-selected") == "true"
+    page.keyboard.press("Enter")
+    assert settle(exercise(page, "3.5")) == "correct"
+
+    # Build: type into the editor, Ctrl+Enter runs; Tab leaves the editor after Escape.
+    open_chapter(page, site_url, 0)
+    build = exercise(page, "0.5")
+    build.locator(".cm-content").focus()
+    page.keyboard.press("Control+a")
+    page.keyboard.press("Delete")
+    build.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbEditor.view.dispatch({changes: {from: 0, insert: code}})",
+                   ROTATE_OK.replace("    ", "\t"))  # typed text is auto-indented; insert as one change
+    page.keyboard.press("Control+Enter")
+    assert settle(build, timeout=120_000) == "correct"
+    page.keyboard.press("Escape")
+    page.keyboard.press("Tab")
+    assert page.evaluate("document.activeElement.dataset.role") == "run"
+    assert has_visible_focus(page)
+    page.keyboard.press("Enter")
+    assert settle(build, timeout=120_000) == "correct"
+
+
+def test_progress_controls_work_from_the_keyboard(page, site_url):
+    page.goto(site_url + "progress/")
+    settle_page(page)
+    tab_to(page, '[data-wb-action="reset"]')
+    page.keyboard.press("Enter")
+    dialog = page.locator("dialog.wb-confirm")
+    expect(dialog).to_be_visible()
+    assert page.evaluate("document.activeElement.textContent") == "Cancel"
+    page.keyboard.press("Escape")
+    expect(dialog).to_be_hidden()
+    assert page.evaluate("document.activeElement.dataset.wbAction") == "reset"
+
+
+TARGETS = """() => {
+  const sel = 'button, input:not([type=radio]):not([type=checkbox]):not([type=file]), select, textarea, .wb-choice,' +
+              ' [data-role=line], [role=button], .wb-progress-panel a';
+  const small = [];
+  for (const el of document.querySelectorAll('.md-content ' + sel.split(',').join(', .md-content '))) {
+    const r = el.getBoundingClientRect();
+    if (!r.width || !r.height || el.closest('[hidden]')) continue;
+    if (el.closest('.wb-progress-table')) continue;  // links in a table of text
+    if (r.width < 24 || r.height < 24) small.push(`${el.tagName.toLowerCase()}.${el.className} ${Math.round(r.width)}x${Math.round(r.height)}`);
+  }
+  return small;
+}"""
+
+OVERFLOW = """() => {
+  const doc = document.scrollingElement;
+  const out = [];
+  if (doc.scrollWidth > doc.clientWidth) out.push(`page scrolls sideways: ${doc.scrollWidth} > ${doc.clientWidth}`);
+  const width = doc.clientWidth;
+  for (const el of document.querySelectorAll('.wb-exercise, .cm-editor, [data-role=figure], .md-content img, .md-content svg, .wb-progress-panel')) {
+    const r = el.getBoundingClientRect();
+    if (!r.width) continue;
+    // Inside a box that scrolls sideways on purpose (wide formulas, tables, code): fine.
+    let p = el.parentElement, scrolls = false;
+    while (p && p !== document.body) {
+      const o = getComputedStyle(p).overflowX;
+      if ((o === 'auto' || o === 'scroll') && p.getBoundingClientRect().right <= width + 0.5) { scrolls = true; break; }
+      p = p.parentElement;
+    }
+    if (!scrolls && (r.left < -0.5 || r.right > width + 0.5)) out.push(`${el.tagName.toLowerCase()}.${el.className}: ${Math.round(r.left)}..${Math.round(r.right)} of ${width}`);
+  }
+  return out;
+}"""
+
+
+def test_every_page_fits_360_px(page, site_url):
+    page.set_viewport_size({"width": 360, "height": 740})
+    problems = {}
+    for path in PAGES:
+        page.goto(site_url + path)
+        settle_page(page)
+        open_all_help(page)
+        found = page.evaluate(OVERFLOW) + page.evaluate(TARGETS)
+        if found:
+            problems[path or "home"] = found
+    assert problems == {}, "\n".join(f"{p}:\n  " + "\n  ".join(v) for p, v in problems.items())
+    wait_runtime(page)

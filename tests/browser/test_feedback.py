@@ -1,0 +1,81 @@
+"""Feedback a learner sees in the page: each message of the grading policy."""
+
+from __future__ import annotations
+
+import re
+
+from helpers import answer_derive, exercise, feedback, open_chapter, run_build, set_editor
+
+
+def test_derive_messages(page, site_url):
+    open_chapter(page, site_url, 4)
+    bearing = exercise(page, "4.2")
+    assert answer_derive(bearing, "0.9273") == "incorrect"
+    assert bearing.get_attribute("data-feedback") == "radians"
+    assert "radians" in feedback(bearing)
+    assert answer_derive(bearing, "0.9273 rad") == "correct"
+    assert answer_derive(bearing, "54") == "incorrect"
+    assert bearing.get_attribute("data-feedback") == "close"
+    assert "close" in feedback(bearing).lower()
+    h11 = exercise(page, "4.3")
+    assert answer_derive(h11, "0.6") == "incorrect"
+    assert h11.get_attribute("data-feedback") == "sign"
+    assert "sign" in feedback(h11).lower()
+    innovation = exercise(page, "4.4")
+    assert answer_derive(innovation, "0.2") == "incorrect"
+    assert innovation.get_attribute("data-feedback") == "slip"
+    for bad in ("", "2,5", "3 4", "banana", "[1, 2]"):
+        assert answer_derive(innovation, bad) == "invalid", bad
+        assert feedback(innovation).strip()
+
+
+def test_known_slip_in_chapter_3(page, site_url):
+    open_chapter(page, site_url, 3)
+    ex = exercise(page, "3.4")
+    assert answer_derive(ex, "1.11") == "incorrect"
+    assert ex.get_attribute("data-feedback") == "slip"
+
+
+def test_build_traceback_points_at_the_learners_line(page, site_url):
+    open_chapter(page, site_url, 0)
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, "import math\n\ndef rotate_2d(x, y, theta):\n    c = math.cos(theta)\n    return (c * x - s * y, 0)\n")
+    assert run_build(ex) == "incorrect"
+    text = ex.locator('[data-role="tests"]').inner_text()
+    assert "line 5, in rotate_2d" in text and "NameError" in text
+    assert "runner.py" not in text
+    marked = ex.locator(".cm-line.wb-error-line")
+    assert marked.count() == 1 and "return (c * x - s * y, 0)" in marked.inner_text()
+
+
+def test_build_syntax_error_and_print_output(page, site_url):
+    open_chapter(page, site_url, 0)
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, "def rotate_2d(x, y, theta)\n    return x, y\n")
+    assert run_build(ex) == "incorrect"
+    assert re.search(r"syntax error on line 1", feedback(ex), re.I)
+    set_editor(page, ex, "def rotate_2d(x, y, theta):\n    print('debug', x)\n    return x, y\n")
+    run_build(ex)
+    assert "debug 3" in ex.locator('[data-role="stdout"]').inner_text()
+
+
+def test_build_with_numpy_loads_it_on_demand(page, site_url):
+    open_chapter(page, site_url, 6)
+    ex = exercise(page, "6.5")
+    code = (
+        "import numpy as np\n\n"
+        "def forward_kinematics_2link(L1, L2, theta1, theta2):\n"
+        "    a = np.array([theta1, theta1 + theta2])\n"
+        "    return np.array([L1 * np.cos(a[0]) + L2 * np.cos(a[1]), L1 * np.sin(a[0]) + L2 * np.sin(a[1])])\n"
+    )
+    set_editor(page, ex, code)
+    assert run_build(ex, timeout=120_000) == "correct"
+
+
+def test_build_time_limit_message(page, site_url):
+    open_chapter(page, site_url, 8)
+    ex = exercise(page, "8.4")
+    set_editor(page, ex, "def pid_step(e, e_prev, integral, Kp, Ki, Kd, dt):\n    while True:\n        integral += 1\n")
+    assert run_build(ex, timeout=60_000) == "error"
+    assert ex.get_attribute("data-feedback") == "timeout"
+    assert "stopped after 5 s" in feedback(ex).lower()

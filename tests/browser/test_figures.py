@@ -1,0 +1,175 @@
+"""The interactive figures in the browser: move a slider with the keyboard and
+the readout shows what the reference implementation predicts for the new
+value (computed here, natively, with the same package)."""
+
+from __future__ import annotations
+
+import math
+import re
+
+import pytest
+
+from helpers import CHAPTERS, open_chapter, wait_runtime
+from workbook.figures import arm_2link, capstone, ekf_update, jacobian
+from workbook.reference.arm import inverse_kinematics_2link, jacobian_det
+from workbook.reference.ekf import ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
+from workbook.reference.pid import simulate_step_response, step_metrics
+from workbook.reference.rotation2d import rotate_2d
+from workbook.reference.rotation3d import euler_zyx, quat_from_matrix
+from workbook.reference.transform2d import apply, chain, transform2d
+
+rad = math.radians
+
+
+def numbers(text: str) -> list[float]:
+    return [float(m) for m in re.findall(r"-?\d+(?:\.\d+)?", text.replace("−", "-"))]
+
+
+def assert_close(text: str, expected, digits: int = 3) -> None:
+    got = numbers(text)
+    assert len(got) == len(expected), (text, expected)
+    for g, e in zip(got, expected):
+        assert abs(g - e) <= 0.51 * 10 ** -digits, (text, expected)
+
+
+def figure(page):
+    return page.locator('[data-role="figure"]')
+
+
+def readout(page, key: str) -> str:
+    return figure(page).locator(f'[data-role="readout"][data-readout="{key}"]').inner_text()
+
+
+def press(page, param: str, key: str, watch: str) -> str:
+    """Focus the slider, press ``key``, wait for the ``watch`` readout to change; return it."""
+    before = readout(page, watch)
+    figure(page).locator(f'input[type="range"][data-param="{param}"]').focus()
+    page.keyboard.press(key)
+    page.wait_for_function(
+        "([key, before]) => document.querySelector(`[data-role=readout][data-readout=\"${key}\"]`).textContent !== before",
+        arg=[watch, before],
+    )
+    return readout(page, watch)
+
+
+def slider_value(page, param: str) -> float:
+    return float(figure(page).locator(f'input[data-param="{param}"]').input_value())
+
+
+def test_every_chapter_page_has_a_figure(page, site_url):
+    for n in CHAPTERS:
+        open_chapter(page, site_url, n, wait_ready=False)
+        fig = figure(page)
+        assert fig.count() == 1
+        assert fig.locator("svg").count() == 1
+        assert fig.locator('input[type="range"]').count() >= 1
+        assert fig.locator('[data-role="readout"]').count() >= 1
+
+
+def test_ch0_rotation(page, site_url):
+    open_chapter(page, site_url, 0)
+    text = press(page, "theta", "ArrowRight", "image")
+    assert slider_value(page, "theta") == 31
+    assert_close(text, rotate_2d(1.5, 0.5, rad(31)))
+    assert figure(page).locator('output[data-role="control-value"]').first.inner_text() == "31°"
+
+
+def test_ch0_controls_queue_until_the_runtime_is_ready(page, site_url):
+    open_chapter(page, site_url, 0, wait_ready=False)
+    text = press(page, "theta", "End", "image")  # may be pressed while Python is still loading
+    wait_runtime(page)
+    assert_close(text, rotate_2d(1.5, 0.5, rad(180)))
+
+
+def test_ch1_frames(page, site_url):
+    open_chapter(page, site_url, 1)
+    text = press(page, "heading", "ArrowRight", "world")
+    T = chain(transform2d(1.0, 0.5, rad(31)), transform2d(0.5, 0.0, rad(20)))
+    assert_close(text, apply(T, 1.2, 0.4))
+
+
+def test_ch2_euler_and_gimbal_lock(page, site_url):
+    open_chapter(page, site_url, 2)
+    text = press(page, "pitch", "End", "q")
+    assert_close(text, quat_from_matrix(euler_zyx(rad(30), rad(90), rad(10))))
+    assert readout(page, "gimbal").startswith("locked")
+    assert "gimbal-lock" in figure(page).get_attribute("data-flags")
+
+
+def test_ch3_ekf_predict(page, site_url):
+    open_chapter(page, site_url, 3)
+    text = press(page, "steps", "ArrowRight", "pose")
+    Q = [[0.05 ** 2, 0, 0], [0, 0.05 ** 2, 0], [0, 0, rad(2) ** 2]]
+    state, P = (0.0, 0.0, 0.0), [[0.05 ** 2, 0, 0], [0, 0.05 ** 2, 0], [0, 0, rad(1) ** 2]]
+    for _ in range(7):
+        state, P = ekf_predict(state, P, 1.0, 0.3, 0.5, Q)
+    assert_close(text, [state[0], state[1], round(math.degrees(state[2]), 1)])
+
+
+def test_ch4_ekf_update(page, site_url):
+    open_chapter(page, site_url, 4)
+    text = press(page, "sigma_r", "ArrowRight", "posterior")
+    sigma_r = slider_value(page, "sigma_r")
+    assert sigma_r == pytest.approx(0.22)
+    P = [[0.25, 0, 0], [0, 0.25, 0], [0, 0, ekf_update.THETA_SIGMA ** 2]]
+    R = [[sigma_r ** 2, 0], [0, rad(3) ** 2]]
+    pose, landmark = ekf_update.PREDICTED, ekf_update.LANDMARK
+    x, _ = ekf_update_matrix(list(pose), P, list(range_bearing(ekf_update.TRUE_POSE, landmark)),
+                             list(range_bearing(pose, landmark)), measurement_jacobian(pose, landmark), R)
+    assert_close(text, [x[0], x[1], round(math.degrees(x[2]), 2)])
+
+
+def test_ch5_pose_graph_optimise_lowers_the_cost(page, site_url):
+    open_chapter(page, site_url, 5)
+    press(page, "drift", "ArrowRight", "gap")
+    shown = readout(page, "cost")
+    before = numbers(shown)[0]
+    button = figure(page).locator('button[data-param="optimise"]')
+    button.focus()
+    page.keyboard.press("Enter")
+    page.wait_for_function("b => document.querySelector('[data-readout=cost]').textContent !== b", arg=shown)
+    after = numbers(readout(page, "cost"))[0]
+    assert button.get_attribute("aria-pressed") == "true"
+    assert after < before
+    history = numbers(readout(page, "history"))
+    assert history[0] == pytest.approx(before) and history[-1] == pytest.approx(after)
+
+
+def test_ch6_arm_ik_and_unreachable(page, site_url):
+    open_chapter(page, site_url, 6)
+    text = press(page, "tx", "ArrowRight", "elbow_up")
+    tx = slider_value(page, "tx")
+    assert tx == pytest.approx(0.95)
+    sol = inverse_kinematics_2link(arm_2link.L1, arm_2link.L2, tx, 0.8)
+    shown = [float(v.replace("−", "-")) for v in re.findall(r"= (−?[\d.]+)°", text)]
+    assert shown == [round(math.degrees(a), 1) for a in sol.elbow_up]
+    text = press(page, "tx", "End", "reach")
+    assert text.startswith("unreachable")
+    assert readout(page, "elbow_up") == "none"
+    assert "unreachable" in figure(page).get_attribute("data-flags")
+
+
+def test_ch7_jacobian_and_singularity(page, site_url):
+    open_chapter(page, site_url, 7)
+    text = press(page, "theta2", "ArrowRight", "det")
+    assert_close(text, [jacobian_det(jacobian.L1, jacobian.L2, rad(30), rad(71))])
+    assert figure(page).get_attribute("data-flags") == ""
+    text = press(page, "theta2", "Home", "det")
+    assert_close(text, [jacobian_det(jacobian.L1, jacobian.L2, rad(30), rad(-180))])
+    assert figure(page).get_attribute("data-flags") == "singular"
+
+
+def test_ch8_pid(page, site_url):
+    open_chapter(page, site_url, 8)
+    text = press(page, "Kp", "ArrowRight", "error")
+    m = step_metrics(*simulate_step_response(8.5, 0, 0, duration=10.0))
+    assert_close(text, [m.steady_state_error])
+    assert_close(readout(page, "overshoot"), [100 * m.overshoot], 1)
+    assert_close(readout(page, "settling"), [m.settling_time], 2)
+
+
+def test_ch9_capstone(page, site_url):
+    open_chapter(page, site_url, 9)
+    text = press(page, "step", "ArrowRight", "estimate")
+    s = capstone.simulate(True)[21]
+    assert_close(text, [s.estimate[0], s.estimate[1], round(math.degrees(s.estimate[2]), 1)])

@@ -1,0 +1,221 @@
+"""Offline: after one visit, the service worker serves every page and runtime
+file with the network gone (Derive grading, a Build exercise importing NumPy);
+a new deploy is announced by a banner and replaces the old cache as a whole.
+Long runs: stopped by KeyboardInterrupt where the page is cross-origin isolated
+(the service worker adds COOP/COEP), by terminating the worker where not, and
+by terminating when an interrupt is ignored."""
+
+from __future__ import annotations
+
+import base64
+import functools
+import hashlib
+import http.server
+import json
+import os
+import re
+import shutil
+import threading
+import time
+from pathlib import Path
+from urllib.parse import urlsplit
+
+import pytest
+from conftest import SITE, SUBPATH, _SiteHandler
+from helpers import answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
+from playwright.sync_api import Page, expect
+
+ROTATE_NUMPY = (
+    "import numpy as np\n\n"
+    "def rotate_2d(x, y, theta):\n"
+    "    R = np.array([[np.cos(theta), -np.sin(theta)], [np.sin(theta), np.cos(theta)]])\n"
+    "    return R @ np.array([x, y])\n"
+)
+ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
+LOOP = "def rotate_2d(x, y, theta):\n    while True:\n        pass\n"
+STUBBORN_LOOP = (  # swallows KeyboardInterrupt: only terminating the worker stops it
+    "def rotate_2d(x, y, theta):\n"
+    "    while True:\n"
+    "        try:\n"
+    "            while True:\n"
+    "                pass\n"
+    "        except BaseException:\n"
+    "            pass\n"
+)
+LONG = 120_000
+
+
+def wait_offline_ready(page: Page) -> None:
+    page.wait_for_function("document.documentElement.dataset.workbookOffline === 'ready'", timeout=LONG)
+
+
+def precache_list(sw_text: str) -> list[list[str]]:
+    return json.loads(re.search(r"const FILES = (\[.*?\n\]);", sw_text, re.S).group(1))
+
+
+def test_everything_works_offline_after_one_visit(page, context, site_url):
+    open_chapter(page, site_url, 0)
+    wait_offline_ready(page)
+    files = precache_list((SITE / "sw.js").read_text())
+    urls = [u for u, _ in files]
+    for needed in ("./", "chapters/00-rotations-2d/", "progress/", "search/search_index.json", "assets/exercises.json",
+                   "assets/vendor/pyodide/pyodide.asm.wasm", "assets/vendor/pyodide/pyodide-lock.json",
+                   "assets/vendor/katex/katex.min.js", "assets/dist/workbook.js", "assets/dist/worker.js",
+                   "assets/workbook.css"):
+        assert needed in urls, needed
+    assert any(re.match(r"assets/vendor/pyodide/numpy-.*\.whl$", u) for u in urls)
+    assert any(re.match(r"assets/vendor/pyodide/robotics_workbook-.*\.whl$", u) for u in urls)
+    assert any(u.startswith("assets/dist/chunks/editor-") for u in urls)
+
+    context.set_offline(True)
+    fresh = context.new_page()
+    errors: list[str] = []
+    fresh.on("pageerror", lambda err: errors.append(str(err)))
+    started = time.perf_counter()
+    fresh.goto(site_url + "chapters/00-rotations-2d/")
+    wait_runtime(fresh, timeout=LONG)
+    print(f"\noffline: fresh page load to runtime ready in {time.perf_counter() - started:.1f} s")
+    assert fresh.evaluate("navigator.onLine") is False
+    assert answer_derive(exercise(fresh, "0.1"), "3") == "correct"
+    build = exercise(fresh, "0.5")
+    set_editor(fresh, build, ROTATE_NUMPY)
+    assert run_build(build, timeout=LONG) == "correct", feedback(build)
+
+    # Every precached file is served with the network gone.
+    missing = fresh.evaluate("""async (urls) => {
+      const bad = [];
+      for (const u of urls) {
+        try { const r = await fetch(new URL(u, window.__workbookBase)); if (!r.ok) bad.push(u + ' ' + r.status); }
+        catch (e) { bad.push(u + ' ' + e); }
+      }
+      return bad;
+    }""", urls)
+    assert missing == []
+    # Another page, and the address without its trailing slash.
+    fresh.goto(site_url + "chapters/04-ekf-update")
+    assert fresh.url.endswith("chapters/04-ekf-update/")
+    exercise(fresh, "4.1").wait_for()
+    wait_runtime(fresh, timeout=LONG)
+    assert errors == []
+    fresh.close()
+    context.set_offline(False)
+
+
+def timed_out(page: Page, ex) -> None:
+    page.wait_for_function("el => el.dataset.state === 'error'", arg=ex.element_handle(), timeout=LONG)
+    assert ex.get_attribute("data-feedback") == "timeout"
+    assert re.search(r"stopped after 5 s", feedback(ex), re.I)
+
+
+def grades_again(page: Page) -> None:
+    assert answer_derive(exercise(page, "0.1"), "3") == "correct"
+    build = exercise(page, "0.5")
+    set_editor(page, build, ROTATE_OK)
+    assert run_build(build, timeout=LONG) == "correct"
+
+
+def test_interrupt_stops_an_endless_loop_on_an_isolated_page(page, site_url):
+    open_chapter(page, site_url, 0)
+    wait_offline_ready(page)
+    page.reload()  # now served by the service worker, with COOP/COEP
+    wait_runtime(page, timeout=LONG)
+    assert page.evaluate("crossOriginIsolated") is True
+    assert page.evaluate("workbook.runtime.interrupt instanceof Int32Array")
+    build = exercise(page, "0.5")
+    set_editor(page, build, LOOP)
+    build.locator('[data-role="run"]').click()
+    timed_out(page, build)
+    assert page.evaluate("[workbook.runtime.lastStop, workbook.runtime.interrupts, workbook.runtime.restarts]") == [
+        "interrupt", 1, 0]
+    assert page.evaluate("document.documentElement.dataset.workbookRuntime") == "ready"  # no restart
+    grades_again(page)
+
+    # Code that swallows KeyboardInterrupt: a second later, the worker is terminated.
+    set_editor(page, build, STUBBORN_LOOP)
+    build.locator('[data-role="run"]').click()
+    timed_out(page, build)
+    assert page.evaluate("[workbook.runtime.lastStop, workbook.runtime.restarts]") == ["terminate", 1]
+    wait_runtime(page, timeout=LONG)
+    grades_again(page)
+
+
+def test_terminate_stops_an_endless_loop_where_not_isolated(page, site_url):
+    open_chapter(page, site_url, 0)  # the first visit is never isolated: no service worker yet
+    assert page.evaluate("crossOriginIsolated") is False
+    assert page.evaluate("workbook.runtime.interrupt") is None
+    build = exercise(page, "0.5")
+    set_editor(page, build, LOOP)
+    build.locator('[data-role="run"]').click()
+    timed_out(page, build)
+    assert page.evaluate("[workbook.runtime.lastStop, workbook.runtime.restarts, workbook.runtime.interrupts]") == [
+        "terminate", 1, 0]
+    wait_runtime(page, timeout=LONG)
+    grades_again(page)
+
+
+# ---- A new deploy ------------------------------------------------------------------
+@pytest.fixture
+def deploy(tmp_path):
+    """A copy of the site (files linked, sw.js and one page real) on a server of its own."""
+    root = tmp_path / "site"
+    shutil.copytree(SITE, root, copy_function=os.symlink, ignore=shutil.ignore_patterns("sw.js", "related"))
+    shutil.copy(SITE / "sw.js", root / "sw.js")
+    shutil.copytree(SITE / "related", root / "related")
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(_SiteHandler, directory=str(root)))
+    threading.Thread(target=server.serve_forever, daemon=True).start()
+    yield root, f"http://127.0.0.1:{server.server_address[1]}{SUBPATH}"
+    server.shutdown()
+
+
+def publish_new_version(root: Path) -> None:
+    """What a deploy does: one page changes, and sw.js gets a new list and version."""
+    page_file = root / "related" / "index.html"
+    page_file.write_text(page_file.read_text().replace("<h1", "<h1 data-deploy=\"2\"", 1))
+    digest = "sha256-" + base64.b64encode(hashlib.sha256(page_file.read_bytes()).digest()).decode()
+    sw = (root / "sw.js").read_text()
+    sw = re.sub(r'\["related/", "sha256-[^"]+"\]', f'["related/", "{digest}"]', sw)
+    sw = re.sub(r'const VERSION = "[^"]+"', 'const VERSION = "next-deploy"', sw)
+    (root / "sw.js").write_text(sw)
+
+
+def test_a_new_version_is_announced_and_replaces_the_old_cache(browser, deploy):
+    root, url = deploy
+    origin = "{0.scheme}://{0.netloc}".format(urlsplit(url))
+    context = browser.new_context()
+    blocked: list[str] = []
+
+    def guard(route):
+        if route.request.url.startswith((origin, "data:", "blob:")):
+            route.continue_()
+        else:
+            blocked.append(route.request.url)
+            route.abort()
+
+    context.route("**/*", guard)
+    page = context.new_page()
+    errors: list[str] = []
+    page.on("pageerror", lambda err: errors.append(str(err)))
+    page.goto(url + "related/")
+    wait_offline_ready(page)
+    page.reload()
+    wait_offline_ready(page)
+    old_caches = page.evaluate("caches.keys()")
+    assert len(old_caches) == 1
+    assert page.locator("[data-wb-update]").count() == 0
+
+    publish_new_version(root)
+    page.evaluate("navigator.serviceWorker.getRegistration().then(r => r.update())")
+    banner = page.locator("[data-wb-update]")
+    expect(banner).to_be_visible(timeout=LONG)
+    expect(banner).to_have_attribute("role", "status")
+    # Until the learner reloads, pages still come from the old version, whole.
+    assert "data-deploy" not in page.evaluate("fetch('./').then(r => r.text())")
+
+    with page.expect_navigation():
+        banner.get_by_role("button", name="Reload").click()
+    page.locator("h1[data-deploy='2']").wait_for()
+    caches = page.evaluate("caches.keys()")
+    assert len(caches) == 1 and caches[0].endswith(":next-deploy") and caches != old_caches
+    assert page.locator("[data-wb-update]").count() == 0
+    assert errors == [] and blocked == []
+    context.close()

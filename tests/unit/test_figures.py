@@ -1,0 +1,288 @@
+"""The interactive figures: every one draws well-formed SVG at any control
+setting, its readouts agree with the reference implementations, and bad
+requests get an error result instead of a crash."""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+from mkdocs.exceptions import PluginError
+
+from workbook import figures
+from workbook.api import handle
+from workbook.figures import FigureError
+from workbook.figures.html import figure_html
+from workbook.reference.arm import forward_kinematics_2link, inverse_kinematics_2link, jacobian_det
+from workbook.reference.ekf import covariance_ellipse, ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
+from workbook.reference.pid import simulate_step_response, step_metrics
+from workbook.reference.pose_graph import gauss_newton
+from workbook.reference.rotation2d import rot2, rotate_2d
+from workbook.reference.rotation3d import euler_zyx, quat_from_matrix
+from workbook.reference.transform2d import apply, chain, transform2d
+
+import exercises as hook  # docs/hooks/exercises.py
+
+ROOT = Path(__file__).resolve().parents[2]
+SVG = "{http://www.w3.org/2000/svg}"
+NAMES = figures.names()
+
+
+def numbers(text: str) -> list[float]:
+    """Every number in a readout, the typographic minus included."""
+    return [float(m) for m in re.findall(r"-?\d+(?:\.\d+)?", text.replace("−", "-"))]
+
+
+def close(text: str, expected, digits: int = 3) -> bool:
+    got = numbers(text)
+    expected = [expected] if isinstance(expected, (int, float)) else list(expected)
+    return len(got) == len(expected) and all(abs(g - e) <= 0.51 * 10 ** -digits for g, e in zip(got, expected))
+
+
+def settings(fig):
+    """Defaults, each control alone at its ends, and all controls at their ends together."""
+    yield {}
+    for c in fig.controls:
+        yield {c.name: c.min}
+        yield {c.name: c.max}
+    yield {c.name: c.min for c in fig.controls}
+    yield {c.name: c.max for c in fig.controls}
+
+
+def test_every_chapter_has_a_figure():
+    placed = {}
+    for page in sorted((ROOT / "docs" / "chapters").glob("0*.md")):
+        text = page.read_text(encoding="utf-8")
+        names = re.findall(r"^::: figure (\S+)\s*$", text, re.M)
+        assert names, f"{page.name} has no figure"
+        assert text.index("::: figure") < text.index("## Exercises"), f"{page.name}: the figure belongs before the exercises"
+        placed.update({n: page.name for n in names})
+    assert sorted(placed) == sorted(NAMES)
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_renders_well_formed_svg_at_every_extreme(name):
+    fig = figures.get(name)
+    for params in settings(fig):
+        out = fig.render(params)
+        assert set(out) == {"svg", "readouts", "flags"}
+        root = ET.fromstring(out["svg"])
+        assert root.tag == SVG + "svg"
+        assert root.get("width") == "100%" and root.get("viewBox")
+        assert root.find(SVG + "title") is not None
+        # colours come from CSS classes (palette variables), never from the markup
+        assert not re.search(r'(fill|stroke|style|color)="', out["svg"].replace('fill-rule="', ""))
+        assert "nan" not in out["svg"].lower() and "inf" not in out["svg"].replace("info", "")
+        assert set(out["readouts"]) == {r.key for r in fig.readouts}
+        assert all(isinstance(v, str) and v for v in out["readouts"].values())
+        assert all(isinstance(f, str) for f in out["flags"])
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_controls_are_sane(name):
+    fig = figures.get(name)
+    assert fig.controls and fig.readouts and fig.caption
+    for c in fig.controls:
+        assert c.min <= c.default <= c.max and c.step > 0
+        assert c.kind in ("range", "toggle")
+        steps = (c.default - c.min) / c.step
+        assert abs(steps - round(steps)) < 1e-9, f"{name}.{c.name}: the default is off the slider's step grid"
+
+
+def test_rotation_2d_matches_rotate_2d():
+    out = figures.render("rotation-2d", {"theta": 37, "px": -1.2, "py": 0.7})["readouts"]
+    assert close(out["image"], rotate_2d(-1.2, 0.7, math.radians(37)))
+    assert close(out["R"], [v for row in rot2(math.radians(37)) for v in row])
+
+
+def test_frames_chain_the_transforms():
+    p = {"x": 2.0, "y": -0.5, "heading": 120, "mount": -45}
+    out = figures.render("frames", p)["readouts"]
+    T = chain(transform2d(2.0, -0.5, math.radians(120)), transform2d(0.5, 0.0, math.radians(-45)))
+    assert close(out["world"], apply(T, 1.2, 0.4))
+    assert close(out["robot"], apply(transform2d(0.5, 0.0, math.radians(-45)), 1.2, 0.4))
+    assert close(out["T"], [v for row in T for v in row])
+
+
+def test_euler_quaternion_and_gimbal_lock():
+    out = figures.render("euler-3d", {"yaw": 50, "pitch": -30, "roll": 120})
+    q = quat_from_matrix(euler_zyx(*(math.radians(a) for a in (50, -30, 120))))
+    assert close(out["readouts"]["q"], q)
+    assert out["flags"] == [] and out["readouts"]["gimbal"].startswith("free")
+    locked = figures.render("euler-3d", {"yaw": 50, "pitch": 90, "roll": 20})
+    assert "gimbal-lock" in locked["flags"]
+    assert locked["readouts"]["gimbal"].startswith("locked") and "yaw − roll = 30°" in locked["readouts"]["gimbal"]
+    assert close(locked["readouts"]["apart"], 0.0, 1)
+
+
+def test_ekf_predict_follows_the_reference():
+    p = {"v": 1.2, "omega": -0.4, "dt": 0.3, "steps": 7, "q_xy": 0.1, "q_theta": 3}
+    out = figures.render("ekf-predict", p)["readouts"]
+    s = math.radians(3)
+    Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, s * s]]
+    state, P = (0.0, 0.0, 0.0), [[0.05 ** 2, 0, 0], [0, 0.05 ** 2, 0], [0, 0, math.radians(1) ** 2]]
+    sizes = []
+    for _ in range(7):
+        state, P = ekf_predict(state, P, 1.2, -0.4, 0.3, Q)
+        sizes.append(covariance_ellipse(P)[0])
+    assert close(out["pose"], [state[0], state[1], round(math.degrees(state[2]), 1)])
+    assert close(out["ellipse"], covariance_ellipse(P)[:2])
+    assert sizes == sorted(sizes), "prediction alone never shrinks the ellipse"
+
+
+def test_ekf_update_shrinks_the_ellipse_and_matches_the_reference():
+    from workbook.figures import ekf_update as mod
+
+    p = {"sigma_r": 0.1, "sigma_phi": 2, "sigma_prior": 0.6}
+    out = figures.render("ekf-update", p)["readouts"]
+    P = [[0.36, 0, 0], [0, 0.36, 0], [0, 0, mod.THETA_SIGMA ** 2]]
+    R = [[0.01, 0], [0, math.radians(2) ** 2]]
+    z = range_bearing(mod.TRUE_POSE, mod.LANDMARK)
+    h = range_bearing(mod.PREDICTED, mod.LANDMARK)
+    x, Pn = ekf_update_matrix(list(mod.PREDICTED), P, list(z), list(h),
+                              measurement_jacobian(mod.PREDICTED, mod.LANDMARK), R)
+    assert close(out["posterior"], [x[0], x[1], round(math.degrees(x[2]), 2)])
+    before, after = covariance_ellipse(P), covariance_ellipse(Pn)
+    assert after[0] < before[0] and after[1] < before[1]
+    assert close(out["ellipses"], [*before[:2], *after[:2]], 2)
+    # a noisier sensor earns a smaller gain on the range
+    noisy = figures.render("ekf-update", {**p, "sigma_r": 1.0})["readouts"]["K"]
+    assert abs(numbers(noisy)[0]) < abs(numbers(out["K"])[0])
+
+
+def test_pose_graph_cost_decreases_when_optimised():
+    from workbook.figures import pose_graph as mod
+
+    before = figures.render("pose-graph", {"drift": 6, "optimise": 0})
+    after = figures.render("pose-graph", {"drift": 6, "optimise": 1})
+    drifted, edges, _, _ = mod.solve(6.0)
+    _, costs = gauss_newton(drifted, edges)
+    assert close(before["readouts"]["cost"], costs[0], 2)
+    assert close(after["readouts"]["cost"], costs[-1], 2)
+    assert costs[-1] < 0.5 * costs[0]
+    assert numbers(after["readouts"]["gap"])[0] < numbers(before["readouts"]["gap"])[0]
+    history = numbers(after["readouts"]["history"])
+    assert history == sorted(history, reverse=True) and len(history) >= 2
+    assert after["flags"] == ["optimised"]
+    assert float(figures.render("pose-graph", {"drift": 0})["readouts"]["cost"]) == 0.0
+
+
+def test_arm_shows_both_ik_solutions_or_says_unreachable():
+    out = figures.render("arm-2link", {"theta1": -20, "theta2": 110, "tx": -0.6, "ty": 0.9})
+    r = out["readouts"]
+    assert close(r["tip"], forward_kinematics_2link(1.0, 0.6, math.radians(-20), math.radians(110)))
+    sol = inverse_kinematics_2link(1.0, 0.6, -0.6, 0.9)
+    for key, pair in (("elbow_up", sol.elbow_up), ("elbow_down", sol.elbow_down)):
+        shown = [float(v.replace("−", "-")) for v in re.findall(r"= (−?[\d.]+)°", r[key])]
+        assert shown == [round(math.degrees(a), 1) for a in pair]
+    assert r["reach"].startswith("reachable") and out["flags"] == []
+    for target in ({"tx": 1.8, "ty": 1.8}, {"tx": 0.1, "ty": -0.2}):
+        far = figures.render("arm-2link", target)
+        assert far["flags"] == ["unreachable"]
+        assert far["readouts"]["reach"].startswith("unreachable")
+        assert far["readouts"]["elbow_up"] == far["readouts"]["elbow_down"] == "none"
+
+
+def test_jacobian_determinant_and_singular_flag():
+    out = figures.render("jacobian", {"theta1": 10, "theta2": 45})
+    assert close(out["readouts"]["det"], jacobian_det(1.0, 0.7, math.radians(10), math.radians(45)))
+    assert out["flags"] == []
+    for theta2 in (0, 3, 180, -178):
+        near = figures.render("jacobian", {"theta1": 10, "theta2": theta2})
+        assert near["flags"] == ["singular"] and "singular" in near["svg"]
+
+
+def test_pid_readouts_match_step_metrics():
+    out = figures.render("pid-response", {"Kp": 12, "Ki": 3, "Kd": 0.8})["readouts"]
+    m = step_metrics(*simulate_step_response(12, 3, 0.8, duration=10.0))
+    assert close(out["overshoot"], 100 * m.overshoot, 1)
+    assert close(out["settling"], m.settling_time, 2)
+    assert close(out["error"], m.steady_state_error, 3)
+    p_only = figures.render("pid-response", {"Kp": 9, "Ki": 0, "Kd": 0})["readouts"]
+    assert close(p_only["error"], 0.1, 3)
+    unstable = figures.render("pid-response", {"Kp": 0, "Ki": 20, "Kd": 0})
+    assert "unsettled" in unstable["flags"] and unstable["readouts"]["settling"].startswith("not settled")
+
+
+def test_capstone_replays_the_simulation():
+    from workbook.figures import capstone as mod
+
+    for step in (0, 13, mod.STEPS):
+        out = figures.render("capstone", {"step": step})["readouts"]
+        s = mod.simulate(True)[step]
+        assert close(out["estimate"], [s.estimate[0], s.estimate[1], round(math.degrees(s.estimate[2]), 1)])
+        assert close(out["error"], math.dist(s.true[:2], s.estimate[:2]))
+    blind = figures.render("capstone", {"step": mod.STEPS, "sensor": 0})["readouts"]
+    seeing = figures.render("capstone", {"step": mod.STEPS, "sensor": 1})["readouts"]
+    assert numbers(blind["error"])[0] > numbers(seeing["error"])[0]
+
+
+def api(request):
+    out = json.loads(handle(json.dumps(request)))
+    assert set(out) == {"status", "message", "tag", "data"}
+    return out
+
+
+def test_api_figure_op():
+    out = api({"op": "figure", "figure": "rotation-2d", "params": {"theta": 90}})
+    assert out["status"] == "correct"
+    assert set(out["data"]) == {"svg", "readouts", "flags"}
+    assert close(out["data"]["readouts"]["image"], rotate_2d(1.5, 0.5, math.pi / 2))
+
+
+@pytest.mark.parametrize("request_", [
+    {"op": "figure", "figure": "nope"},
+    {"op": "figure"},
+    {"op": "figure", "figure": "rotation-2d", "params": {"phi": 1}},
+    {"op": "figure", "figure": "rotation-2d", "params": {"theta": "abc"}},
+    {"op": "figure", "figure": "rotation-2d", "params": {"theta": None}},
+    {"op": "figure", "figure": "rotation-2d", "params": {"theta": True}},
+    {"op": "figure", "figure": "rotation-2d", "params": {"theta": 1000}},
+    {"op": "figure", "figure": "rotation-2d", "params": [1, 2]},
+    {"op": "figure", "figure": "pose-graph", "params": {"optimise": 0.5}},
+])
+def test_api_figure_errors(request_):
+    out = api(request_)
+    assert out["status"] == "error" and out["message"]
+
+
+def test_nan_is_refused():
+    with pytest.raises(FigureError):
+        figures.render("rotation-2d", {"theta": float("nan")})
+
+
+@pytest.mark.parametrize("name", NAMES)
+def test_static_html_holds_the_first_frame(name):
+    fig = figures.get(name)
+    html = figure_html(name)
+    root = ET.fromstring(html)  # the figure's HTML is well-formed XML too
+    assert root.tag == "figure" and root.get("data-role") == "figure" and root.get("data-figure") == name
+    assert fig.render()["svg"] in html
+    ranges = root.findall(".//input[@type='range']")
+    toggles = root.findall(".//button[@data-param]")
+    assert len(ranges) + len(toggles) == len(fig.controls)
+    for c, el in zip([c for c in fig.controls if c.kind == "range"], ranges):
+        assert el.get("data-param") == c.name and float(el.get("value")) == c.default
+        assert float(el.get("min")) == c.min and float(el.get("max")) == c.max and float(el.get("step")) == c.step
+        label = root.find(f".//label[@for='{el.get('id')}']")
+        assert label is not None and label.text
+    readouts = root.findall(".//*[@data-role='readout']")
+    assert [r.get("data-readout") for r in readouts] == [r.key for r in fig.readouts]
+    assert root.find("figcaption") is not None
+
+
+def test_hook_places_figures_and_rejects_unknown_names():
+    lines = ["# Title", "", "::: figure rotation-2d", "", "## Exercises"]
+    out = hook._place_figures(lines, "chapters/test.md")
+    assert '<div data-wb-figure-slot="rotation-2d"></div>' in "\n".join(out)
+    assert hook._figure_slots["chapters/test.md"]["rotation-2d"].startswith("<figure")
+    with pytest.raises(PluginError, match="unknown figure"):
+        hook._place_figures(["::: figure no-such-figure"], "chapters/test.md")
+    with pytest.raises(PluginError, match="twice"):
+        hook._place_figures(["::: figure frames", "::: figure frames"], "chapters/test.md")
+    with pytest.raises(FigureError):
+        figure_html("no-such-figure")
