@@ -35,9 +35,13 @@ UNCHECKED = {"sitemap.xml"}
 LUNR_LANGUAGES = "assets/javascripts/lunr/"
 _serving = False
 
-UNREGISTER = """// mkdocs serve: no offline cache while authoring; remove any earlier worker.
+UNREGISTER = """// mkdocs serve: no offline cache while authoring; remove any earlier worker and its caches.
 self.addEventListener("install", () => self.skipWaiting());
-self.addEventListener("activate", (event) => event.waitUntil(self.registration.unregister()));
+self.addEventListener("activate", (event) => event.waitUntil((async () => {
+  const prefix = `robotics-workbook:${new URL(self.registration.scope).pathname}:`;
+  for (const name of await caches.keys()) if (name.startsWith(prefix)) await caches.delete(name);
+  await self.registration.unregister();
+})()));
 """
 
 

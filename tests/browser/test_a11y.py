@@ -9,8 +9,6 @@ never ships it."""
 
 from __future__ import annotations
 
-import re
-
 import pytest
 from conftest import ROOT
 from helpers import CHAPTERS, exercise, open_chapter, settle, wait_runtime
@@ -21,6 +19,12 @@ from workbook import bank
 AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
+
+
+def open_ready(page: Page, site_url: str, n: int) -> None:
+    """Open chapter n and wait (generously: test machines may be busy) for the runtime."""
+    open_chapter(page, site_url, n, wait_ready=False)
+    wait_runtime(page, timeout=120_000)
 
 
 def settle_page(page: Page) -> None:
@@ -44,6 +48,8 @@ def open_all_help(page: Page) -> None:
 def audit(page: Page) -> list[str]:
     if not page.evaluate("typeof window.axe === 'object'"):
         page.add_script_tag(path=str(AXE))
+        # Colours are measured as they are, not halfway through the theme's colour transitions.
+        page.add_style_tag(content="*, *::before, *::after { transition: none !important; }")
     result = page.evaluate("""async () => {
       const r = await axe.run(document, { resultTypes: ['violations'] });
       return r.violations.filter(v => v.impact === 'serious' || v.impact === 'critical')
@@ -75,7 +81,7 @@ def test_axe_finds_no_serious_violation_on_any_page(page, site_url, scheme):
 
 def test_exercise_feedback_states_pass_the_audit(page, site_url):
     """Right, wrong and invalid feedback and a Build test table, in both palettes."""
-    open_chapter(page, site_url, 0)
+    open_ready(page, site_url, 0)
     ex = exercise(page, "0.1")
     ex.locator('[data-role="answer"]').fill("2")
     ex.locator('[data-role="check"]').click()
@@ -86,8 +92,7 @@ def test_exercise_feedback_states_pass_the_audit(page, site_url):
     build.locator('[data-role="run"]').click()
     settle(build, timeout=120_000)
     assert build.locator('[data-role="test-result"]').count() > 0
-    # Colours are measured as they are, not halfway through the theme's colour transitions.
-    page.add_style_tag(content="*, *::before, *::after { transition: none !important; }")
+    audit(page)  # loads axe and stops colour transitions before the palette changes
     for scheme in ("light", "dark"):
         page.emulate_media(color_scheme=scheme)
         page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", "slate" if scheme == "dark" else "default")
@@ -113,7 +118,7 @@ def tab_to(page: Page, selector: str, limit: int = 60) -> None:
 
 
 def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
-    open_chapter(page, site_url, 1)
+    open_ready(page, site_url, 1)
     # Derive: type, Enter.
     exercise(page, "1.1").locator('[data-role="answer"]').focus()
     page.keyboard.type("4")
@@ -155,7 +160,7 @@ def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
     assert settle(design) == "correct"
 
     # Debug: arrows move between lines, Space picks, Enter checks.
-    open_chapter(page, site_url, 3)
+    open_ready(page, site_url, 3)
     bug = bank.get("3.5").bug_line
     tab_to(page, '[data-exercise-id="3.5"] [data-role="line"]')
     for _ in range(bug - 1):
@@ -167,7 +172,7 @@ def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
     assert settle(exercise(page, "3.5")) == "correct"
 
     # Build: type into the editor, Ctrl+Enter runs; Tab leaves the editor after Escape.
-    open_chapter(page, site_url, 0)
+    open_ready(page, site_url, 0)
     build = exercise(page, "0.5")
     build.locator(".cm-content").focus()
     page.keyboard.press("Control+a")
@@ -242,4 +247,4 @@ def test_every_page_fits_360_px(page, site_url):
         if found:
             problems[path or "home"] = found
     assert problems == {}, "\n".join(f"{p}:\n  " + "\n  ".join(v) for p, v in problems.items())
-    wait_runtime(page)
+    wait_runtime(page, timeout=120_000)

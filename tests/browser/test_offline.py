@@ -91,6 +91,11 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
       return bad;
     }""", urls)
     assert missing == []
+    # The search works too (its index and worker are cached).
+    fresh.locator("input.md-search__input").click()
+    fresh.locator("input.md-search__input").press_sequentially("quaternion", delay=30)
+    expect(fresh.locator(".md-search-result__item").first).to_be_visible(timeout=LONG)
+    fresh.keyboard.press("Escape")
     # Another page, and the address without its trailing slash.
     fresh.goto(site_url + "chapters/04-ekf-update")
     assert fresh.url.endswith("chapters/04-ekf-update/")

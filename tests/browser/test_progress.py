@@ -17,6 +17,12 @@ from workbook import bank
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 
 
+def open_ready(page: Page, site_url: str, n: int) -> None:
+    """Open chapter n and wait (generously: test machines may be busy) for the runtime."""
+    open_chapter(page, site_url, n, wait_ready=False)
+    wait_runtime(page, timeout=120_000)
+
+
 def nav_link(page: Page, slug: str):
     return page.locator(f".md-nav--primary a.md-nav__link[href$='{slug}/']").first
 
@@ -45,7 +51,7 @@ def solve_chapter_1(page: Page) -> None:
 
 
 def test_progress_survives_reload_and_instant_navigation(page, site_url):
-    open_chapter(page, site_url, 0)
+    open_ready(page, site_url, 0)
     summary = page.locator(".wb-chapter-progress")
     expect(summary).to_contain_text("0 of 6 exercises solved")
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
@@ -53,7 +59,7 @@ def test_progress_survives_reload_and_instant_navigation(page, site_url):
     expect(summary).to_contain_text("1 of 6 exercises solved")
 
     page.reload()
-    wait_runtime(page)
+    wait_runtime(page, timeout=120_000)
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
     assert exercise(page, "0.1").locator('[data-role="answer"]').input_value() == "3"
     assert exercise(page, "0.3").locator('[data-role="choice"][value="a"]').is_checked()
@@ -63,7 +69,7 @@ def test_progress_survives_reload_and_instant_navigation(page, site_url):
     page.evaluate("window.__sameDocument = true")
     click_nav(page, "01-transforms")
     expect(page.locator(".wb-chapter-progress")).to_contain_text("0 of 5 exercises solved")
-    wait_runtime(page)
+    wait_runtime(page, timeout=120_000)
     assert not nav_link(page, "01-transforms").locator(".wb-nav-done").count()
     solve_chapter_1(page)
     expect(page.locator(".wb-chapter-progress")).to_contain_text("Chapter finished: 5 of 5")
@@ -110,7 +116,7 @@ def import_file(page: Page, content: bytes | str, name: str = "progress.json") -
 
 
 def make_some_progress(page: Page, site_url: str) -> None:
-    open_chapter(page, site_url, 0)
+    open_ready(page, site_url, 0)
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     assert answer_derive(exercise(page, "0.6"), "7") == "incorrect"
     assert answer_trace(exercise(page, "0.3"), "a") == "incorrect"
@@ -119,7 +125,7 @@ def make_some_progress(page: Page, site_url: str) -> None:
     build = exercise(page, "0.5")
     set_editor(page, build, ROTATE_OK)
     page.wait_for_function("(workbook.progress.get('0.5').code || '').includes('math.cos')")
-    open_chapter(page, site_url, 3, wait_ready=True)
+    open_ready(page, site_url, 3)
     assert answer_debug(exercise(page, "3.5"), bank.get("3.5").bug_line) == "correct"
 
 
@@ -172,7 +178,7 @@ def test_export_reset_import_restores_exactly(page, site_url):
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
     page.wait_for_function(
         "() => document.querySelector('[data-exercise-id=\"0.5\"] [data-role=editor]').wbEditor?.getCode().includes('math.cos')")
-    wait_runtime(page)
+    wait_runtime(page, timeout=120_000)
 
 
 def huge_file() -> str:
@@ -181,7 +187,7 @@ def huge_file() -> str:
 
 
 def test_malformed_or_hostile_import_is_refused_and_changes_nothing(page, site_url):
-    open_chapter(page, site_url, 0)
+    open_ready(page, site_url, 0)
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     open_progress_page(page, site_url)
     before, raw_before = records(page), stored(page)
@@ -227,7 +233,7 @@ def test_corrupted_store_is_set_aside_with_a_message(page, site_url):
     page.goto(site_url)
     key = page.evaluate("workbook.progress.key")
     page.evaluate("k => localStorage.setItem(k, '{\"version\": 1, \"exercises\": ')", key)
-    open_chapter(page, site_url, 0)
+    open_ready(page, site_url, 0)
     notice = page.locator(".wb-notice")
     expect(notice).to_contain_text("could not be read")
     backups = page.evaluate("k => Object.keys(localStorage).filter(n => n.startsWith(k + ':backup:'))", key)
@@ -240,7 +246,7 @@ def test_corrupted_store_is_set_aside_with_a_message(page, site_url):
 
 
 def test_full_storage_shows_a_message_and_keeps_the_answer(page, site_url):
-    open_chapter(page, site_url, 0)
+    open_ready(page, site_url, 0)
     page.evaluate("""() => {
       Storage.prototype.setItem = function () { throw new DOMException('quota', 'QuotaExceededError'); };
     }""")

@@ -5,12 +5,14 @@ and a solved exercise still solved after a reload."""
 from __future__ import annotations
 
 import re
+from pathlib import Path
 
 from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, check, exercise, feedback,
                      open_chapter, run_build, set_editor, wait_runtime)
 
 from workbook import bank
 
+SITE = Path(__file__).resolve().parents[2] / "site"
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 
 
@@ -126,8 +128,6 @@ def test_solved_exercise_stays_solved_after_reload(page, site_url):
 
 
 def test_opened_from_a_file_explains_how_to_serve(browser):
-    from conftest import SITE
-
     page = browser.new_page()
     page.goto((SITE / "chapters" / "00-rotations-2d" / "index.html").as_uri())
     page.wait_for_function("document.documentElement.dataset.workbookRuntime === 'failed'")

@@ -14,7 +14,7 @@ export function showResult(el, result) {
   else delete el.dataset.feedback;
   const box = el.querySelector('[data-role="feedback"]');
   box.replaceChildren();
-  const lead = { correct: "Correct.", incorrect: "Not yet.", invalid: "", error: "Something went wrong." }[result.status] ?? "";
+  const lead = result.tag === "timeout" ? "" : { correct: "Correct.", incorrect: "Not yet.", invalid: "", error: "Something went wrong." }[result.status] ?? "";
   const p = document.createElement("p");
   const message = result.message || "";
   if (lead && !message.startsWith(lead.replace(".", ""))) {

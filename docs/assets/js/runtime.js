@@ -19,13 +19,14 @@ function setRuntimeState(state) {
   document.dispatchEvent(new CustomEvent("workbook:runtime", { detail: state }));
 }
 
-function timeoutResult(entry) {
+function timeoutResult(entry, how) {
   const seconds = (entry.limitMs / 1000).toLocaleString();
+  const after = how === "interrupt" ? "It was interrupted" : "The Python runtime was restarted";
   return {
     status: "error",
     tag: "timeout",
-    message: `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). The Python runtime was restarted; your code is kept.`,
-    data: {},
+    message: `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). ${after}; your code is kept.`,
+    data: { stoppedBy: how },
   };
 }
 
@@ -87,7 +88,7 @@ export class Runtime {
       if (entry.interrupted) {
         this.interrupts++;
         this.lastStop = "interrupt";
-        entry.resolve(timeoutResult(entry));
+        entry.resolve(timeoutResult(entry, "interrupt"));
       } else entry.resolve(data.result);
     }
   }
@@ -127,7 +128,7 @@ export class Runtime {
     this.pending.delete(entry.msg.id);
     this.worker.terminate();
     for (const other of this.pending.values()) clearTimeout(other.timer); // re-armed when re-sent
-    entry.resolve(timeoutResult(entry));
+    entry.resolve(timeoutResult(entry, "terminate"));
     this.restarts++;
     this.lastStop = "terminate";
     this.spawn(null); // other pending requests are re-sent once the new worker is ready
