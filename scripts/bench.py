@@ -141,28 +141,33 @@ INIT_SCRIPT = r"""
 })();
 """
 
-# Checks an exercise `n` times; each time from the click to the data-state change.
-GRADE_LOOP = r"""
-async ({ id, n, timeoutMs }) => {
-  const el = document.querySelector(`[data-exercise-id="${id}"]`);
-  if (!el) throw new Error(`no exercise ${id} on this page`);
-  const button = el.querySelector('[data-role="check"]');
-  const times = [], states = [];
-  for (let i = 0; i < n; i++) {
+# Clicks a button and resolves when the exercise leaves "pending" (timed in the page).
+CLICK_AND_WAIT = r"""
+  const clickAndWait = (el, button, timeoutMs) => {
     let mo, timer;
     const done = new Promise((resolve, reject) => {
       mo = new MutationObserver(() => {
         if (el.dataset.state !== "pending") resolve([performance.now(), el.dataset.state]);
       });
       mo.observe(el, { attributes: true, attributeFilter: ["data-state"] });
-      timer = setTimeout(() => reject(new Error(`exercise ${id}: no result within ${timeoutMs} ms`)), timeoutMs);
+      timer = setTimeout(() => reject(new Error(`exercise ${el.dataset.exerciseId}: no result within ${timeoutMs} ms`)), timeoutMs);
     });
     const t0 = performance.now();
     button.click();
-    try {
-      const [t1, state] = await done;
-      times.push(t1 - t0); states.push(state);
-    } finally { mo.disconnect(); clearTimeout(timer); }
+    return done.then(([t1, state]) => ({ ms: t1 - t0, state })).finally(() => { mo.disconnect(); clearTimeout(timer); });
+  };
+"""
+
+# Checks an exercise `n` times; each time from the click to the data-state change.
+GRADE_LOOP = r"""
+async ({ id, n, timeoutMs }) => {""" + CLICK_AND_WAIT + r"""
+  const el = document.querySelector(`[data-exercise-id="${id}"]`);
+  if (!el) throw new Error(`no exercise ${id} on this page`);
+  const button = el.querySelector('[data-role="check"]');
+  const times = [], states = [];
+  for (let i = 0; i < n; i++) {
+    const { ms, state } = await clickAndWait(el, button, timeoutMs);
+    times.push(ms); states.push(state);
     await new Promise((r) => setTimeout(r, 5));
   }
   return { times, states };
@@ -171,26 +176,13 @@ async ({ id, n, timeoutMs }) => {
 
 # Runs the Build exercise's tests once: click Run -> data-state change.
 BUILD_RUN = r"""
-async ({ id, code, timeoutMs }) => {
+async ({ id, code, timeoutMs }) => {""" + CLICK_AND_WAIT + r"""
   const el = document.querySelector(`[data-exercise-id="${id}"]`);
   const host = el.querySelector('[data-role="editor"]');
   if (code !== null) host.wbEditor.setCode(code);
-  const button = el.querySelector('[data-role="run"]');
-  let mo, timer;
-  const done = new Promise((resolve, reject) => {
-    mo = new MutationObserver(() => {
-      if (el.dataset.state !== "pending") resolve([performance.now(), el.dataset.state]);
-    });
-    mo.observe(el, { attributes: true, attributeFilter: ["data-state"] });
-    timer = setTimeout(() => reject(new Error(`exercise ${id}: no result within ${timeoutMs} ms`)), timeoutMs);
-  });
-  const t0 = performance.now();
-  button.click();
-  try {
-    const [t1, state] = await done;
-    const passed = [...el.querySelectorAll('[data-role="test-result"]')].map((r) => r.dataset.passed === "true");
-    return { ms: t1 - t0, state, passed };
-  } finally { mo.disconnect(); clearTimeout(timer); }
+  const { ms, state } = await clickAndWait(el, el.querySelector('[data-role="run"]'), timeoutMs);
+  const passed = [...el.querySelectorAll('[data-role="test-result"]')].map((r) => r.dataset.passed === "true");
+  return { ms, state, passed };
 }
 """
 
@@ -824,6 +816,7 @@ TABLE = [
     ("Build 0.5 run, numpy, first (loads numpy)", "build_numpy_first_ms", "ms"),
     ("Build 0.5 run, numpy, repeat", "build_numpy_ms", "ms"),
     ("Recovery: limit fired -> next grade", "recovery_ms", "ms"),
+    ("Answer parser, worst input found (native)", "parser_worst_ms", "ms"),
     ("Bytes, first visit", "bytes_first_visit", "B"),
     ("Bytes, revisit", "bytes_revisit", "B"),
     ("Bytes, revisit, besides the sw.js update check", "bytes_revisit_without_sw_check", "B"),
@@ -915,6 +908,42 @@ def git_info() -> dict:
     return {"commit": git("rev-parse", "HEAD"), "dirty": bool(git("status", "--porcelain", "--untracked-files=no"))}
 
 
+def parser_worst_case(repeats: int = 20) -> dict:
+    """The Derive answer parser on the most expensive inputs we know, timed natively.
+
+    Its limits (length, nesting, node count, exponent) are checked before any
+    evaluation, so no input should take long; this records the worst seen.
+    """
+    sys.path.insert(0, str(ROOT / "pyodide_pkg"))
+    from workbook.answers import MAX_LENGTH, InvalidAnswer, parse_answer
+
+    half = MAX_LENGTH // 2
+    cases = {
+        "longest sum": "+".join(["1"] * half)[:MAX_LENGTH],
+        "deepest nesting": "(" * 12 + "1" + ")" * 12,
+        "nested functions": "sqrt(" * 12 + "2" + ")" * 12,
+        "power tower": "9**9**9",
+        "largest allowed power": "2**1000",
+        "many unicode roots": "√" * MAX_LENGTH,
+        "10 000 digits": "9" * 10_000,
+        "10 000 parentheses": "(" * 5_000 + ")" * 5_000,
+        "10 000 mixed": ("sqrt(2)/2+" * 1_000)[:10_000],
+    }
+    worst = {}
+    for name, text in cases.items():
+        times = []
+        for _ in range(repeats):
+            t = time.perf_counter()
+            try:
+                parse_answer(text)
+            except InvalidAnswer:
+                pass
+            times.append((time.perf_counter() - t) * 1000)
+        worst[name] = round(max(times), 3)
+    slowest = max(worst, key=worst.get)
+    return {"max_ms": worst[slowest], "slowest_input": slowest, "per_input_max_ms": worst}
+
+
 def main() -> int:
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--runs", type=int, default=int(os.environ.get("BENCH_RUNS", 5)),
@@ -973,6 +1002,9 @@ def main() -> int:
     machine["loadavg_end"] = list(os.getloadavg())
 
     metrics = collect(bench.runs)
+    parser = parser_worst_case()
+    metrics["parser_worst_ms"] = summary([parser["max_ms"]])
+    metrics["parser_worst_case"] = parser
     targets = evaluate_targets(metrics, bench.runs)
     errors = {f"run {r['index']} {k}": v for r in bench.runs for k, v in r["errors"].items()}
     report = {

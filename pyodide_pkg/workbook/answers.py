@@ -20,6 +20,7 @@ from __future__ import annotations
 import ast
 import math
 import re
+import warnings
 from dataclasses import dataclass
 
 MAX_LENGTH = 200
@@ -167,7 +168,9 @@ def parse_answer(text: object) -> Answer:
     if len(s) > 2 * MAX_LENGTH:
         raise InvalidAnswer("That answer is too long; one number is expected.")
     try:
-        tree = ast.parse(s, mode="eval")
+        with warnings.catch_warnings():  # e.g. "invalid escape sequence" in a quoted string
+            warnings.simplefilter("ignore")
+            tree = ast.parse(s, mode="eval")
     except (SyntaxError, ValueError, MemoryError, RecursionError):
         if re.fullmatch(r"[-+\d.\s]+", s) and re.search(r"\d\s+[-+]?\d", s):
             raise InvalidAnswer("One number is expected; there is a space between two numbers.") from None

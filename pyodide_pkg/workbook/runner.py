@@ -107,7 +107,7 @@ def run_build(ex: Build, code: str) -> Result:
         try:
             exec(compiled, namespace)
         except MemoryError:
-            return finish("error", "Your code ran out of memory.", "memory")
+            return finish("error", "Your code ran out of memory. The Python runtime was restarted; your code is kept.", "memory")
         except Exception as err:
             info = _error_info(err, source_lines)
             return finish("incorrect", f"Your code raised {info['type']} while loading.", "exception", info)
@@ -158,7 +158,7 @@ def run_build(ex: Build, code: str) -> Result:
                     summary["line"] = failed["line"]
             rows.append(summary)
         except MemoryError:
-            return finish("error", "Your code ran out of memory.", "memory")
+            return finish("error", "Your code ran out of memory. The Python runtime was restarted; your code is kept.", "memory")
 
     passed = sum(1 for r in rows if r["passed"])
     error = next(({"line": r["line"], "traceback": r["message"]} for r in rows if r.get("line")), None)

@@ -79,3 +79,15 @@ def test_build_time_limit_message(page, site_url):
     assert run_build(ex, timeout=60_000) == "error"
     assert ex.get_attribute("data-feedback") == "timeout"
     assert "stopped after 5 s" in feedback(ex).lower()
+
+
+def test_memory_error_is_reported_and_the_runtime_replaced(page, site_url):
+    open_chapter(page, site_url, 0)
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, "def rotate_2d(x, y, theta):\n    hoard = [0] * (2 ** 30)\n    return x, y\n")
+    assert run_build(ex, timeout=60_000) == "error"
+    assert ex.get_attribute("data-feedback") == "memory"
+    assert "out of memory" in feedback(ex)
+    # A fresh runtime answers the next request.
+    assert answer_derive(exercise(page, "0.1"), "3") == "correct"
+    assert "2 ** 30" in ex.evaluate("el => el.querySelector('[data-role=editor]').wbEditor.getCode()")

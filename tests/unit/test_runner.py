@@ -73,3 +73,8 @@ def test_hidden_cases_report_the_first_failing_input():
     r = run_build(EX, code)
     hidden = r.data["tests"][-1]
     assert hidden["passed"] is False and hidden["input"].startswith("rotate_2d(")
+
+
+def test_memory_error_is_reported_not_raised():
+    r = run_build(EX, "def rotate_2d(x, y, theta):\n    raise MemoryError\n")
+    assert (r.status, r.tag) == ("error", "memory")

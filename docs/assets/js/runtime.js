@@ -30,6 +30,15 @@ function timeoutResult(entry, how) {
   };
 }
 
+function crashResult() {
+  return {
+    status: "error",
+    tag: "crash",
+    message: "The Python runtime crashed while running this; it was restarted. Your code is kept.",
+    data: {},
+  };
+}
+
 export class Runtime {
   constructor(workerURL, early) {
     this.workerURL = workerURL;
@@ -52,7 +61,13 @@ export class Runtime {
     this.worker.onmessage = (event) => this.receive(event.data);
     this.worker.onerror = (event) => {
       event.preventDefault?.();
-      this.fail("The Python runtime could not start" + (event.message ? `: ${event.message}` : "."));
+      if (!this.ready) {
+        this.fail("The Python runtime could not start" + (event.message ? `: ${event.message}` : "."));
+        return;
+      }
+      // A crash after start-up: answer the request that was running, start afresh.
+      const [running] = this.pending.values();
+      if (running) this.restart(running, crashResult());
     };
     // Shared with the worker: [0] Pyodide's signal slot, [1] the id of the request now running.
     this.interrupt = null;
@@ -89,6 +104,9 @@ export class Runtime {
         this.interrupts++;
         this.lastStop = "interrupt";
         entry.resolve(timeoutResult(entry, "interrupt"));
+      } else if (data.result.tag === "memory" || data.result.tag === "runtime") {
+        this.pending.set(data.id, entry);
+        this.restart(entry, data.result); // Python may be left broken: replace it
       } else entry.resolve(data.result);
     }
   }
@@ -125,10 +143,16 @@ export class Runtime {
   }
 
   terminate(entry) {
+    this.restart(entry, timeoutResult(entry, "terminate"));
+  }
+
+  /** Answer `entry` with `result`, replace the worker; other requests wait for the new one. */
+  restart(entry, result) {
     this.pending.delete(entry.msg.id);
+    clearTimeout(entry.timer);
     this.worker.terminate();
     for (const other of this.pending.values()) clearTimeout(other.timer); // re-armed when re-sent
-    entry.resolve(timeoutResult(entry, "terminate"));
+    entry.resolve(result);
     this.restarts++;
     this.lastStop = "terminate";
     this.spawn(null); // other pending requests are re-sent once the new worker is ready

@@ -61,7 +61,7 @@ self.onmessage = (event) => {
     } catch (err) {
       const text = String((err && err.message) || err);
       result = /MemoryError|out of memory/i.test(text)
-        ? { status: "error", tag: "memory", message: "Your code ran out of memory; the runtime was restarted.", data: {} }
+        ? { status: "error", tag: "memory", message: "Your code ran out of memory. The Python runtime was restarted; your code is kept.", data: {} }
         : { status: "error", tag: "runtime", message: "The Python runtime failed: " + text.split("\n").slice(-2).join(" "), data: {} };
     }
     self.postMessage({ id: msg.id, type: "result", result });
