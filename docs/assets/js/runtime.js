@@ -11,7 +11,7 @@
 const root = document.documentElement;
 const DEFAULT_LIMIT_MS = 10_000;
 const LOAD_LIMIT_MS = 120_000; // fetching a package (NumPy) before a run starts
-const INTERRUPT_GRACE_MS = 1_000; // after an interrupt, how long to wait before terminating
+const INTERRUPT_GRACE_MS = 2_000; // after an interrupt, how long to wait before terminating
 const SIGINT = 2;
 
 function setRuntimeState(state) {
@@ -135,6 +135,7 @@ export class Runtime {
     const buffer = this.interrupt;
     if (buffer && !entry.interrupted && Atomics.load(buffer, 1) === entry.msg.id) {
       entry.interrupted = true; // answered as a timeout when the worker replies
+      this.interruptsSent = (this.interruptsSent || 0) + 1;
       Atomics.store(buffer, 0, SIGINT);
       entry.timer = setTimeout(() => this.terminate(entry), INTERRUPT_GRACE_MS);
       return;
