@@ -13,16 +13,21 @@ async function grade(ctx, answer, limitMs) {
   setPending(el);
   const result = await runtime.request({ op: "grade", exercise: id, answer }, { limitMs });
   showResult(el, result);
-  if (result.status === "correct" || result.status === "incorrect") {
-    const before = progress.get(id);
-    const patch = { attempts: (before.attempts || 0) + 1, last: answer };
-    if (result.status === "correct" && !before.solved) {
-      patch.solved = true;
-      patch.solvedAfterReveal = Boolean(before.revealed);
-    }
-    progress.update(id, patch);
-  }
+  recordAttempt(ctx, result, { last: answer });
   return result;
+}
+
+// A graded attempt (not an invalid input or a runtime error) counts; the first
+// correct one marks the exercise solved, noting whether the solution was revealed first.
+function recordAttempt({ id, progress }, result, extra = {}) {
+  if (result.status !== "correct" && result.status !== "incorrect") return;
+  const before = progress.get(id);
+  const patch = { ...extra, attempts: (before.attempts || 0) + 1 };
+  if (result.status === "correct" && !before.solved) {
+    patch.solved = true;
+    patch.solvedAfterReveal = Boolean(before.revealed);
+  }
+  progress.update(id, patch);
 }
 
 // ---- Derive ---------------------------------------------------------------
@@ -201,15 +206,7 @@ async function initBuild(ctx) {
     renderTests(el, result);
     const line = result.data?.error?.line;
     if (line) editor.markLine(line);
-    if (result.status === "correct" || result.status === "incorrect") {
-      const before = progress.get(id);
-      const patch = { attempts: (before.attempts || 0) + 1 };
-      if (result.status === "correct" && !before.solved) {
-        patch.solved = true;
-        patch.solvedAfterReveal = Boolean(before.revealed);
-      }
-      progress.update(id, patch);
-    }
+    recordAttempt(ctx, result);
   }
   runButton.addEventListener("click", run);
   el.querySelector('[data-role="reset"]').addEventListener("click", () => {
