@@ -179,7 +179,7 @@ BUILD_RUN = r"""
 async ({ id, code, timeoutMs }) => {""" + CLICK_AND_WAIT + r"""
   const el = document.querySelector(`[data-exercise-id="${id}"]`);
   const host = el.querySelector('[data-role="editor"]');
-  if (code !== null) host.wbEditor.setCode(code);
+  if (code !== null) (await host.wbOpenEditor()).setCode(code);
   const { ms, state } = await clickAndWait(el, el.querySelector('[data-role="run"]'), timeoutMs);
   const passed = [...el.querySelectorAll('[data-role="test-result"]')].map((r) => r.dataset.passed === "true");
   return { ms, state, passed };
@@ -193,7 +193,7 @@ async ({ buildId, deriveId, code, answer, timeoutMs }) => {
   const build = document.querySelector(`[data-exercise-id="${buildId}"]`);
   const derive = document.querySelector(`[data-exercise-id="${deriveId}"]`);
   derive.querySelector('[data-role="answer"]').value = answer;
-  build.querySelector('[data-role="editor"]').wbEditor.setCode(code);
+  (await build.querySelector('[data-role="editor"]').wbOpenEditor()).setCode(code);
   const out = {};
   let timer;
   const observers = [];
@@ -237,6 +237,7 @@ async () => {
            domInteractive: nav.domInteractive, domContentLoaded: nav.domContentLoadedEventEnd,
            load: nav.loadEventEnd, transferSize: nav.transferSize },
     workerStartedAt: rt ? rt.startedAt : null, workerReadyAt: rt ? rt.readyAt : null,
+    startedFrom: rt ? rt.startedFrom || null : null, workerStages: rt ? rt.startStages || null : null,
     baseline: window.__baseline || null, sw, now: performance.now(),
     sinceTabStart: (B.timeOrigin || 0) - (B.tabOrigin || 0), docs: B.docs || 1,
     tabClicks: JSON.parse(sessionStorage.getItem("__benchClicks") || "[]"),
@@ -395,6 +396,16 @@ def percentile(values: list[float], q: float) -> float:
 OUR_CODE = ("/workbook/assets/dist/", "/workbook/assets/js/", "/workbook/assets/vendor/pyodide/")
 
 
+def snapshot_info(site: Path) -> dict:
+    """Sizes of the memory snapshot the site ships (scripts/build_snapshot.mjs)."""
+    path = site / "assets/vendor/pyodide/workbook.snapshot.gz"
+    info = {"file": path.name, "gzip_bytes": path.stat().st_size if path.exists() else None}
+    meta = ROOT / "build/snapshot.json"
+    if meta.exists():
+        info.update({k: v for k, v in json.loads(meta.read_text()).items() if k in ("bytes", "sha256", "wheel")})
+    return info
+
+
 def attribute_long_tasks(snap: dict, until_ms: float, page_url: str) -> dict:
     """Long tasks (> 50 ms) before `until_ms`, each with the scripts of the long
     animation frame it falls in (the Long Animation Frames API names the source URL)."""
@@ -525,6 +536,7 @@ class Bench:
             ready = next((t for s, t in snap["runtime"] if s == "ready"), None)
         rec = {"ready_ms": ready, "net": self.server.since(mark), "nav": snap["nav"], "sw": snap["sw"],
                "worker_started_ms": snap["workerStartedAt"],
+               "started_from": snap.get("startedFrom"), "worker_stages": snap.get("workerStages"),
                "long_tasks": attribute_long_tasks(snap, (ready or 0) + 300, url)}
         return page, rec
 
@@ -591,9 +603,7 @@ class Bench:
 
     def phase_build(self, page, run: dict) -> None:
         ex = page.locator(f'[data-exercise-id="{BUILD_ID}"]')
-        ex.locator(".cm-editor").wait_for(timeout=30_000)
-        page.wait_for_function(f"() => document.querySelector('[data-exercise-id=\"{BUILD_ID}\"] "
-                               "[data-role=editor]').wbEditor", timeout=30_000)
+        ex.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor()")
         out = {}
         for label, code, first_timeout in (("plain", BUILD_PLAIN, GRADE_TIMEOUT_MS), ("numpy", BUILD_NUMPY, NUMPY_TIMEOUT_MS)):
             mark = self.server.mark()
@@ -1018,6 +1028,7 @@ def main() -> int:
                    "server": "Python ThreadingHTTPServer, HTTP/1.1 keep-alive, Cache-Control: max-age=600, "
                              "Last-Modified/If-Modified-Since, no compression",
                    "baseline_files": baseline_files,
+                   "snapshot": snapshot_info(args.site),
                    "pages": {"startup": CH0, "grading": {k: f"{p} {i}" for k, (p, i) in GRADED.items()}}},
         "metrics": metrics,
         "targets": targets,
@@ -1043,6 +1054,10 @@ def main() -> int:
     if busy > 0.5 * (machine["nproc"] or 1):
         print(f"\nNOTE: the machine was busy (1-min load average up to {busy:.1f} on {machine['nproc']} CPUs): "
               "times are inflated; rerun on a quiet machine to compare.")
+    booted = sorted({r[temp].get("started_from") for r in bench.runs for temp in ("cold", "warm")
+                     if isinstance(r.get(temp), dict)} - {"snapshot"}, key=str)
+    if booted:
+        print(f"\nWARNING: some starts did not use the memory snapshot ({booted}): those times measure the fallback boot.")
     if report["external_requests"]:
         print(f"\nWARNING: {len(report['external_requests'])} request(s) left 127.0.0.1: {report['external_requests'][:5]}")
     if bench.page_errors:

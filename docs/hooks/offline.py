@@ -30,7 +30,8 @@ log = logging.getLogger("mkdocs.hooks.offline")
 
 TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
-SKIP_SUFFIXES = (".map", ".gz")
+SKIP_SUFFIXES = (".map",)
+SKIP_FILES = {"sitemap.xml.gz"}
 UNCHECKED = {"sitemap.xml"}
 LUNR_LANGUAGES = "assets/javascripts/lunr/"
 _serving = False
@@ -62,7 +63,7 @@ def precache_list(site: Path, english_only: bool = True) -> list[tuple[str, str,
     out = []
     for path in sorted(site.rglob("*")):
         rel = path.relative_to(site).as_posix()
-        if not path.is_file() or rel == OUTPUT or rel.endswith(SKIP_SUFFIXES):
+        if not path.is_file() or rel == OUTPUT or rel.endswith(SKIP_SUFFIXES) or rel in SKIP_FILES:
             continue
         if english_only and rel.startswith(LUNR_LANGUAGES):
             continue

@@ -67,12 +67,20 @@ def arrange_design(ex: Locator, order: list[str]) -> None:
             ex.locator(f'[data-role="step"][data-step="{key}"] [data-role="move-up"]').click()
 
 
-def set_editor(page: Page, ex: Locator, code: str) -> None:
+def open_editor(ex: Locator) -> None:
+    """Build the exercise's CodeMirror editor now (the page builds it lazily)."""
+    ex.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor()")
     ex.locator(".cm-editor").wait_for()
-    ex.evaluate(
-        "(el, code) => el.querySelector('[data-role=editor]').wbEditor.setCode(code)",
-        code,
-    )
+
+
+def set_editor(page: Page, ex: Locator, code: str) -> None:
+    open_editor(ex)
+    ex.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbEditor.setCode(code)", code)
+
+
+def editor_code(ex: Locator) -> str:
+    open_editor(ex)
+    return ex.evaluate("el => el.querySelector('[data-role=editor]').wbEditor.getCode()")
 
 
 def run_build(ex: Locator, timeout: float = 60_000) -> str:

@@ -28,7 +28,9 @@ def open_ready(page: Page, site_url: str, n: int) -> None:
 
 
 def settle_page(page: Page) -> None:
-    """Wait until the page's script has drawn everything it draws."""
+    """Wait until the page's script has drawn everything it draws (editors built now)."""
+    page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)")
+    page.evaluate("() => Promise.all([...document.querySelectorAll('[data-role=editor]')].map(h => h.wbOpenEditor()))")
     page.wait_for_function("""() => {
       const exercises = [...document.querySelectorAll('[data-exercise-id]')];
       const builds = exercises.filter(e => e.dataset.kind === 'build');
@@ -174,7 +176,11 @@ def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
     # Build: type into the editor, Ctrl+Enter runs; Tab leaves the editor after Escape.
     open_ready(page, site_url, 0)
     build = exercise(page, "0.5")
-    build.locator(".cm-content").focus()
+    # Until the editor is built the code is plain text in the tab order; Enter opens the editor.
+    build.locator(".wb-starter").focus()
+    assert has_visible_focus(page)
+    page.keyboard.press("Enter")
+    build.locator(".cm-content:focus").wait_for()
     page.keyboard.press("Control+a")
     page.keyboard.press("Delete")
     build.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbEditor.view.dispatch({changes: {from: 0, insert: code}})",

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 
-from helpers import answer_derive, exercise, feedback, open_chapter, run_build, set_editor
+from helpers import answer_derive, editor_code, exercise, feedback, open_chapter, run_build, set_editor
 
 
 def test_derive_messages(page, site_url):
@@ -90,4 +90,4 @@ def test_memory_error_is_reported_and_the_runtime_replaced(page, site_url):
     assert "out of memory" in feedback(ex)
     # A fresh runtime answers the next request.
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
-    assert "2 ** 30" in ex.evaluate("el => el.querySelector('[data-role=editor]').wbEditor.getCode()")
+    assert "2 ** 30" in editor_code(ex)

@@ -8,7 +8,8 @@ from __future__ import annotations
 import json
 import re
 
-from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, exercise, open_chapter, set_editor,
+from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, editor_code, exercise, open_chapter,
+                     set_editor,
                      wait_runtime)
 from playwright.sync_api import Page, expect
 
@@ -176,8 +177,9 @@ def test_export_reset_import_restores_exactly(page, site_url):
     # The chapter page shows the restored state.
     open_chapter(page, site_url, 0, wait_ready=False)
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
-    page.wait_for_function(
-        "() => document.querySelector('[data-exercise-id=\"0.5\"] [data-role=editor]').wbEditor?.getCode().includes('math.cos')")
+    # The saved code is on screen before the editor is built, and in the editor after.
+    expect(exercise(page, "0.5").locator('[data-role="editor"]')).to_contain_text("math.cos")
+    assert "math.cos" in editor_code(exercise(page, "0.5"))
     wait_runtime(page, timeout=120_000)
 
 

@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, check, exercise, feedback,
+from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, check, editor_code, exercise, feedback,
                      open_chapter, run_build, set_editor, wait_runtime)
 
 from workbook import bank
@@ -75,6 +75,82 @@ def test_design_starts_unsolved_and_can_be_ordered(page, site_url):
     assert check(ex) == "correct"
 
 
+def test_snapshot_was_made_from_the_wheel_the_site_ships():
+    """The snapshot holds the grading package's code: a stale one would grade with old keys."""
+    import gzip
+    import hashlib
+    import json
+    import struct
+
+    vendor = SITE / "assets/vendor/pyodide"
+    info = json.loads((SITE.parent / "build/snapshot.json").read_text())
+    lock = json.loads((vendor / "pyodide-lock.json").read_text())
+    wheel = vendor / lock["packages"]["robotics-workbook"]["file_name"]
+    assert info["wheel"] == wheel.name
+    assert info["wheel_sha256"] == hashlib.sha256(wheel.read_bytes()).hexdigest()
+    packed = gzip.decompress((vendor / "workbook.snapshot.gz").read_bytes())
+    assert packed[:8] == b"WBSPARSE" and len(packed) == info["sparse_bytes"] < info["bytes"]
+    total, runs = struct.unpack_from("<II", packed, 8)
+    memory, data = bytearray(total), 16 + 8 * runs
+    for i in range(runs):
+        offset, length = struct.unpack_from("<II", packed, 16 + 8 * i)
+        memory[offset:offset + length] = packed[data:data + length]
+        data += length
+    assert data == len(packed)
+    assert hashlib.sha256(memory).hexdigest() == info["sha256"] and len(memory) == info["bytes"]
+
+
+def test_runtime_starts_from_the_memory_snapshot(page, site_url):
+    open_chapter(page, site_url, 0)
+    assert page.evaluate("workbook.runtime.startedFrom") == "snapshot"
+    assert answer_derive(exercise(page, "0.1"), "3") == "correct"
+    # The snapshot's random generator is reseeded at every start: no two starts draw alike.
+    draws = []
+    for _ in range(2):
+        ex = exercise(page, "0.5")
+        set_editor(page, ex, "import random\nprint('draw', random.random())\n" + ROTATE_OK)
+        assert run_build(ex) == "correct"
+        draws.append(re.search(r"draw (\S+)", ex.locator('[data-role="stdout"]').inner_text()).group(1))
+        page.reload()
+        wait_runtime(page)
+    assert draws[0] != draws[1]
+
+
+def test_runtime_boots_without_a_usable_snapshot(page, site_url):
+    """A missing or damaged snapshot costs time, not the exercises."""
+    page.context.route("**/workbook.snapshot.gz", lambda route: route.fulfill(status=200, body=b"not a snapshot"))
+    messages = []
+    page.on("console", lambda msg: messages.append(msg.text))
+    open_chapter(page, site_url, 0, wait_ready=False)
+    wait_runtime(page, timeout=120_000)
+    assert page.evaluate("workbook.runtime.startedFrom") == "boot"
+    assert any("booted without the snapshot" in m for m in messages)
+    assert answer_derive(exercise(page, "0.1"), "3") == "correct"
+    set_editor(page, exercise(page, "0.5"), ROTATE_OK)
+    assert run_build(exercise(page, "0.5")) == "correct"
+
+
+def test_editor_is_built_when_the_exercise_comes_into_view(page, site_url):
+    page.set_viewport_size({"width": 1000, "height": 700})
+    open_chapter(page, site_url, 0)
+    ex = exercise(page, "0.5")
+    page.wait_for_timeout(1500)  # idle time after start-up: still nothing to build off screen
+    assert ex.locator(".cm-editor").count() == 0
+    assert "def rotate_2d" in ex.locator(".wb-starter").inner_text()
+    ex.locator('[data-role="editor"]').scroll_into_view_if_needed()
+    ex.locator(".cm-editor").wait_for()
+    assert ex.locator(".wb-starter").count() == 0
+    assert "def rotate_2d" in editor_code(ex)
+
+
+def test_run_works_before_the_editor_is_built(page, site_url):
+    open_chapter(page, site_url, 0)
+    ex = exercise(page, "0.5")
+    ex.evaluate("el => el.querySelector('[data-role=run]').click()")  # no scrolling: the editor is not built yet
+    assert run_build(ex) in ("incorrect", "error")  # the starter code, graded
+    assert ex.locator(".cm-editor").count() == 1
+
+
 def test_build_wrong_then_right(page, site_url):
     open_chapter(page, site_url, 0)
     ex = exercise(page, "0.5")
@@ -101,7 +177,7 @@ def test_infinite_loop_is_stopped_and_the_page_keeps_grading(page, site_url):
     assert re.search(r"stopped after 5 s", feedback(ex), re.I)
     page.wait_for_function("el => el.dataset.state === 'correct'", arg=derive.element_handle(), timeout=60_000)
     # Same page, same editor: the code is kept; a correct solution now passes.
-    assert "while True" in ex.evaluate("el => el.querySelector('[data-role=editor]').wbEditor.getCode()")
+    assert "while True" in editor_code(ex)
     set_editor(page, ex, ROTATE_OK)
     assert run_build(ex) == "correct"
 

@@ -40,14 +40,22 @@ function scan() {
   }
 }
 
+// Checking a box reads its layout. Done from an idle callback after a short
+// pause, the browser has already laid the page out for painting, so the reads
+// are cheap; done at once (on every typeset formula) they would force layout
+// again and again while the page is still being built.
 let queued = false;
 function later() {
   if (queued) return;
   queued = true;
-  requestAnimationFrame(() => {
-    queued = false;
-    scan();
-  });
+  setTimeout(() => {
+    const run = () => {
+      queued = false;
+      scan();
+    };
+    if (self.requestIdleCallback) requestIdleCallback(run, { timeout: 1000 });
+    else run();
+  }, 150);
 }
 
 export function initScrollRegions() {

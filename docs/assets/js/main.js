@@ -49,11 +49,22 @@ const shared = {
   renderMath,
 };
 
-function renderMath(scope) {
+// KaTeX typesets the page in slices of about 25 ms, yielding in between, so a
+// chapter full of formulas never blocks the main thread (no long task).
+const SLICE_MS = 25;
+const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
+
+async function renderMath(scope) {
   const katex = window.katex;
   if (!katex) return;
+  let sliceStart = performance.now();
   for (const el of scope.querySelectorAll(".arithmatex")) {
     if (el.dataset.rendered) continue;
+    if (performance.now() - sliceStart > SLICE_MS) {
+      await nextTask();
+      sliceStart = performance.now();
+      if (el.dataset.rendered || !el.isConnected) continue;
+    }
     const tex = el.textContent.trim();
     const display = el.tagName === "DIV";
     const body = display ? tex.replace(/^\\\[|\\\]$/g, "") : tex.replace(/^\\\(|\\\)$/g, "");

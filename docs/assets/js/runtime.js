@@ -83,6 +83,9 @@ export class Runtime {
       this.ready = true;
       this.readyAt = performance.now();
       this.lastStartMs = this.readyAt - this.startedAt;
+      this.startedFrom = data.from; // "snapshot", or "boot" when the snapshot could not be used
+      this.startStages = data.stages;
+      if (data.why) console.warn("Python runtime: booted without the snapshot:", data.why);
       setRuntimeState("ready");
       for (const entry of this.pending.values()) this.send(entry);
       return;

@@ -6,14 +6,17 @@
 // no check) filled in.
 //
 // - install: fetch every file, each checked against its hash, into one cache
-//   named after VERSION. Only a complete cache lets the worker install, so a new
-//   version is never served half-downloaded.
+//   named after VERSION (the memory snapshot is stored inflated, see INFLATE).
+//   Only a complete cache lets the worker install, so a new version is never
+//   served half-downloaded.
 // - the new version waits until the page asks it to take over (the learner
 //   presses "Reload" in the update banner); activation deletes older caches.
 // - fetch: files of the version are served from its cache (one version for
-//   HTML, scripts and Python alike), anything else from the network; every
-//   response gets COOP/COEP headers, so pages are cross-origin isolated and a
-//   long run can be interrupted instead of the worker being killed.
+//   HTML, scripts and Python alike), anything else from the network. Pages and
+//   workers get COOP/COEP headers, so they are cross-origin isolated and a long
+//   run can be interrupted instead of the worker being killed; other cached
+//   files are returned as stored (which keeps the browser's compiled-code cache
+//   for them usable).
 
 const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
@@ -23,6 +26,17 @@ const PREFIX = `robotics-workbook:${new URL(SCOPE).pathname}:`;
 const CACHE = PREFIX + VERSION;
 const KNOWN = new Set(FILES.map(([path]) => new URL(path, SCOPE).href));
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
+
+// The Python memory snapshot travels gzip-compressed (4.6 MB instead of 21 MB)
+// and is stored inflated, so later starts read it as is instead of inflating it
+// each time; the worker tells the two apart by gzip's magic bytes. The body is
+// still checked against the file's hash as it streams through.
+const INFLATE = /\.snapshot\.gz$/;
+function inflated(response) {
+  if (typeof DecompressionStream !== "function") return response;
+  const body = response.body.pipeThrough(new DecompressionStream("gzip"));
+  return new Response(body, { headers: { "Content-Type": "application/octet-stream" } });
+}
 
 async function precache() {
   const cache = await caches.open(CACHE);
@@ -36,7 +50,7 @@ async function precache() {
       const url = new URL(path, SCOPE).href;
       const response = await fetch(new Request(url, { cache: "no-cache", integrity, credentials: "same-origin" }));
       if (!response.ok) throw new Error(`${path}: HTTP ${response.status}`);
-      await cache.put(url, response);
+      await cache.put(url, INFLATE.test(path) ? inflated(response) : response);
     }
   }
   await Promise.all(Array.from({ length: 6 }, lane));
@@ -82,7 +96,9 @@ async function respond(request) {
   const key = cacheKey(request.url);
   if (key) {
     const cached = await caches.open(CACHE).then((cache) => cache.match(key));
-    if (cached) return isolate(cached);
+    // Only documents and workers need the isolation headers; everything else is
+    // returned as stored, which lets the browser reuse its compiled WebAssembly.
+    if (cached) return request.destination === "document" || request.destination === "worker" || request.mode === "navigate" ? isolate(cached) : cached;
   }
   if (request.mode === "navigate" && !key) {
     // "chapters/x" for "chapters/x/": send the browser to the real address.

@@ -172,31 +172,82 @@ function initDesign(ctx) {
 }
 
 // ---- Build ----------------------------------------------------------------
-async function initBuild(ctx) {
+// The page shows the code (starter or saved) as plain text at first. CodeMirror
+// is loaded and built only when the exercise comes near the viewport and the
+// browser is idle after the Python runtime has started, or at once when the
+// learner clicks, focuses or runs it: so opening a chapter never waits for, or
+// stutters on, an editor nobody is looking at yet.
+const runtimeSettled = new Promise((resolve) => {
+  const done = () => document.documentElement.dataset.workbookRuntime !== "loading";
+  if (done()) return resolve();
+  const onChange = () => done() && (document.removeEventListener("workbook:runtime", onChange), resolve());
+  document.addEventListener("workbook:runtime", onChange);
+  setTimeout(resolve, 8000); // a slow start should not keep the editor away for long
+});
+const whenIdle = () => new Promise((resolve) => (self.requestIdleCallback ? requestIdleCallback(resolve, { timeout: 1500 }) : setTimeout(resolve, 50)));
+
+function initBuild(ctx) {
   const { el, id, runtime, progress } = ctx;
   const host = el.querySelector('[data-role="editor"]');
-  const starter = host.querySelector(".wb-starter").textContent;
+  const plain = host.querySelector(".wb-starter");
+  const starter = plain.textContent;
   const limitMs = Number(host.dataset.timeLimit || 5) * 1000;
   const saved = progress.get(id);
+  let code = typeof saved.code === "string" ? saved.code : starter;
+  plain.querySelector("code").textContent = code;
+  plain.tabIndex = 0;
+  plain.setAttribute("aria-label", "Python code (press Enter or click to edit)");
+  let editor = null;
   let timer = null;
-  const { createEditor } = await import("./editor.js");
-  const editor = createEditor(host, typeof saved.code === "string" ? saved.code : starter, {
-    onChange(code) {
-      clearTimeout(timer);
-      timer = setTimeout(() => progress.update(id, { code }), 400);
-    },
-    onRun: () => run(),
+  let opening = null;
+
+  function openEditor() {
+    opening ||= import("./editor.js").then(({ createEditor }) => {
+      const hadFocus = document.activeElement === plain;
+      editor = createEditor(host, code, {
+        onChange(text) {
+          code = text;
+          clearTimeout(timer);
+          timer = setTimeout(() => progress.update(id, { code }), 400);
+        },
+        onRun: () => run(),
+      });
+      plain.remove();
+      host.wbEditor = editor; // for tests and tools: getCode(), setCode(), markLine()
+      if (hadFocus) editor.view.focus();
+      return editor;
+    });
+    return opening;
+  }
+  host.wbOpenEditor = openEditor; // builds the editor now (tests and tools); resolves to it
+
+  const nearView = new IntersectionObserver((entries) => {
+    if (!entries.some((entry) => entry.isIntersecting)) return;
+    nearView.disconnect();
+    runtimeSettled.then(whenIdle).then(openEditor);
+  }, { rootMargin: "400px 0px" });
+  nearView.observe(host);
+  const openNow = () => {
+    nearView.disconnect();
+    openEditor().then((ed) => ed.view.focus());
+  };
+  plain.addEventListener("click", openNow);
+  plain.addEventListener("keydown", (event) => {
+    if (event.key === "Enter" || event.key === " ") {
+      event.preventDefault();
+      openNow();
+    }
   });
-  host.querySelector(".wb-starter")?.remove();
-  host.wbEditor = editor; // for tests and tools: getCode(), setCode(), markLine()
+
   const runButton = el.querySelector('[data-role="run"]');
   async function run() {
-    const code = editor.getCode();
+    const ed = editor || (await openEditor());
+    code = ed.getCode();
     clearTimeout(timer);
     progress.update(id, { code });
     setPending(el);
     runButton.disabled = true;
-    editor.markLine(null);
+    ed.markLine(null);
     const result = await runtime.request(
       { op: "run", exercise: id, code },
       { limitMs, onProgress: (text) => showMessage(el, text) },
@@ -205,13 +256,13 @@ async function initBuild(ctx) {
     showResult(el, result);
     renderTests(el, result);
     const line = result.data?.error?.line;
-    if (line) editor.markLine(line);
+    if (line) ed.markLine(line);
     recordAttempt(ctx, result);
   }
   runButton.addEventListener("click", run);
-  el.querySelector('[data-role="reset"]').addEventListener("click", () => {
+  el.querySelector('[data-role="reset"]').addEventListener("click", async () => {
     if (window.confirm("Replace your code with the starter code? Your current code will be lost.")) {
-      editor.setCode(starter);
+      (editor || (await openEditor())).setCode(starter);
       progress.update(id, { code: starter });
     }
   });
