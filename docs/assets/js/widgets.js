@@ -241,12 +241,12 @@ function initBuild(ctx) {
 
   const runButton = el.querySelector('[data-role="run"]');
   async function run() {
+    setPending(el);
+    runButton.disabled = true;
     const ed = editor || (await openEditor());
     code = ed.getCode();
     clearTimeout(timer);
     progress.update(id, { code });
-    setPending(el);
-    runButton.disabled = true;
     ed.markLine(null);
     const result = await runtime.request(
       { op: "run", exercise: id, code },
