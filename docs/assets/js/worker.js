@@ -11,8 +11,20 @@ let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the r
 
 // The memory snapshot made at build time (scripts/build_snapshot.mjs): the
 // interpreter with the grading package already imported, gzip-compressed.
+// Once the service worker holds the site, its cache is read directly: the
+// service worker's thread, busy serving the page, is then not in the way.
+async function load(url) {
+  try {
+    const stored = await self.caches?.match(url);
+    if (stored) return stored;
+  } catch {
+    /* no Cache Storage here (an insecure origin): the network it is */
+  }
+  return fetch(url);
+}
+
 async function fetchSnapshot() {
-  const response = await fetch(indexURL + "workbook.snapshot.gz");
+  const response = await load(indexURL + "workbook.snapshot.gz");
   if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
   const bytes = new Uint8Array(await response.arrayBuffer());
   if (bytes[0] !== 0x1f || bytes[1] !== 0x8b) return checkSnapshot(unpack(bytes)); // stored inflated (sw.js), or by the server
@@ -57,14 +69,16 @@ function checkSnapshot(bytes) {
 // browser without DecompressionStream), boot Pyodide and install the wheel.
 // Pyodide 0.27 reads the whole snapshot before it starts compiling its
 // WebAssembly. Compiling it meanwhile takes that wait off the critical path:
-// the download and compile start here; Pyodide's own fetch of the same file gets
-// a stand-in response, and its instantiateStreaming call with that stand-in is
-// answered with the module compiled here. If this compile fails, Pyodide's
-// calls go through unchanged.
+// the compile starts here; Pyodide's own fetch of the file gets a stand-in
+// response, and its instantiateStreaming call with that stand-in is answered
+// with the module compiled here. If this compile fails, Pyodide compiles.
+// (Its other files go through the service worker as usual: reading them from
+// the cache directly, as load() does, was much slower on a first visit, while
+// the service worker is still filling that cache.)
 function precompileWasm(url) {
   const { fetch: realFetch } = self;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
-  const compiled = WebAssembly.compileStreaming(realFetch(url));
+  const compiled = WebAssembly.compileStreaming(load(url));
   const standIn = new Response(null);
   const restore = () => {
     self.fetch = realFetch;
@@ -113,6 +127,7 @@ const ready = (async () => {
   pyodide = started.py;
   handle = pyodide.pyimport("workbook.api").handle;
   mark("ready");
+  stages.timeOrigin = performance.timeOrigin; // to line the stages up with the page's clock
   self.postMessage({ type: "ready", ms: performance.now() - t0, from: started.from, why: started.why, stages });
 })().catch((err) => {
   self.postMessage({ type: "failed", message: String((err && err.message) || err) });
