@@ -11,6 +11,8 @@ let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the r
 
 // The memory snapshot made at build time (scripts/build_snapshot.mjs): the
 // interpreter with the grading package already imported, gzip-compressed.
+const networkFetch = self.fetch.bind(self); // before precompileWasm() stands in for it
+
 // Once the service worker holds the site, its cache is read directly: the
 // service worker's thread, busy serving the page, is then not in the way.
 async function load(url) {
@@ -20,7 +22,7 @@ async function load(url) {
   } catch {
     /* no Cache Storage here (an insecure origin): the network it is */
   }
-  return fetch(url);
+  return networkFetch(url);
 }
 
 async function fetchSnapshot() {
@@ -76,7 +78,7 @@ function checkSnapshot(bytes) {
 // the cache directly, as load() does, was much slower on a first visit, while
 // the service worker is still filling that cache.)
 function precompileWasm(url) {
-  const { fetch: realFetch } = self;
+  const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
   const compiled = WebAssembly.compileStreaming(load(url));
   const standIn = new Response(null);
@@ -89,12 +91,15 @@ function precompileWasm(url) {
     const response = await source;
     if (response !== standIn) return realInstantiate(response, imports);
     restore();
+    let module;
     try {
-      const module = await compiled;
-      return { module, instance: await WebAssembly.instantiate(module, imports) };
+      module = await compiled;
     } catch {
+      stages.wasm = "compiled by Pyodide";
       return realInstantiate(realFetch(url), imports);
     }
+    stages.wasm = "precompiled";
+    return { module, instance: await WebAssembly.instantiate(module, imports) };
   };
   return restore; // undo, for a start without Pyodide's usual calls (the fallback boot)
 }
