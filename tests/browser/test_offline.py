@@ -60,6 +60,7 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     urls = [u for u, _ in files]
     for needed in ("./", "chapters/00-rotations-2d/", "progress/", "search/search_index.json", "assets/exercises.json",
                    "assets/vendor/pyodide/pyodide.asm.wasm", "assets/vendor/pyodide/pyodide-lock.json",
+                   "assets/vendor/pyodide/workbook.snapshot.gz",
                    "assets/vendor/katex/katex.min.js", "assets/dist/workbook.js", "assets/dist/worker.js",
                    "assets/workbook.css"):
         assert needed in urls, needed
@@ -76,6 +77,8 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     wait_runtime(fresh, timeout=LONG)
     print(f"\noffline: fresh page load to runtime ready in {time.perf_counter() - started:.1f} s")
     assert fresh.evaluate("navigator.onLine") is False
+    # From the cache: the memory snapshot, and the WebAssembly compiled while it was read (worker.js).
+    assert fresh.evaluate("[workbook.runtime.startedFrom, workbook.runtime.startStages.wasm]") == ["snapshot", "precompiled"]
     assert answer_derive(exercise(fresh, "0.1"), "3") == "correct"
     build = exercise(fresh, "0.5")
     set_editor(fresh, build, ROTATE_NUMPY)

@@ -70,26 +70,33 @@ function checkSnapshot(bytes) {
 // Restore the snapshot; if that fails for any reason (missing, stale, an old
 // browser without DecompressionStream), boot Pyodide and install the wheel.
 // Pyodide 0.27 reads the whole snapshot before it starts compiling its
-// WebAssembly. Compiling it meanwhile takes that wait off the critical path:
-// the compile starts here; Pyodide's own fetch of the file gets a stand-in
-// response, and its instantiateStreaming call with that stand-in is answered
-// with the module compiled here. If this compile fails, Pyodide compiles.
-// (Its other files go through the service worker as usual: reading them from
-// the cache directly, as load() does, was much slower on a first visit, while
-// the service worker is still filling that cache.)
+// WebAssembly. When the service worker's cache already holds the WebAssembly,
+// compiling it meanwhile takes that wait off the critical path: the compile
+// starts here, Pyodide's own fetch of the file gets a stand-in response, and its
+// instantiateStreaming call with that stand-in is answered with the module
+// compiled here. On a first visit Pyodide fetches and compiles it as usual
+// (compiling early then competed with the downloads and was slower).
+// If the compile here fails, Pyodide compiles after all.
 function precompileWasm(url) {
   const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
-  const compiled = WebAssembly.compileStreaming(load(url));
+  const cached = Promise.resolve(self.caches?.match(url)).catch(() => null);
+  const compiled = cached.then((hit) => (hit ? WebAssembly.compileStreaming(hit) : null));
+  compiled.catch(() => {}); // handled below
   const standIn = new Response(null);
   const restore = () => {
     self.fetch = realFetch;
     WebAssembly.instantiateStreaming = realInstantiate;
   };
-  self.fetch = (resource, init) => (String(resource) === url ? Promise.resolve(standIn) : realFetch(resource, init));
+  self.fetch = (resource, init) =>
+    String(resource) === url ? cached.then((hit) => (hit ? standIn : realFetch(resource, init))) : realFetch(resource, init);
   WebAssembly.instantiateStreaming = async (source, imports) => {
     const response = await source;
-    if (response !== standIn) return realInstantiate(response, imports);
+    if (response !== standIn) {
+      restore();
+      stages.wasm = "compiled by Pyodide";
+      return realInstantiate(response, imports);
+    }
     restore();
     let module;
     try {
