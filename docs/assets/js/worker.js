@@ -9,24 +9,27 @@ let handle = null;
 let pyodide = null;
 let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the request running
 
-// The memory snapshot made at build time (scripts/build_snapshot.mjs): the
-// interpreter with the grading package already imported, gzip-compressed.
-const networkFetch = self.fetch.bind(self); // before precompileWasm() stands in for it
+// ---- Start-up -----------------------------------------------------------------
+// The worker restores a memory snapshot made at build time
+// (scripts/build_snapshot.mjs): the interpreter with the grading package already
+// imported. If that fails for any reason (missing, damaged, a browser without
+// DecompressionStream), it boots Pyodide and installs the wheel instead.
+// docs/performance.md has the measurements behind each step.
+
+const networkFetch = self.fetch.bind(self); // kept before precompileWasm() stands in for it
 
 // Once the service worker holds the site, its cache is read directly: the
 // service worker's thread, busy serving the page, is then not in the way.
-async function load(url) {
+async function cached(url) {
   try {
-    const stored = await self.caches?.match(url);
-    if (stored) return stored;
+    return (await self.caches?.match(url)) || null;
   } catch {
-    /* no Cache Storage here (an insecure origin): the network it is */
+    return null; // no Cache Storage here (an insecure origin)
   }
-  return networkFetch(url);
 }
 
 async function fetchSnapshot() {
-  const response = await load(indexURL + "workbook.snapshot.gz");
+  const response = (await cached(indexURL + "workbook.snapshot.gz")) || (await networkFetch(indexURL + "workbook.snapshot.gz"));
   if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
   const bytes = new Uint8Array(await response.arrayBuffer());
   if (bytes[0] !== 0x1f || bytes[1] !== 0x8b) return checkSnapshot(unpack(bytes)); // stored inflated (sw.js), or by the server
@@ -67,21 +70,21 @@ function checkSnapshot(bytes) {
   return bytes;
 }
 
-// Restore the snapshot; if that fails for any reason (missing, stale, an old
-// browser without DecompressionStream), boot Pyodide and install the wheel.
 // Pyodide 0.27 reads the whole snapshot before it starts compiling its
 // WebAssembly. When the service worker's cache already holds the WebAssembly,
 // compiling it meanwhile takes that wait off the critical path: the compile
 // starts here, Pyodide's own fetch of the file gets a stand-in response, and its
 // instantiateStreaming call with that stand-in is answered with the module
 // compiled here. On a first visit Pyodide fetches and compiles it as usual
-// (compiling early then competed with the downloads and was slower).
-// If the compile here fails, Pyodide compiles after all.
+// (compiling early then competed with the downloads and was slower). If the
+// compile here fails, Pyodide compiles after all. (Pyodide's other start-up
+// files go through the service worker: taking them from the cache as well was
+// not faster.)
 function precompileWasm(url) {
   const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
-  const cached = Promise.resolve(self.caches?.match(url)).catch(() => null);
-  const compiled = cached.then((hit) => (hit ? WebAssembly.compileStreaming(hit) : null));
+  const stored = cached(url);
+  const compiled = stored.then((hit) => (hit ? WebAssembly.compileStreaming(hit) : null));
   compiled.catch(() => {}); // handled below
   const standIn = new Response(null);
   const restore = () => {
@@ -89,15 +92,14 @@ function precompileWasm(url) {
     WebAssembly.instantiateStreaming = realInstantiate;
   };
   self.fetch = (resource, init) =>
-    String(resource) === url ? cached.then((hit) => (hit ? standIn : realFetch(resource, init))) : realFetch(resource, init);
+    String(resource) === url ? stored.then((hit) => (hit ? standIn : realFetch(resource, init))) : realFetch(resource, init);
   WebAssembly.instantiateStreaming = async (source, imports) => {
     const response = await source;
+    restore();
     if (response !== standIn) {
-      restore();
       stages.wasm = "compiled by Pyodide";
       return realInstantiate(response, imports);
     }
-    restore();
     let module;
     try {
       module = await compiled;
@@ -113,12 +115,14 @@ function precompileWasm(url) {
 
 // `stages` keeps when each step ended (ms since the worker started), for the benchmark.
 const stages = {};
-const mark = (name) => { stages[name] = Math.round(performance.now()); };
+const mark = (name) => {
+  stages[name] = Math.round(performance.now());
+};
 
 async function start() {
   const snapshot = typeof DecompressionStream === "function" ? fetchSnapshot() : Promise.reject(new Error("no DecompressionStream"));
+  snapshot.then(() => mark("snapshot"), () => {}); // handled below
   const unpatch = precompileWasm(indexURL + "pyodide.asm.wasm");
-  snapshot.then(() => mark("snapshot"), () => {}); // handled below; started before pyodide.js to overlap the downloads
   importScripts(indexURL + "pyodide.js");
   mark("pyodide.js");
   try {
@@ -133,6 +137,7 @@ async function start() {
   }
 }
 
+// ---- Requests ------------------------------------------------------------------
 const ready = (async () => {
   const t0 = performance.now();
   const started = await start();
