@@ -8,10 +8,12 @@
    ``.venv-pyodide``) adds it to ``build/pyodide-lock.base.json`` and writes the
    site's ``pyodide-lock.json``. Where no Python 3.12 is available the same entry
    is written here, from the wheel's metadata.
-4. Precompile the vendored ``python_stdlib.zip`` to .pyc with Python 3.12: Pyodide
-   ships it as sources, so every start compiled the ~150 modules it imports;
-   compiled once here, the runtime starts about 40 % sooner for ~1.5 MB more
-   (docs/performance.md). Skipped, with a note, where there is no Python 3.12.
+4. Precompile the vendored ``python_stdlib.zip`` and NumPy wheel to .pyc with
+   Python 3.12 (first, so the lock lists the compiled wheel's sha256): Pyodide
+   ships them as sources, so every start compiled the ~150 modules it imports,
+   and every first ``import numpy`` compiled ~80 more; compiled once here, both
+   get faster (docs/performance.md). Skipped, with a note, where there is no
+   Python 3.12. The published files are verified before (vendor.py).
 """
 
 from __future__ import annotations
@@ -64,20 +66,26 @@ def lock_entry(wheel: Path) -> dict:
 
 
 def compile_zip(path: Path) -> None:
-    """Replace every .py in the zip by its .pyc, in place. Run by Python 3.12 (Pyodide
-    0.27 runs 3.12 bytecode). Reproducible: unchecked-hash .pyc files (no source
-    mtime) and fixed zip timestamps, so the same zip always gives the same bytes
-    (``pyodide py-compile`` stamps the current time, which would change the
-    service worker's version on every build)."""
+    """Replace every .py in the zip (the stdlib zip or a wheel) by its .pyc, in place.
+    Run by Python 3.12 (Pyodide 0.27 runs 3.12 bytecode). Reproducible:
+    unchecked-hash .pyc files (no source mtime) and fixed zip timestamps, so the
+    same zip always gives the same bytes (``pyodide py-compile`` stamps the current
+    time, which would change the service worker's version on every build). A
+    wheel's RECORD is rewritten to list the new files."""
+    import base64
     import py_compile
     import tempfile
 
     assert sys.version_info[:2] == (3, 12), "compile_zip needs Python 3.12"
     out = path.with_name(path.name + ".tmp")
-    with zipfile.ZipFile(path) as zin, tempfile.TemporaryDirectory() as tmp, \
-            zipfile.ZipFile(out, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as zout:
+    files: list[tuple[zipfile.ZipInfo, bytes]] = []
+    record_name = None
+    with zipfile.ZipFile(path) as zin, tempfile.TemporaryDirectory() as tmp:
         for info in zin.infolist():
             name, data = info.filename, zin.read(info)
+            if name.endswith(".dist-info/RECORD"):
+                record_name = name
+                continue
             if name.endswith(".py"):
                 src = Path(tmp) / "module.py"
                 src.write_bytes(data)
@@ -86,26 +94,40 @@ def compile_zip(path: Path) -> None:
                 name, data = name + "c", Path(str(src) + "c").read_bytes()
             entry = zipfile.ZipInfo(name, date_time=(1980, 1, 1, 0, 0, 0))
             entry.compress_type, entry.external_attr = zipfile.ZIP_DEFLATED, info.external_attr
+            files.append((entry, data))
+    if record_name:
+        def line(entry: zipfile.ZipInfo, data: bytes) -> str:
+            digest = base64.urlsafe_b64encode(hashlib.sha256(data).digest()).rstrip(b"=").decode()
+            return f"{entry.filename},sha256={digest},{len(data)}"
+        record = "\n".join([*(line(e, d) for e, d in files), f"{record_name},,"]) + "\n"
+        entry = zipfile.ZipInfo(record_name, date_time=(1980, 1, 1, 0, 0, 0))
+        entry.compress_type, entry.external_attr = zipfile.ZIP_DEFLATED, 0o644 << 16
+        files.append((entry, record.encode()))
+    with zipfile.ZipFile(out, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as zout:
+        for entry, data in files:
             zout.writestr(entry, data)
     out.replace(path)
 
 
-def precompile_stdlib() -> str:
-    """Compile the vendored python_stdlib.zip once (a compiled zip has no .py left;
-    vendor.py puts the published zip back whenever it re-vendors)."""
-    stdlib = VENDOR / "python_stdlib.zip"
-    with zipfile.ZipFile(stdlib) as z:
+def precompile(archive: Path) -> str:
+    """Compile a vendored archive once (a compiled one has no .py left; vendor.py
+    puts the published file back whenever it re-vendors)."""
+    with zipfile.ZipFile(archive) as z:
         if not any(name.endswith(".py") for name in z.namelist()):
             return "already compiled"
     probe = "import sys; sys.exit(sys.version_info[:2] != (3, 12))"
     for py in (sys.executable, str(PYODIDE_CLI.parent / "python"), shutil.which("python3.12")):
         if py and Path(py).exists() and subprocess.run([py, "-c", probe]).returncode == 0:
-            subprocess.run([py, __file__, "--compile-zip", str(stdlib)], check=True)
+            subprocess.run([py, __file__, "--compile-zip", str(archive)], check=True)
             return "compiled to .pyc"
     return "left as sources (no Python 3.12 found)"
 
 
 def main() -> None:
+    # Pyodide publishes the standard library and NumPy as sources: every start,
+    # and every first `import numpy`, compiled them again (docs/performance.md).
+    compiled = {archive.name: precompile(archive)
+                for archive in (VENDOR / "python_stdlib.zip", *sorted(VENDOR.glob("numpy-*.whl")))}
     wheel = build_wheel()
     for old in VENDOR.glob("robotics_workbook-*.whl"):
         old.unlink()
@@ -121,17 +143,20 @@ def main() -> None:
         # pyodide-lock 0.1.x drops info.version, which Pyodide 0.27 checks at start-up: restore it.
         lock = json.loads(target.read_text())
         lock["info"] = json.loads(BASE_LOCK.read_text())["info"]
-        target.write_text(json.dumps(lock, indent=2, sort_keys=True) + "\n")
         how = "pyodide lockfile add-wheels"
     else:
         lock = json.loads(BASE_LOCK.read_text())
         entry = lock_entry(shipped)
         lock["packages"][entry["name"]] = entry
-        target.write_text(json.dumps(lock, indent=2, sort_keys=True) + "\n")
         how = "the built-in writer (no Python 3.12 for pyodide-build)"
+    # Pyodide checks each package against the lock's sha256: list the compiled wheels' own.
+    for entry in lock["packages"].values():
+        entry["sha256"] = hashlib.sha256((VENDOR / entry["file_name"]).read_bytes()).hexdigest()
+    target.write_text(json.dumps(lock, indent=2, sort_keys=True) + "\n")
     digest = hashlib.sha256(shipped.read_bytes()).hexdigest()[:12]
     print(f"wheel: {wheel.name} (sha256 {digest}…) listed in {target.relative_to(ROOT)} by {how}")
-    print(f"stdlib: python_stdlib.zip {precompile_stdlib()}")
+    for name, how in compiled.items():
+        print(f"precompile: {name} {how}")
 
 
 if __name__ == "__main__":
