@@ -194,7 +194,8 @@ function initBuild(ctx) {
   const limitMs = Number(host.dataset.timeLimit || 5) * 1000;
   const saved = progress.get(id);
   let code = typeof saved.code === "string" ? saved.code : starter;
-  plain.querySelector("code").textContent = code;
+  // A <pre> hides one final newline; the editor shows it as an empty last line.
+  plain.querySelector("code").textContent = code.endsWith("\n") ? code + "\n" : code;
   plain.tabIndex = 0;
   plain.setAttribute("aria-label", "Python code (press Enter or click to edit)");
   let editor = null;
