@@ -31,10 +31,13 @@ async function cached(url) {
 async function fetchSnapshot() {
   const response = (await cached(indexURL + "workbook.snapshot.gz")) || (await networkFetch(indexURL + "workbook.snapshot.gz"));
   if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
-  const bytes = new Uint8Array(await response.arrayBuffer());
-  if (bytes[0] !== 0x1f || bytes[1] !== 0x8b) return checkSnapshot(unpack(bytes)); // stored inflated (sw.js), or by the server
-  const inflated = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
-  return checkSnapshot(unpack(new Uint8Array(await new Response(inflated).arrayBuffer())));
+  let bytes = new Uint8Array(await response.arrayBuffer());
+  if (bytes[0] === 0x1f && bytes[1] === 0x8b) {
+    // Still gzipped (a first visit); the service worker stores it inflated, and some servers inflate it.
+    const inflated = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
+    bytes = new Uint8Array(await new Response(inflated).arrayBuffer());
+  }
+  return checkSnapshot(unpack(bytes));
 }
 
 // The file leaves out the memory's zero pages (scripts/build_snapshot.mjs,
@@ -120,7 +123,7 @@ const mark = (name) => {
 };
 
 async function start() {
-  const snapshot = typeof DecompressionStream === "function" ? fetchSnapshot() : Promise.reject(new Error("no DecompressionStream"));
+  const snapshot = fetchSnapshot(); // rejects without DecompressionStream where the file is still gzipped
   snapshot.then(() => mark("snapshot"), () => {}); // handled below
   const unpatch = precompileWasm(indexURL + "pyodide.asm.wasm");
   importScripts(indexURL + "pyodide.js");
