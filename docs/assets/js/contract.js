@@ -1,0 +1,22 @@
+// The page contract, as JavaScript names. esbuild bundles the same JSON file the
+// grading package reads (pyodide_pkg/workbook/contract.json); CONTRACT.md explains it.
+import contract from "../../../pyodide_pkg/workbook/contract.json";
+
+const names = (values) => Object.freeze(Object.fromEntries(values.map((v) => [v.replace(/-(\w)/g, (_, c) => c.toUpperCase()), v])));
+
+export const ATTR = Object.freeze({ ...contract.attributes });
+export const ROLE = names(Object.keys(contract.roles));
+export const STATE = names(contract.states);
+export const STATUS = names(contract.statuses);
+export const TAG = names(Object.keys(contract.tags));
+export const RUNTIME = names(contract.runtimeStates);
+export const OFFLINE = names(contract.offlineStates);
+export const KINDS = Object.freeze([...contract.kinds]);
+
+/** `[data-role="NAME"]`, optionally with more attribute tests. */
+export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;
+/** The first (or every) element with `role` inside `el`. */
+export const findRole = (el, role, extra) => el.querySelector(byRole(role, extra));
+export const findRoles = (el, role, extra) => [...el.querySelectorAll(byRole(role, extra))];
+/** Set <html data-workbook-runtime|offline>. */
+export const setRootState = (which, value) => document.documentElement.setAttribute(ATTR[which], value);

@@ -1,0 +1,47 @@
+"""The page contract, as Python names: read once from ``contract.json``.
+
+``contract.json`` (beside this file) is the one source for the names that the
+page, the worker, the build and the tests share; ``CONTRACT.md`` at the top of
+the repository explains each entry. The page's JavaScript imports the same file
+(``docs/assets/js/contract.js``).
+
+>>> ROLE.answer, ATTR.state, STATE.pending, TAG.slip
+('answer', 'data-state', 'pending', 'slip')
+>>> role_attr("move-up")
+'data-role="move-up"'
+>>> ROLE.move_up
+'move-up'
+"""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from types import SimpleNamespace
+from typing import Any
+
+SOURCE = Path(__file__).with_name("contract.json")
+DATA: dict[str, Any] = json.loads(SOURCE.read_text(encoding="utf-8"))
+
+
+def _names(values) -> SimpleNamespace:
+    """A namespace whose attributes are the values (``move-up`` as ``move_up``)."""
+    return SimpleNamespace(**{v.replace("-", "_"): v for v in values})
+
+
+ATTR = SimpleNamespace(**DATA["attributes"])
+ROLE = _names(DATA["roles"])
+STATE = _names(DATA["states"])
+STATUS = _names(DATA["statuses"])
+TAG = _names(DATA["tags"])
+ERROR = _names(DATA["errors"])
+KINDS: tuple[str, ...] = tuple(DATA["kinds"])
+STATUSES: tuple[str, ...] = tuple(DATA["statuses"])
+OPS: dict[str, dict[str, Any]] = DATA["ops"]
+
+
+def role_attr(role: str) -> str:
+    """``data-role="NAME"``, for a role the contract defines (others raise KeyError)."""
+    if role not in DATA["roles"]:
+        raise KeyError(f"no role {role!r} in the contract")
+    return f'{ATTR.role}="{role}"'
