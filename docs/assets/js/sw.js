@@ -16,7 +16,9 @@
 //   workers get COOP/COEP headers, so they are cross-origin isolated and a long
 //   run can be interrupted instead of the worker being killed; other cached
 //   files are returned as stored (which keeps the browser's compiled-code cache
-//   for them usable).
+//   for them usable). A page address the site does not have gets the cached
+//   404 page (offline, or when the network answers 404), with a <base> that
+//   points its relative URLs at the site root.
 
 const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
@@ -25,6 +27,7 @@ const SCOPE = self.registration.scope;
 const PREFIX = `robotics-workbook:${new URL(SCOPE).pathname}:`;
 const CACHE = PREFIX + VERSION;
 const KNOWN = new Set(FILES.map(([path]) => new URL(path, SCOPE).href));
+const NOT_FOUND = new URL("404.html", SCOPE).href;
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
 
 // The Python memory snapshot travels gzip-compressed (4.6 MB instead of 21 MB)
@@ -94,6 +97,7 @@ function cacheKey(url) {
 
 async function respond(request) {
   const key = cacheKey(request.url);
+  if (key === NOT_FOUND && request.mode === "navigate") return (await notFound()) || isolate(await fetch(request));
   if (key) {
     const cached = await caches.open(CACHE).then((cache) => cache.match(key));
     // Only documents and workers need the isolation headers; everything else is
@@ -107,15 +111,27 @@ async function respond(request) {
     url.search = "";
     if (KNOWN.has(url.href)) return Response.redirect(url.href, 301);
   }
+  if (request.mode !== "navigate") return isolate(await fetch(request));
+  // An unknown address in the site: the network's answer, or the site's own 404
+  // page when the network has none (offline) or answers "not found".
+  let response;
   try {
-    return isolate(await fetch(request));
+    response = await fetch(request);
   } catch (err) {
-    if (request.mode === "navigate") {
-      const missing = await caches.open(CACHE).then((cache) => cache.match(new URL("404.html", SCOPE).href));
-      if (missing) return isolate(new Response(missing.body, { status: 404, statusText: "Not Found", headers: missing.headers }));
-    }
-    throw err;
+    return (await notFound()) || Promise.reject(err);
   }
+  if (response.status === 404) return (await notFound()) || isolate(response);
+  return isolate(response);
+}
+
+/** The cached 404 page, its <base> set to this scope so its relative URLs work at any depth. */
+async function notFound() {
+  const cached = await caches.open(CACHE).then((cache) => cache.match(NOT_FOUND));
+  if (!cached) return null;
+  const html = (await cached.text()).replace(/<base href="[^"]*">/, `<base href="${SCOPE}">`);
+  const headers = new Headers(cached.headers);
+  headers.delete("Content-Length");
+  return isolate(new Response(html, { status: 404, statusText: "Not Found", headers }));
 }
 
 self.addEventListener("fetch", (event) => {
