@@ -46,7 +46,7 @@ LONG = 120_000
 
 
 def wait_offline_ready(page: Page) -> None:
-    page.wait_for_function("document.documentElement.dataset.workbookOffline === 'ready'", timeout=LONG)
+    page.wait_for_function("() => document.documentElement.dataset.workbookOffline === 'ready'", timeout=LONG)
 
 
 def precache_list(sw_text: str) -> list[list[str]]:

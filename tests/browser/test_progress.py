@@ -79,7 +79,7 @@ def test_progress_survives_reload_and_instant_navigation(page, site_url):
 
     click_nav(page, "00-rotations-2d")
     exercise(page, "0.1").wait_for()
-    page.wait_for_function("document.querySelector('[data-exercise-id=\"0.1\"]').dataset.state === 'correct'")
+    page.wait_for_function("() => document.querySelector('[data-exercise-id=\"0.1\"]').dataset.state === 'correct'")
     expect(page.locator(".wb-chapter-progress")).to_contain_text("1 of 6 exercises solved")
     expect(nav_link(page, "01-transforms").locator(".wb-nav-done")).to_have_count(1)
 
@@ -125,7 +125,7 @@ def make_some_progress(page: Page, site_url: str) -> None:
     exercise(page, "0.2").locator('[data-role="hint"]').click()
     build = exercise(page, "0.5")
     set_editor(page, build, ROTATE_OK)
-    page.wait_for_function("(workbook.progress.get('0.5').code || '').includes('math.cos')")
+    page.wait_for_function("() => (workbook.progress.get('0.5').code || '').includes('math.cos')")
     open_ready(page, site_url, 3)
     assert answer_debug(exercise(page, "3.5"), bank.get("3.5").bug_line) == "correct"
 

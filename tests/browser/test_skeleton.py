@@ -185,7 +185,7 @@ def test_solved_exercise_stays_solved_after_reload(page, site_url):
 def test_opened_from_a_file_explains_how_to_serve(browser):
     page = browser.new_page()
     page.goto((SITE / "chapters" / "00-rotations-2d" / "index.html").as_uri())
-    page.wait_for_function("document.documentElement.dataset.workbookRuntime === 'failed'")
+    page.wait_for_function("() => document.documentElement.dataset.workbookRuntime === 'failed'")
     text = exercise(page, "0.1").locator('[data-role="feedback"]').inner_text()
     assert "python3 -m http.server" in text
     page.close()
