@@ -34,7 +34,7 @@ if (typeof Worker === "undefined") {
   runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
 }
 window.workbook = { runtime, progress };
-registerOffline(siteRoot);
+registerOffline(siteRoot, progress);
 initScrollRegions();
 
 const noWorker = {
