@@ -20,7 +20,7 @@ import time
 from urllib.parse import urlsplit
 
 import pytest
-from conftest import SITE
+from conftest import ROOT, SITE
 from playwright.sync_api import expect
 
 from workbook.contract import ATTR, DATA
@@ -47,6 +47,7 @@ if (navigator.storage) {
 """
 SAFARI = ("Mozilla/5.0 (Macintosh; Intel Mac OS X 14_5) AppleWebKit/605.1.15 (KHTML, like Gecko) "
           "Version/17.5 Safari/605.1.15")
+AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 INDICATOR = "[data-wb-offline-indicator]"
 REMINDER = "[data-wb-reminder]"
 
@@ -87,6 +88,16 @@ def stored_bytes(site_url: str) -> int:
         else:
             total += path.stat().st_size
     return total
+
+
+def axe_violations(page, selector: str) -> list[str]:
+    """axe's serious and critical findings inside ``selector`` (the page's policy blocks a <script> tag: evaluate)."""
+    if not page.evaluate("typeof window.axe === 'object'"):
+        page.evaluate(AXE.read_text())
+    return page.evaluate("""async (sel) => {
+      const r = await axe.run(sel, { resultTypes: ['violations'] });
+      return r.violations.filter(v => v.impact === 'serious' || v.impact === 'critical').map(v => v.id + ': ' + v.help);
+    }""", selector)
 
 
 @pytest.fixture
@@ -133,6 +144,7 @@ def test_the_footer_shows_the_stored_size_and_persistence_is_asked_once(recorded
     assert expected_mb > 10
     assert abs(float(match.group(1)) - expected_mb) <= 0.5, (text, expected_mb)
     assert page.evaluate("localStorage.getItem('__wbPersistCalls')") == "1"
+    assert axe_violations(page, INDICATOR) == []
 
     # On the next page too (instant navigation swaps the footer), from the size measured once.
     page.locator("a.md-footer__link--next").click()
@@ -175,6 +187,7 @@ def test_webkit_reminds_a_learner_to_export_at_most_once_a_week(browser, site_ur
         expect(reminder).to_contain_text("7 days")
         link = reminder.get_by_role("link", name="Export your progress")
         assert link.evaluate("a => a.href") == site_url + "progress/"
+        assert axe_violations(page, REMINDER) == []
         reminder.get_by_role("button", name="Dismiss").click()
         expect(reminder).to_have_count(0)
 
