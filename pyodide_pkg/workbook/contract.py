@@ -37,6 +37,7 @@ TAG = _names(DATA["tags"])
 ERROR = _names(DATA["errors"])
 KINDS: tuple[str, ...] = tuple(DATA["kinds"])
 STATUSES: tuple[str, ...] = tuple(DATA["statuses"])
+ERRORS: tuple[str, ...] = tuple(DATA["errors"])
 OPS: dict[str, dict[str, Any]] = DATA["ops"]
 
 

@@ -1,8 +1,17 @@
-"""Small helpers over the page contract (../shared/GUIDE.md §1)."""
+"""Small helpers over the page contract (CONTRACT.md; names from workbook/contract.json)."""
 
 from __future__ import annotations
 
 from playwright.sync_api import Locator, Page
+
+from workbook.contract import ATTR, ROLE
+
+
+def role(name: str, extra: str = "") -> str:
+    """A CSS selector for the contract role ``name`` (raises for a role the contract lacks)."""
+    if name.replace("-", "_") not in vars(ROLE):
+        raise KeyError(f"no role {name!r} in the contract")
+    return f'[{ATTR.role}="{name}"]{extra}'
 
 CHAPTERS = {
     0: "chapters/00-rotations-2d/", 1: "chapters/01-transforms/", 2: "chapters/02-rotations-3d/",

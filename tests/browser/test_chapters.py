@@ -9,7 +9,7 @@ from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, 
                      set_editor)
 
 from workbook import bank
-from workbook.checkers import fmt
+from workbook.kinds.derive import fmt
 
 
 def solve(page, ex) -> str:

@@ -2,7 +2,8 @@
 
 import math
 
-from ..exercises import Derive, Option, Slip, Trace
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.linalg import matvec
 from ..reference.rotation3d import quat_from_axis_angle, quat_norm, rz
 

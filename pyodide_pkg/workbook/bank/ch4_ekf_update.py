@@ -2,7 +2,9 @@
 
 import math
 
-from ..exercises import Build, Derive, Option, Slip, Trace
+from ..kinds.build import Build
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.ekf import ekf_update, measurement_jacobian, range_bearing
 
 _POSE = (0, 0, 0)
