@@ -5,7 +5,7 @@ package (the same source of truth the page grades against)."""
 from __future__ import annotations
 
 import pytest
-from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, exercise, open_chapter, run_build,
+from helpers import (role, answer_debug, answer_derive, answer_trace, arrange_design, exercise, open_chapter, run_build,
                      set_editor)
 
 from workbook import bank
@@ -23,7 +23,7 @@ def solve(page, ex) -> str:
         return answer_debug(el, ex.bug_line)
     if ex.kind == "design":
         arrange_design(el, list(ex.solution))
-        el.locator('[data-role="check"]').click()
+        el.locator(role("check")).click()
         page.wait_for_function("el => el.dataset.state !== 'pending'", arg=el.element_handle())
         return el.get_attribute("data-state")
     set_editor(page, el, ex.solution)

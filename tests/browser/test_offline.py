@@ -22,7 +22,7 @@ from urllib.parse import urlsplit
 
 import pytest
 from conftest import SITE, SUBPATH, _SiteHandler
-from helpers import answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
+from helpers import role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page, expect
 
 ROTATE_NUMPY = (
@@ -131,7 +131,7 @@ def test_interrupt_stops_an_endless_loop_on_an_isolated_page(page, site_url):
     assert page.evaluate("workbook.runtime.interrupt instanceof Int32Array")
     build = exercise(page, "0.5")
     set_editor(page, build, LOOP)
-    build.locator('[data-role="run"]').click()
+    build.locator(role("run")).click()
     timed_out(page, build)
     stops = page.evaluate("[workbook.runtime.lastStop, workbook.runtime.interrupts, workbook.runtime.restarts]")
     assert stops == ["interrupt", 1, 0], f"interrupts sent: {page.evaluate('workbook.runtime.interruptsSent')}"
@@ -140,7 +140,7 @@ def test_interrupt_stops_an_endless_loop_on_an_isolated_page(page, site_url):
 
     # Code that swallows KeyboardInterrupt: a second later, the worker is terminated.
     set_editor(page, build, STUBBORN_LOOP)
-    build.locator('[data-role="run"]').click()
+    build.locator(role("run")).click()
     timed_out(page, build)
     assert page.evaluate("[workbook.runtime.lastStop, workbook.runtime.restarts]") == ["terminate", 1]
     wait_runtime(page, timeout=LONG)
@@ -153,7 +153,7 @@ def test_terminate_stops_an_endless_loop_where_not_isolated(page, site_url):
     assert page.evaluate("workbook.runtime.interrupt") is None
     build = exercise(page, "0.5")
     set_editor(page, build, LOOP)
-    build.locator('[data-role="run"]').click()
+    build.locator(role("run")).click()
     timed_out(page, build)
     assert page.evaluate("[workbook.runtime.lastStop, workbook.runtime.restarts, workbook.runtime.interrupts]") == [
         "terminate", 1, 0]

@@ -8,7 +8,7 @@ from __future__ import annotations
 import json
 import re
 
-from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, editor_code, exercise, open_chapter,
+from helpers import (role, answer_debug, answer_derive, answer_trace, arrange_design, editor_code, exercise, open_chapter,
                      set_editor,
                      wait_runtime)
 from playwright.sync_api import Page, expect
@@ -47,7 +47,7 @@ def solve_chapter_1(page: Page) -> None:
         assert answer_derive(exercise(page, ex_id), text) == "correct"
     assert answer_trace(exercise(page, "1.4"), bank.get("1.4").answer) == "correct"
     arrange_design(exercise(page, "1.5"), list(bank.get("1.5").solution))
-    exercise(page, "1.5").locator('[data-role="check"]').click()
+    exercise(page, "1.5").locator(role("check")).click()
     page.wait_for_function("el => el.dataset.state === 'correct'", arg=exercise(page, "1.5").element_handle())
 
 
@@ -62,8 +62,8 @@ def test_progress_survives_reload_and_instant_navigation(page, site_url):
     page.reload()
     wait_runtime(page, timeout=120_000)
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
-    assert exercise(page, "0.1").locator('[data-role="answer"]').input_value() == "3"
-    assert exercise(page, "0.3").locator('[data-role="choice"][value="a"]').is_checked()
+    assert exercise(page, "0.1").locator(role("answer")).input_value() == "3"
+    assert exercise(page, "0.3").locator(role("choice") + '[value="a"]').is_checked()
     expect(page.locator(".wb-chapter-progress")).to_contain_text("1 of 6 exercises solved")
 
     # Instant navigation: the same document all along.
@@ -121,8 +121,8 @@ def make_some_progress(page: Page, site_url: str) -> None:
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     assert answer_derive(exercise(page, "0.6"), "7") == "incorrect"
     assert answer_trace(exercise(page, "0.3"), "a") == "incorrect"
-    exercise(page, "0.2").locator('[data-role="reveal"]').click()
-    exercise(page, "0.2").locator('[data-role="hint"]').click()
+    exercise(page, "0.2").locator(role("reveal")).click()
+    exercise(page, "0.2").locator(role("hint")).click()
     build = exercise(page, "0.5")
     set_editor(page, build, ROTATE_OK)
     page.wait_for_function("(workbook.progress.get('0.5').code || '').includes('math.cos')")
@@ -178,7 +178,7 @@ def test_export_reset_import_restores_exactly(page, site_url):
     open_chapter(page, site_url, 0, wait_ready=False)
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
     # The saved code is on screen before the editor is built, and in the editor after.
-    expect(exercise(page, "0.5").locator('[data-role="editor"]')).to_contain_text("math.cos")
+    expect(exercise(page, "0.5").locator(role("editor"))).to_contain_text("math.cos")
     assert "math.cos" in editor_code(exercise(page, "0.5"))
     wait_runtime(page, timeout=120_000)
 
