@@ -5,8 +5,9 @@ not understand fails the build). For each exercise block the hook renders the
 prompt, hint and solution with the site's own Markdown extensions, and
 ``render_exercise`` builds the widget around the HTML its kind draws. The build
 fails on an unknown, duplicate or missing exercise id, an unknown kind (one not
-in the contract, or without its page module ``docs/assets/js/kinds/K.js``), and
-an unknown figure. It also writes ``assets/exercises.json`` (the chapters and the
+in the contract, or without its page module ``docs/assets/js/kinds/K.js``), an
+answer kind without its module (``workbook/answer_kinds/A.py`` and
+``docs/assets/js/answer-kinds/A.js``), and an unknown figure. It also writes ``assets/exercises.json`` (the chapters and the
 ids on each, for the progress pages) and exposes the contract to the theme
 templates as ``config.extra.contract``.
 """
@@ -25,11 +26,12 @@ from blocks import BlockError, ExerciseBlock, FigureBlock, parse
 from render_exercise import PageTools, dom_id, exercise_html
 from render_figure import figure_html
 from workbook import bank, figures
-from workbook.contract import DATA, KINDS
+from workbook.answer_kinds import classes as answer_classes
+from workbook.contract import ANSWER_KINDS, DATA, KINDS
 
 SLOT = '<div data-wb-slot="{id}"></div>'
 MANIFEST = "assets/exercises.json"
-JS_KINDS = Path(__file__).resolve().parent.parent / "assets" / "js" / "kinds"
+JS = Path(__file__).resolve().parent.parent / "assets" / "js"
 
 
 @dataclass
@@ -59,9 +61,11 @@ def _check_kinds() -> None:
     for ex in bank.all_exercises():
         if ex.kind not in KINDS:
             raise PluginError(f"exercise {ex.id} has kind {ex.kind!r}, which contract.json does not list")
-    for kind in KINDS:
-        if not (JS_KINDS / f"{kind}.js").is_file():
-            raise PluginError(f"kind {kind!r} has no page module docs/assets/js/kinds/{kind}.js")
+    for folder, names in (("kinds", KINDS), ("answer-kinds", ANSWER_KINDS)):
+        for name in names:
+            if not (JS / folder / f"{name}.js").is_file():
+                raise PluginError(f"{name!r} has no page module docs/assets/js/{folder}/{name}.js")
+    answer_classes()  # each answer kind's Python module exists and defines its class
 
 
 def on_config(config, **kwargs):

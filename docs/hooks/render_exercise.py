@@ -62,6 +62,8 @@ def exercise_html(ex: Exercise, prompt_html: str, hint_html: str, solution_html:
     """The whole exercise element (CONTRACT.md lists its attributes and roles)."""
     tools = tools or PageTools()
     base = dom_id(ex.id)
+    if solution_html:
+        solution_html += ex.worked_html()
     buttons, panels = _help(ex, base, hint_html, solution_html)
     extra = "".join(f' {name}="{escape(value)}"' for name, value in ex.attributes().items())
     return (

@@ -7,7 +7,11 @@ Requests (``contract.json`` → ``ops``):
 * ``{"op": "run", "exercise": "0.5", "code": "..."}`` for Build (the page starts
   its time limit when the worker says the code starts);
 * ``{"op": "figure", "figure": "rotation-2d", "params": {"theta": 30}}`` for a
-  figure's next frame (``svg``, ``readouts``, ``flags``).
+  figure's next frame (``svg``, ``readouts``, ``flags``);
+* ``{"op": "split", "exercise": "0.7", "text": "[[0, -1], [1, 0]]"}``: a pasted
+  vector or matrix split into the exercise's entries (Derive, shaped answers);
+* ``{"op": "read", "exercise": "6.6", "answer": "L1 cos θ1"}``: how an answer is
+  read (a formula's typeset form), before it is checked (Derive).
 
 Every reply is an envelope: ``{"ok": true, "value": VERDICT_OR_FRAME}`` or
 ``{"ok": false, "error": {"kind": ..., "message": ...}}``.
@@ -29,13 +33,16 @@ from .contract import OPS
 from .verdict import GradingError, fail, ok
 
 
-def _exercise(request: dict[str, Any]):
+def _exercise(request: dict[str, Any], kind: str | None = None):
     try:
         ex = bank.get(str(request.get("exercise")))
     except KeyError:
         raise GradingError("unknown-exercise", f"This page asked about exercise {request.get('exercise')!r}, "
                            "which the grader does not know.") from None
-    if ex.op != request["op"]:
+    if kind is not None:
+        if ex.kind != kind:
+            raise GradingError("wrong-op", f"Exercise {ex.id} is a {ex.kind} exercise: {request['op']!r} is for {kind} exercises.")
+    elif ex.op != request["op"]:
         raise GradingError("wrong-op", f"Exercise {ex.id} is a {ex.kind} exercise: it is graded with "
                            f"{ex.op!r}, not {request['op']!r}.")
     return ex
@@ -58,7 +65,15 @@ def _figure(request: dict[str, Any]) -> dict[str, Any]:
         raise GradingError("figure", str(err)) from None
 
 
-HANDLERS = {"grade": _grade, "run": _run, "figure": _figure}
+def _split(request: dict[str, Any]) -> dict[str, Any]:
+    return {"entries": _exercise(request, "derive").split(request.get("text"))}
+
+
+def _read(request: dict[str, Any]) -> dict[str, Any]:
+    return _exercise(request, "derive").read(request.get("answer"))
+
+
+HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read}
 assert set(HANDLERS) == set(OPS), "every op in contract.json has one handler"
 
 

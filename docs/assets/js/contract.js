@@ -13,6 +13,7 @@ export const ERROR = names(Object.keys(contract.errors));
 export const RUNTIME = names(contract.runtimeStates);
 export const OFFLINE = names(contract.offlineStates);
 export const KINDS = Object.freeze([...contract.kinds]);
+export const ANSWER_KINDS = Object.freeze([...contract.answerKinds]);
 
 /** `[data-role="NAME"]`, optionally with more attribute tests. */
 export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;

@@ -49,6 +49,10 @@ class Exercise:
         """Extra attributes of the exercise element (e.g. an answer's shape)."""
         return {}
 
+    def worked_html(self) -> str:
+        """HTML that ends the revealed derivation (Derive: the answer as typed)."""
+        return ""
+
 
 def check_button() -> str:
     return f'<button type="submit" class="md-button md-button--primary wb-check" {role_attr(ROLE.check)}>Check</button>'

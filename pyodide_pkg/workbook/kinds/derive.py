@@ -7,20 +7,24 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from ..answers import InvalidAnswer, parse_answer
-from ..contract import TAG
-from ..verdict import Verdict
+from ..contract import ATTR, TAG
+from ..verdict import GradingError, Verdict
 from .base import ROLE, Exercise, Page, check_button, escape, form, role_attr
 
 CLOSE_FRACTION = 0.02
 
 
-def fmt(x: float) -> str:
-    """A number as the workbook prints it: up to 4 decimals, no trailing zeros.
+def fmt(x: float, digits: int = 0) -> str:
+    """A number as the workbook prints it: up to 4 decimals, no trailing zeros;
+    with ``digits``, at least that many significant digits for small numbers.
 
-    >>> fmt(0.70710678), fmt(3.0), fmt(-0.0)
-    ('0.7071', '3', '0')
+    >>> fmt(0.70710678), fmt(3.0), fmt(-0.0), fmt(0.000123456), fmt(0.000123456, digits=4)
+    ('0.7071', '3', '0', '0.0001', '0.0001235')
     """
-    s = f"{x:.4f}".rstrip("0").rstrip(".")
+    decimals = 4
+    if digits and x and abs(x) < 1:
+        decimals = max(4, digits - 1 - math.floor(math.log10(abs(x))))
+    s = f"{x:.{decimals}f}".rstrip("0").rstrip(".")
     return "0" if s in ("-0", "") else s
 
 
@@ -48,7 +52,31 @@ class Derive(Exercise):
     abs_tol: float = 1e-3
     slips: tuple[Slip, ...] = ()
     kind: ClassVar[str] = "derive"
+    answer_kind: ClassVar[str] = "number"
     reveal_label: ClassVar[str] = "Show derivation"
+
+    def attributes(self) -> dict[str, str]:
+        return {ATTR.answerKind: self.answer_kind}
+
+    def worked_text(self) -> str:
+        """The key as a learner would type it."""
+        return fmt(self.key, digits=4) + ("°" if self.angle == "deg" else "")
+
+    def worked_html(self) -> str:
+        """The last line of the derivation: the answer, typed out (see CONTRACT.md)."""
+        return (f'<p class="wb-worked">Type it as: <code {role_attr(ROLE.worked_answer)}>'
+                f"{escape(self.worked_text())}</code></p>")
+
+    def read(self, answer: object) -> dict:
+        """How ``answer`` is read, before it is checked (the ``read`` op)."""
+        try:
+            return {"value": parse_answer(answer).value}
+        except InvalidAnswer as err:
+            return {"message": str(err)}
+
+    def split(self, text: object) -> list[list[str]]:
+        """Split a pasted vector or matrix into entries (the ``split`` op); only shaped answers have entries."""
+        raise GradingError("wrong-op", f"Exercise {self.id} takes one value, not a vector or matrix.")
 
     def within(self, value: float, target: float) -> bool:
         return abs(value - target) <= max(self.rel_tol * abs(target), self.abs_tol)
@@ -101,3 +129,4 @@ class Derive(Exercise):
 
 
 EXERCISE = Derive
+ANSWER = Derive

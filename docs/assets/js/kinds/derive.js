@@ -1,12 +1,17 @@
-// Derive: one answer field; the grader reads numbers, expressions and units.
-import { ROLE, findRole } from "../contract.js";
+// Derive: the answer area comes from the exercise's answer kind (a number, a
+// matrix, a formula: docs/assets/js/answer-kinds/<kind>.js); this module submits it.
+import { ATTR } from "../contract.js";
 
-export function init(ctx) {
-  const input = findRole(ctx.el, ROLE.answer);
+export async function init(ctx) {
+  const answerKind = ctx.el.getAttribute(ATTR.answerKind);
+  const { init: initAnswer } = await import(`../answer-kinds/${answerKind}.js`);
+  const field = initAnswer(ctx);
   const saved = ctx.progress.get(ctx.id);
-  if (typeof saved.last === "string") input.value = saved.last;
-  input.form.addEventListener("submit", (event) => {
+  if (saved.last !== undefined) field.restore(saved.last);
+  ctx.el.querySelector("form").addEventListener("submit", async (event) => {
     event.preventDefault();
-    ctx.submit("grade", { answer: input.value }, { saved: { last: input.value } });
+    const answer = field.value();
+    const reply = await ctx.submit("grade", { answer }, { saved: { last: answer } });
+    field.show?.(reply);
   });
 }
