@@ -240,3 +240,38 @@ def test_a_matrix_worth_of_parses_is_fast():
             parse_answer(text)
     per_matrix = (time.perf_counter() - start) / 100
     assert per_matrix < 0.05  # generous bound (well under 5 ms in practice); not a benchmark
+
+
+# --------------------------------------------------------------------------- tolerance (GUIDE §2)
+
+from workbook.tolerance import agrees, clean, is_close_miss, is_sign_slip  # noqa: E402
+
+
+def test_the_absolute_floor_no_longer_accepts_a_wrong_digit_of_a_small_key():
+    assert not agrees(0.1438, 1 / 7)
+    assert agrees(0.1429, 1 / 7) and agrees(0.142857, 1 / 7)
+
+
+def test_counts_are_exact():
+    assert agrees(7500, 7500, exact=True)
+    assert not any(agrees(v, 7500, exact=True) for v in (7493, 7499, 7501, 7507, 7500.5))
+
+
+@pytest.mark.parametrize("noise", [math.cos(math.pi / 2), -1.8369701987210297e-16, 1e-13, 0.0, -0.0])
+def test_keys_of_float_noise_are_zero(noise):
+    assert clean(noise) == 0.0
+    assert agrees(0, noise) and agrees(0.0004, noise) and agrees(-0.0004, noise)
+    assert not agrees(0.01, noise)
+    assert not is_sign_slip(-0.0004, noise) and not is_sign_slip(0.5, noise)
+    assert not is_close_miss(0.5, noise) and not is_close_miss(0.0004, noise)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(min_value=-1e6, max_value=1e6, allow_nan=False).filter(lambda k: abs(k) > 1e-9),
+       st.floats(min_value=-0.5, max_value=0.5))
+def test_tolerance_is_relative_for_every_non_zero_key(key, fraction):
+    value = key * (1 + fraction * 1e-3)  # within 0.05 %: accepted
+    assert agrees(value, key)
+    far = key * (1 + 0.005 + abs(fraction) * 0.01)  # 0.5 % to 1 % off: not accepted, but close
+    assert not agrees(far, key) and is_close_miss(far, key)
+    assert is_sign_slip(-key, key) and not is_close_miss(-key, key)
