@@ -145,9 +145,26 @@ class Grammar:
         if self.variables:
             names = ", ".join(sorted(self.variables, key=lambda v: (v.lower(), v)))
             return InvalidAnswer(
-                f"Unknown name “{name}”. The formula may use {names} (θ1, θ₁ and theta_1 work too), "
+                f"Unknown name “{name}”. The formula may use {names}{self.typed_forms()}, "
                 f"numbers, pi and the functions {_KNOWN_FUNCS}.")
         return InvalidAnswer(f"Unknown name “{name}”. Use numbers, pi, e and functions such as sqrt, sin, cos, atan2.")
+
+
+    def typed_forms(self) -> str:
+        """An example of the Greek and subscript spellings, for messages: " (θ1, θ₁ and theta_1 work too)"."""
+        greek = {v: k for k, v in GREEK.items() if k not in "ϕπ"}
+        for var in sorted(self.variables):
+            m = re.fullmatch(r"([A-Za-z]+?)_?([0-9]*)", var)
+            if m and m.group(1) in greek:
+                g, d = greek[m.group(1)], m.group(2)
+                if d:
+                    sub = d.translate(str.maketrans("0123456789", "₀₁₂₃₄₅₆₇₈₉"))
+                    return f" ({g}{d}, {g}{sub} and {m.group(1)}_{d} work too)"
+                return f" ({g} works too)"
+        return ""
+
+    def ambiguous(self, name: str) -> InvalidAnswer:
+        return InvalidAnswer(f"“{name}” can be read as names in more than one way: put * or spaces between them.")
 
 
 SCALAR = Grammar()
@@ -266,8 +283,10 @@ def _classify(raw: str, space: bool, grammar: Grammar, call: bool) -> list[tuple
         kind = grammar.kind(candidate)
         if kind:
             return [(kind, ALIASES.get(candidate, candidate), space)]
-    pieces = _segment(name.replace("_", ""), grammar)
-    if pieces is None:
+    count, pieces = _segment(name.replace("_", ""), grammar)
+    if count > 1:
+        raise grammar.ambiguous(raw)
+    if count == 0:
         lowered = [v for v in grammar.variables if v.lower() == name.replace("_", "").lower()]
         if len(lowered) == 1:
             return [("var", lowered[0], space)]
@@ -278,11 +297,11 @@ def _classify(raw: str, space: bool, grammar: Grammar, call: bool) -> list[tuple
     return out
 
 
-def _segment(name: str, grammar: Grammar) -> list[tuple[str, str]] | None:
-    """The one way to read ``name`` as known names in a row, or None (none or several)."""
+def _segment(name: str, grammar: Grammar) -> tuple[int, list[tuple[str, str]]]:
+    """How many ways (0, 1, or 2 for "several") ``name`` reads as known names in a row, and one of them."""
     n = len(name)
     if n > 40:
-        return None
+        return 0, []
     memo: dict[tuple[int, bool], tuple[int, list]] = {}
 
     def ways(i: int, after_func: bool) -> tuple[int, list]:
@@ -310,8 +329,7 @@ def _segment(name: str, grammar: Grammar) -> list[tuple[str, str]] | None:
         memo[(i, after_func)] = (min(count, 2), best)
         return memo[(i, after_func)]
 
-    count, pieces = ways(0, False)
-    return pieces if count == 1 else None
+    return ways(0, False)
 
 
 # --------------------------------------------------------------------------- tokens -> tree
@@ -503,7 +521,7 @@ class Parser:
         else:
             raise InvalidAnswer(f"{name} needs an argument in parentheses, for example {example}.")
         after = self.peek()
-        if after[0] in ("num", "var", "const", "func") or self.is_op(after, "(", "^", "**", "[", "{"):
+        if after[0] in ("num", "var", "const") or self.is_op(after, "(", "^", "**", "[", "{"):
             shown = "√" if name == "√" else name
             raise InvalidAnswer(f"Put the argument of {shown} in parentheses, for example {shown}(2x) or {shown}(x)·y.")
         return self.node("neg", arg) if negative else arg
