@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import re
+from typing import Callable
 
 from .answers import InvalidAnswer, normalise, parse_quantity
 from .reference.linalg import inverse
@@ -195,8 +196,15 @@ def parse_entries(grid: Grid, shape: tuple[int, int], expect: str | None = None)
 # --------------------------------------------------------------------------- whole-matrix slips
 
 def _agree(a: Matrix, b: Matrix) -> bool:
-    return len(a) == len(b) and all(
-        len(ra) == len(rb) and all(agrees(x, y) for x, y in zip(ra, rb)) for ra, rb in zip(a, b))
+    if len(a) != len(b):
+        return False
+    for ra, rb in zip(a, b):
+        if len(ra) != len(rb):
+            return False
+        for x, y in zip(ra, rb):
+            if not agrees(x, y):
+                return False
+    return True
 
 
 def wrong_entries(got: Matrix, key: Matrix) -> list[tuple[int, int]]:
@@ -268,37 +276,55 @@ def whole_matrix_slips(got: Matrix, key: Matrix, *, rotation_angle: float | None
     n_cols = len(key[0]) if key else 0
     if len(got) != n_rows or any(len(row) != n_cols for row in got):
         return []
-    candidates: list[tuple[str, str, Matrix | None]] = []
+    candidates: list[tuple[str, str, Callable[[], Matrix | None]]] = []  # built only when tried
     if n_rows == n_cols:
         candidates.append(("transpose", "That is the transpose of the answer: its rows are the answer's columns.",
-                           [list(col) for col in zip(*key)]))
-        try:
-            inv = inverse(key)
-        except (ValueError, ZeroDivisionError):
-            inv = None
-        candidates.append(("inverse", "That is the inverse of the answer: the transformation that undoes it.", inv))
+                           lambda: [list(col) for col in zip(*key)]))
+        candidates.append(("inverse", "That is the inverse of the answer: the transformation that undoes it.",
+                           lambda: _inverse_or_none(key)))
     if rotation_angle is not None:
+        theta = rotation_angle
         candidates.append(("sine-sign", "The sine terms have the wrong sign: that is R(−θ), a turn the other way. "
-                           "In R(θ), −sin θ sits in the first row.", _sine_flipped(key, rotation_angle)))
+                           "In R(θ), −sin θ sits in the first row.", lambda: _sine_flipped(key, theta)))
         candidates.append(("degrees", "Those values come from the angle in degrees read as radians: set the "
                            "calculator to degrees, or multiply by π/180 first.",
-                           _degrees_as_radians(key, rotation_angle)))
+                           lambda: _degrees_as_radians(key, theta)))
     for a in range(n_rows):
         for b in range(a + 1, n_rows):
-            swapped = [row[:] for row in key]
-            swapped[a], swapped[b] = swapped[b], swapped[a]
-            candidates.append(("rows-swapped", f"Rows {a + 1} and {b + 1} are swapped.", swapped))
+            candidates.append(("rows-swapped", f"Rows {a + 1} and {b + 1} are swapped.",
+                               lambda a=a, b=b: _swap_rows(key, a, b)))
     for a in range(n_cols):
         for b in range(a + 1, n_cols):
-            swapped = [row[:] for row in key]
-            for row in swapped:
-                row[a], row[b] = row[b], row[a]
-            candidates.append(("columns-swapped", f"Columns {a + 1} and {b + 1} are swapped.", swapped))
-    candidates.append(("negated", "Every sign is flipped: the whole matrix is negated.", [[-v for v in row] for row in key]))
+            candidates.append(("columns-swapped", f"Columns {a + 1} and {b + 1} are swapped.",
+                               lambda a=a, b=b: _swap_columns(key, a, b)))
+    candidates.append(("negated", "Every sign is flipped: the whole matrix is negated.",
+                       lambda: [[-v for v in row] for row in key]))
     out: list[tuple[str, str]] = []
-    for tag, message, candidate in candidates:
-        if candidate is None or _agree(candidate, key) or not _agree(got, candidate):
+    for tag, message, build in candidates:
+        if any(t == tag for t, _ in out):
             continue
-        if tag not in (t for t, _ in out):
+        candidate = build()
+        # got must match the slip, and the slip must differ from the key (R(180°) is its own transpose)
+        if candidate is not None and _agree(got, candidate) and not _agree(candidate, key):
             out.append((tag, message))
+    return out
+
+
+def _inverse_or_none(key: Matrix) -> Matrix | None:
+    try:
+        return inverse(key)
+    except (ValueError, ZeroDivisionError):
+        return None
+
+
+def _swap_rows(key: Matrix, a: int, b: int) -> Matrix:
+    out = [row[:] for row in key]
+    out[a], out[b] = out[b], out[a]
+    return out
+
+
+def _swap_columns(key: Matrix, a: int, b: int) -> Matrix:
+    out = [row[:] for row in key]
+    for row in out:
+        row[a], row[b] = row[b], row[a]
     return out

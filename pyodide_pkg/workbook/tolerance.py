@@ -57,10 +57,9 @@ def agrees(value: float, key: float, rel: float = REL, exact: bool = False) -> b
     """
     if not (math.isfinite(value) and math.isfinite(key)):
         return False
-    key = clean(key)
     if exact:
-        return clean(value) == key
-    if key == 0.0:
+        return clean(value) == clean(key)
+    if abs(key) < NOISE:  # clean(key) == 0; rounding to 12 digits cannot matter at 1e-3
         return abs(value) <= ZERO_FLOOR
     return abs(value - key) <= rel * abs(key) * (1 + 1e-12)
 
