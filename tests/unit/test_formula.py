@@ -151,3 +151,18 @@ def test_a_formula_evaluates_fast():
     for _ in range(1000):
         f.evaluate(POINT)
     assert (time.perf_counter() - start) / 1000 < 0.005  # a generous bound, not a benchmark
+
+
+FORMULA_PIECES = st.sampled_from(list("0123456789.+-*/^()[], =°θ₁²√π−") + [
+    "cos", "sin ", "sqrt(", "atan2(", "L1", "L₂", "theta", "Δt", "x", "e", "**", "1e999", "sin^2", "vdt", "m"])
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.one_of(st.text(max_size=60), st.lists(FORMULA_PIECES, max_size=30).map("".join)))
+def test_any_text_gives_a_formula_or_a_message(text):
+    try:
+        f = parse_formula(text, ARM + ("dt", "x"))
+    except InvalidAnswer as err:
+        assert str(err)
+    else:
+        assert isinstance(f.latex, str) and f.names <= set(ARM + ("dt", "x"))

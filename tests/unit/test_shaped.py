@@ -144,3 +144,20 @@ def test_wrong_entries_are_named_by_position():
     got[0][1] = -got[0][1]
     assert wrong_entries(got, key) == [(1, 2)]
     assert wrong_entries([[0.866, -0.5], [0.5, 0.866]], key) == []
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+PASTE_PIECES = st.sampled_from(list("0123456789.+-*/^()[]{},; \n°−") + ["cos(", "sqrt(2)", "array(", "x", "1e999", "dtype=float"])
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.one_of(st.text(max_size=80), st.lists(PASTE_PIECES, max_size=40).map("".join)))
+def test_any_paste_gives_a_matrix_or_a_message(text):
+    try:
+        values = parse_entries(parse_pasted(text, shape=(2, 2)), (2, 2))
+    except InvalidAnswer as err:
+        assert str(err)
+    else:
+        assert len(values) == 2 and all(len(row) == 2 and all(math.isfinite(v) for v in row) for row in values)
