@@ -20,7 +20,7 @@ from __future__ import annotations
 import math
 
 REL = 1e-3
-ZERO_FLOOR = 1e-3  # |value| accepted for a key of zero: what rounds to 0 at 3 decimals, and some
+ZERO_FLOOR = 1e-3  # |value| accepted for a key of zero (a key has no scale there; 4-decimal rounding stays inside)
 CLOSE = 0.02
 NOISE = 1e-12
 
