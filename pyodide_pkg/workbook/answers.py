@@ -451,7 +451,7 @@ class Parser:
         kind, value = tok[0], tok[1]
         if kind == "num":
             if math.isinf(value):
-                raise InvalidAnswer("That is not a finite number: it is too large.")
+                raise InvalidAnswer("That is not a finite number.")
             return self.node("num", value)
         if kind in ("const", "var"):
             return self.node(kind, value)
