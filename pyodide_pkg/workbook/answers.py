@@ -29,7 +29,9 @@ How units bind (so that each reading is the one people mean):
   bare number (radians). sind, cosd, tand read a bare number as degrees.
 - A function may be written without parentheses when its argument is one
   number, name or number-with-unit: ``cos 45°``, ``√2/2``. Anything longer
-  (``cos 2x``, ``sin x^2``) must use parentheses; the message says so.
+  (``cos 2x``, ``sin x^2``) must use parentheses, and so must a division
+  right after the argument of any function but √ (``cos pi/3`` could mean
+  either); the message says so.
 
 >>> parse_answer("sqrt(2)/2").value
 0.7071067811865476
@@ -525,6 +527,9 @@ class Parser:
         else:
             raise InvalidAnswer(f"{name} needs an argument in parentheses, for example {example}.")
         after = self.peek()
+        if name not in ("√", "sqrt", "abs") and self.is_op(after, "/"):
+            # cos pi/3: cos(π/3) or cos(π)/3? Both are common; ask instead of guessing.
+            raise InvalidAnswer(f"Put the argument of {name} in parentheses: {name}(pi/3) or {name}(pi)/3.")
         if after[0] in ("num", "var", "const") or self.is_op(after, "(", "^", "**", "[", "{"):
             shown = "√" if name == "√" else name
             raise InvalidAnswer(f"Put the argument of {shown} in parentheses, for example {shown}(2x) or {shown}(x)·y.")

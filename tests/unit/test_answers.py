@@ -127,7 +127,7 @@ def test_values_carry_their_dimension_and_si_value(text, si, dimension):
 @pytest.mark.parametrize("text,value", [
     ("cos 45°", math.sqrt(2) / 2), ("sin 30° + 1", 1.5), ("2 cos 60°", 1.0), ("-cos 60°", -0.5), ("cos -60°", 0.5),
     ("sin(pi/6)", 0.5), ("sin(0.5235987755982988)", 0.5), ("sin(30°)", 0.5), ("sin(π/6 rad)", 0.5),
-    ("tan 45°", 1.0), ("sind(30)", 0.5), ("sin²(30°) + cos²(30°)", 1.0), ("1 - 2sin²(30°)", 0.5),
+    ("tan 45°", 1.0), ("sind(30)", 0.5), ("√3/2", math.sqrt(3) / 2), ("sin 60° * 2", math.sqrt(3)), ("sin²(30°) + cos²(30°)", 1.0), ("1 - 2sin²(30°)", 0.5),
 ])
 def test_trig_of_angles_and_bare_numbers(text, value):
     assert math.isclose(parse_answer(text).value, value, rel_tol=1e-12)
@@ -151,7 +151,7 @@ def test_every_degree_like_sign(sign):
     ("2,5", "write 2.5, not 2,5"), ("0,25", "write 0.25"),
     ("45 + 45°", "every term its unit"), ("1 m + 20", "every term its unit"), ("2 m + 3 s", "a length and a time"),
     ("sin(2 m)", "needs an angle"), ("exp(2 s)", "plain number"), ("°", "before the unit"), ("m", "before the unit"),
-    ("cos 2x", "Unknown name"), ("cos 2 pi", "parentheses"), ("sin 30 45", "parentheses"), ("x = ", "after “=”"),
+    ("cos 2x", "Unknown name"), ("cos 2 pi", "parentheses"), ("cos pi/3", "cos(pi/3) or cos(pi)/3"), ("sin 30 45", "parentheses"), ("x = ", "after “=”"),
     ("a = b = 2", "Type just the value"), ("2 ^ (1 m)", "exponent cannot have a unit"), ("1 M", "Unknown name"),
 ])
 def test_unit_and_comma_mistakes_say_what_to_do(text, fragment):
