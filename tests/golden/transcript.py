@@ -62,6 +62,13 @@ def derive(ex) -> dict:
         tries["off by 0.01"] = "0.01"
     if ex.angle == "deg":
         tries["in radians"] = repr(key * 3.141592653589793 / 180)
+        tries["in radians, with the unit"] = f"{key * 3.141592653589793 / 180!r} rad"
+        tries["as a sum of degrees"] = f"{key / 2!r}° + {key / 2!r}°"
+        tries["plus a turn"] = f"{key + 360!r}°"
+    if ex.unit in ("m", "m/s"):
+        tries["with its unit"] = f"{fmt(key)} {ex.unit}"
+        tries["in centimetres"] = f"{key * 100!r} cm" + ("/s" if ex.unit == "m/s" else "")
+    tries["with a unit of the wrong kind"] = f"{fmt(key)} s"
     for i, slip in enumerate(ex.slips, start=1):
         tries[f"slip {i}"] = repr(slip.value)
     for text in INVALID:

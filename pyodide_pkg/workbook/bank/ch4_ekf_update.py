@@ -28,6 +28,7 @@ EXERCISES = (
         label="φ (degrees)",
         unit="°",
         angle="deg",
+        periodic=True,  # a bearing: 413.13° points the same way
         slips=(
             Slip(math.degrees(math.atan2(3, 4)),
                  "The arguments are swapped. atan2 takes (dy, dx): atan2(4, 3), measured from the x-axis."),

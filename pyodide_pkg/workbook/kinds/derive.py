@@ -6,12 +6,13 @@ import math
 from dataclasses import dataclass
 from typing import ClassVar
 
-from ..answers import InvalidAnswer, parse_answer
+from ..answers import InvalidAnswer, parse_answer, parse_quantity
 from ..contract import ATTR, TAG
+from ..tolerance import agrees, clean, is_close_miss, is_sign_slip
 from ..verdict import GradingError, Verdict
 from .base import ROLE, Exercise, Page, check_button, escape, form, role_attr
 
-CLOSE_FRACTION = 0.02
+UNITS = {"m": "m", "m/s": "m/s", "s": "s", "°": "deg", "rad": "rad"}  # the unit asked -> parse_quantity's expect
 
 
 def fmt(x: float, digits: int = 0) -> str:
@@ -38,10 +39,13 @@ class Slip:
 
 @dataclass(frozen=True)
 class Derive(Exercise):
-    """Type a number or an expression.
+    """Type a number or an expression (GUIDE §2 is the grading policy).
 
     ``angle`` says the answer is an angle in ``"deg"`` or ``"rad"``, so that a
-    value in the other unit can be recognised and named.
+    value in the other unit can be recognised and named; ``unit`` is the unit the
+    answer is asked in (``m``, ``m/s``, ``°``, or a word such as ``variables``).
+    A key of type ``int`` (a count) must be matched exactly; ``periodic`` accepts
+    an angle give or take whole turns.
     """
 
     key: float = 0.0
@@ -49,7 +53,7 @@ class Derive(Exercise):
     unit: str = ""
     angle: str | None = None
     rel_tol: float = 1e-3
-    abs_tol: float = 1e-3
+    periodic: bool = False
     slips: tuple[Slip, ...] = ()
     kind: ClassVar[str] = "derive"
     answer_kind: ClassVar[str] = "number"
@@ -58,9 +62,55 @@ class Derive(Exercise):
     def attributes(self) -> dict[str, str]:
         return {ATTR.answerKind: self.answer_kind}
 
+    @property
+    def expect(self) -> str | None:
+        """The unit ``parse_quantity`` converts to (None: a plain number)."""
+        return self.angle or UNITS.get(self.unit)
+
+    @property
+    def exact(self) -> bool:
+        return isinstance(self.key, int)
+
+    def agrees(self, value: float, target: float) -> bool:
+        target = clean(target)
+        if self.periodic and self.angle:
+            turn = 360.0 if self.angle == "deg" else math.tau
+            value = target + math.remainder(value - target, turn)
+        return agrees(value, target, rel=self.rel_tol, exact=self.exact)
+
+    def check(self, answer: object) -> Verdict:
+        try:
+            bare = parse_answer(answer).dimension is None
+            value = parse_quantity(answer, self.expect)
+        except InvalidAnswer as err:
+            return Verdict("invalid", str(err))
+        if self.agrees(value, self.key):
+            unit = f" {self.unit}" if self.unit and self.angle is None else ""
+            return Verdict("correct", f"Correct: {self.worked_text()}{unit}.")
+        return self._diagnose(value, bare)
+
+    def _diagnose(self, value: float, bare: bool) -> Verdict:
+        key = clean(self.key)
+        for slip in self.slips:
+            if self.agrees(value, slip.value):
+                return Verdict("incorrect", slip.message, tag=TAG.slip)
+        if bare and self.angle == "deg" and self.agrees(math.degrees(value), key):
+            return Verdict("incorrect", "That looks like radians. This answer is in degrees: multiply by 180/π, "
+                           "or type the unit, e.g. 0.9273 rad.", tag=TAG.radians)
+        if bare and self.angle == "rad" and self.agrees(math.radians(value), key):
+            return Verdict("incorrect", "That looks like degrees. This answer is in radians: multiply by π/180, "
+                           "or type the unit, e.g. 90°.", tag=TAG.degrees)
+        if is_sign_slip(value, key, rel=self.rel_tol):
+            return Verdict("incorrect", "The size is right but the sign is wrong. Check which way the quantity points.",
+                           tag=TAG.sign)
+        if not self.exact and is_close_miss(value, key, rel=self.rel_tol):
+            return Verdict("incorrect", "Close, but not within tolerance. Carry more digits through the "
+                           "intermediate steps.", tag=TAG.close)
+        return Verdict("incorrect", "Not quite. Try the hint, or work the derivation one line at a time.")
+
     def worked_text(self) -> str:
         """The key as a learner would type it."""
-        return fmt(self.key, digits=4) + ("°" if self.angle == "deg" else "")
+        return fmt(clean(self.key), digits=4) + ("°" if self.angle == "deg" else "")
 
     def worked_html(self) -> str:
         """The last line of the derivation: the answer, typed out (see CONTRACT.md)."""
@@ -70,51 +120,13 @@ class Derive(Exercise):
     def read(self, answer: object) -> dict:
         """How ``answer`` is read, before it is checked (the ``read`` op)."""
         try:
-            return {"value": parse_answer(answer).value}
+            return {"value": parse_quantity(answer, self.expect)}
         except InvalidAnswer as err:
             return {"message": str(err)}
 
     def split(self, text: object) -> list[list[str]]:
         """Split a pasted vector or matrix into entries (the ``split`` op); only shaped answers have entries."""
         raise GradingError("wrong-op", f"Exercise {self.id} takes one value, not a vector or matrix.")
-
-    def within(self, value: float, target: float) -> bool:
-        return abs(value - target) <= max(self.rel_tol * abs(target), self.abs_tol)
-
-    def check(self, answer: object) -> Verdict:
-        try:
-            parsed = parse_answer(answer)
-        except InvalidAnswer as err:
-            return Verdict("invalid", str(err))
-        value, key = parsed.value, self.key
-        if parsed.unit and not self.angle:
-            return Verdict("invalid", "This answer is not an angle: type it without a degree or radian unit.")
-        if self.angle == "deg" and parsed.unit == "rad":
-            value = math.degrees(value)
-        elif self.angle == "rad" and parsed.unit == "deg":
-            value = math.radians(value)
-        if self.within(value, key):
-            return Verdict("correct", f"Correct: {fmt(key)}{self.unit if self.unit == '°' else ''}.")
-        return self._diagnose(value, parsed.unit)
-
-    def _diagnose(self, value: float, unit: str | None) -> Verdict:
-        key = self.key
-        for slip in self.slips:
-            if self.within(value, slip.value):
-                return Verdict("incorrect", slip.message, tag=TAG.slip)
-        if unit is None and self.angle == "deg" and self.within(math.degrees(value), key):
-            return Verdict("incorrect", "That looks like radians. This answer is in degrees: multiply by 180/π, "
-                           "or type the unit, e.g. 0.9273 rad.", tag=TAG.radians)
-        if unit is None and self.angle == "rad" and self.within(math.radians(value), key):
-            return Verdict("incorrect", "That looks like degrees. This answer is in radians: multiply by π/180, "
-                           "or type the unit, e.g. 90°.", tag=TAG.degrees)
-        if key != 0 and self.within(-value, key):
-            return Verdict("incorrect", "The size is right but the sign is wrong. Check which way the quantity points.",
-                           tag=TAG.sign)
-        if abs(value - key) <= CLOSE_FRACTION * max(abs(key), 1e-9) or (key == 0 and abs(value) <= CLOSE_FRACTION):
-            return Verdict("incorrect", "Close, but not within tolerance. Carry more digits through the "
-                           "intermediate steps.", tag=TAG.close)
-        return Verdict("incorrect", "Not quite. Try the hint, or work the derivation one line at a time.")
 
     def widget(self, base: str, page: Page) -> str:
         unit = f'<span class="wb-unit" aria-hidden="true">{escape(self.unit)}</span>' if self.unit else ""
