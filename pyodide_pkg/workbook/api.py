@@ -66,7 +66,7 @@ def _figure(request: dict[str, Any]) -> dict[str, Any]:
 
 
 def _split(request: dict[str, Any]) -> dict[str, Any]:
-    return {"entries": _exercise(request, "derive").split(request.get("text"))}
+    return _exercise(request, "derive").split(request.get("text"))
 
 
 def _read(request: dict[str, Any]) -> dict[str, Any]:

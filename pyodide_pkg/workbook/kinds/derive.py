@@ -124,8 +124,10 @@ class Derive(Exercise):
         except InvalidAnswer as err:
             return {"message": str(err)}
 
-    def split(self, text: object) -> list[list[str]]:
-        """Split a pasted vector or matrix into entries (the ``split`` op); only shaped answers have entries."""
+    def split(self, text: object) -> dict:
+        """A pasted vector or matrix as ``{"entries": rows}`` or ``{"message": why not}`` (the ``split`` op).
+
+        Only shaped answers have entries."""
         raise GradingError("wrong-op", f"Exercise {self.id} takes one value, not a vector or matrix.")
 
     def widget(self, base: str, page: Page) -> str:
