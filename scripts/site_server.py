@@ -27,6 +27,7 @@ from __future__ import annotations
 import functools
 import gzip
 import http.server
+import mimetypes
 import re
 import threading
 import time
@@ -40,6 +41,8 @@ SUBPATH = "/workbook/"
 GZIP_TYPES = ("text/", "application/javascript", "application/json", "application/xml", "image/svg+xml",
               "application/wasm", "application/manifest+json")
 NO_GZIP_SUFFIXES = (".gz", ".whl", ".zip", ".png", ".jpg", ".jpeg", ".woff", ".woff2", ".ico")
+_GZIP_CACHE: dict[tuple[str, int, int], bytes] = {}  # (path, mtime, size) -> gzip body, for every server
+_GZIP_LOCK = threading.Lock()
 CHUNK = 16 * 1024  # bytes per write on an emulated link: connections interleave at this grain
 
 
@@ -195,14 +198,9 @@ class _Handler(http.server.SimpleHTTPRequestHandler):
             path = Path(self.translate_path(self.path))
             if path.is_dir() and urlsplit(self.path).path.endswith("/"):
                 path = path / "index.html"  # what the base class serves for a folder
-            if path.is_file() and self._gzippable(path):
+            if path.is_file() and gzippable(path):
                 self._gzip_body = self.server_state.gzipped(path)
         return super().send_head()
-
-    def _gzippable(self, path: Path) -> bool:
-        if path.name.endswith(NO_GZIP_SUFFIXES):
-            return False
-        return self.guess_type(str(path)).startswith(GZIP_TYPES)
 
     def send_header(self, keyword, value):
         if self._gzip_body is not None and keyword.lower() == "content-length":
@@ -216,6 +214,14 @@ class _Handler(http.server.SimpleHTTPRequestHandler):
             outputfile.write(self._gzip_body)
         else:
             super().copyfile(source, outputfile)
+
+
+def gzippable(path: Path) -> bool:
+    """Whether GitHub Pages would gzip this file (by its type; archives never)."""
+    if path.name.lower().endswith(NO_GZIP_SUFFIXES):
+        return False
+    ctype = _Handler.extensions_map.get(path.suffix.lower()) or mimetypes.guess_type(path.name)[0] or ""
+    return ctype.startswith(GZIP_TYPES)
 
 
 class SiteServer:
@@ -235,7 +241,6 @@ class SiteServer:
         self.bucket = TokenBucket(link.bandwidth_bps / 8) if link else None
         self.lock = threading.Lock()
         self.log: list[dict] = []
-        self._gzip_cache: dict[Path, tuple[float, bytes]] = {}
         handler = type("Handler", (_Handler,), {"protocol_version": "HTTP/1.1" if keep_alive else "HTTP/1.0"})
         self.httpd = http.server.ThreadingHTTPServer(
             ("127.0.0.1", 0), functools.partial(handler, directory=str(self.site), server_state=self))
@@ -256,16 +261,26 @@ class SiteServer:
         self.httpd.server_close()
 
     def gzipped(self, path: Path) -> bytes:
-        """The file gzipped (level 6, as common web servers), cached per file and mtime."""
-        mtime = path.stat().st_mtime
-        with self.lock:
-            hit = self._gzip_cache.get(path)
-        if hit and hit[0] == mtime:
-            return hit[1]
-        body = gzip.compress(path.read_bytes(), compresslevel=6, mtime=0)
-        with self.lock:
-            self._gzip_cache[path] = (mtime, body)
+        """The file gzipped (level 6, as common web servers), cached in memory per file."""
+        st = path.stat()
+        key = (str(path), st.st_mtime_ns, st.st_size)
+        with _GZIP_LOCK:
+            body = _GZIP_CACHE.get(key)
+        if body is None:
+            body = gzip.compress(path.read_bytes(), compresslevel=6, mtime=0)
+            with _GZIP_LOCK:
+                _GZIP_CACHE[key] = body
         return body
+
+    def precompress(self) -> int:
+        """Gzip every file a link would compress now (not while a page waits); returns how many."""
+        count = 0
+        for folder in self.mounts.values():
+            for path in Path(folder).rglob("*"):
+                if path.is_file() and gzippable(path):
+                    self.gzipped(path)
+                    count += 1
+        return count
 
     # -- the log ----------------------------------------------------------------
     def _start(self, path: str, status: int) -> dict:

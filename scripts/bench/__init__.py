@@ -20,16 +20,30 @@ a timestamped copy, and a table to stdout.
   with stock Pyodide 0.27.7 files and the site's lock file, loads the same
   package and imports ``workbook.api``: the way many Pyodide exercise sites start.
 
-    cd scripts && ../.venv/bin/python -m bench [--runs N] [--checks 50] [--budget 900]
+- NETWORK PROFILES (``--profiles localhost,10mbps,phone``, each NAME or
+  NAME:RUNS): ``localhost`` is the plain server above and runs every phase;
+  ``10mbps`` (10 Mbps, 40 ms RTT) and ``phone`` (1.6 Mbps, 150 ms RTT, CPU x4
+  on the page's main thread) put one emulated link in front of everything the
+  browser fetches (a shared token bucket, a round trip per response, gzip as
+  GitHub Pages applies it) and measure a first visit only. On every profile, a
+  first visit of ours and of the baseline, alternating: time to ready, bytes on
+  the wire before ready and in all (until the service worker has stored the
+  site), files sent twice, largest contentful paint, total blocking time, and
+  the first grade right after ready (first_visit.py).
+
+    cd scripts && ../.venv/bin/python -m bench [--runs N] [--profiles localhost,10mbps:3,phone:2]
+                                               [--checks 50] [--budget 2400]
 
 ``BENCH_RUNS`` in the environment sets the default for ``--runs`` (so does
 ``make bench BENCH_RUNS=7``).
 
-Modules: ``__main__`` (options, order of work), ``phases`` (what each phase
-does in the browser), ``browser`` (browsers, visits, waits), ``pagejs`` and
-``js/`` (the in-page instrumentation), ``report`` (metrics, targets, tables,
-files), ``baseline`` (the bare loadPyodide page), ``environment`` (machine,
-git, snapshot, the native parser worst case).
+Modules: ``__main__`` (options, order of work), ``config`` (pages, timeouts,
+profiles), ``phases`` and ``first_visit`` (what each phase does in the
+browser), ``browser`` (browsers, visits, waits), ``pagejs`` and ``js/`` (the
+in-page instrumentation), ``records`` (server log and page records to numbers),
+``report`` and ``network_report`` (metrics, targets, tables, files),
+``baseline`` (the bare loadPyodide page), ``environment`` (machine, git,
+snapshot, the native parser worst case).
 """
 
 import sys

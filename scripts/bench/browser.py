@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import shutil
 import tempfile
-import time
 
 from find_browser import find_browser
 from workbook.contract import ATTR
@@ -23,7 +22,7 @@ class BenchError(RuntimeError):
 class Browsers:
     """Launches Chromium (a new profile each time), opens pages, and visits the site."""
 
-    def __init__(self, pw, server, budget_s: float):
+    def __init__(self, pw, server, deadline: float, cpu_slowdown: float = 1.0):
         self.pw, self.server = pw, server
         self.site = server.origin + SUBPATH
         self.baseline_url = server.origin + BASELINE_PATH
@@ -33,10 +32,10 @@ class Browsers:
         self.executable = exe
         self.version = ""
         self.service_workers = "allow"  # "block" measures the HTTP cache alone
-        self.cpu_slowdown = 1.0  # > 1: CDP Emulation.setCPUThrottlingRate on every page
+        self.cpu_slowdown = cpu_slowdown  # > 1: CDP Emulation.setCPUThrottlingRate on every page
         self.external: list[str] = []
         self.page_errors: list[str] = []
-        self.deadline = time.monotonic() + budget_s
+        self.deadline = deadline  # time.monotonic(): phases after it are skipped
         self.profiles: list[str] = []  # removed after each phase (their browsers are closed by then)
 
     def remove_profiles(self) -> None:

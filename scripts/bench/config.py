@@ -2,6 +2,10 @@
 
 from __future__ import annotations
 
+from dataclasses import dataclass
+
+from site_server import Link
+
 from . import ROOT
 
 SITE = ROOT / "site"
@@ -39,3 +43,32 @@ BUILD_LOOP = "while True:\n    pass\n"
 READY_TIMEOUT_MS = 90_000
 GRADE_TIMEOUT_MS = 15_000
 NUMPY_TIMEOUT_MS = 120_000
+
+
+@dataclass(frozen=True)
+class Profile:
+    """A network and CPU to measure a first visit on.
+
+    ``link``: None for the plain 127.0.0.1 server (no pacing, no gzip), else the
+    emulated link (scripts/site_server.py). ``cpu_slowdown``: CDP
+    Emulation.setCPUThrottlingRate on every page (Chromium applies it to the
+    page's main thread only: it refuses it for worker targets). ``runs``: the
+    default run count (None: ``--runs``)."""
+
+    name: str
+    link: Link | None
+    cpu_slowdown: float = 1.0
+    runs: int | None = None
+    ready_timeout_ms: int = READY_TIMEOUT_MS
+    precache_timeout_ms: int = 60_000
+
+
+PROFILES = {
+    "localhost": Profile("localhost", None),
+    "10mbps": Profile("10mbps", Link("10mbps", 10e6, 40), runs=3, ready_timeout_ms=180_000,
+                      precache_timeout_ms=120_000),
+    # A 20 MB first visit at 1.6 Mbps takes ~100 s: fewer runs, longer waits.
+    "phone": Profile("phone", Link("phone", 1.6e6, 150), cpu_slowdown=4, runs=2, ready_timeout_ms=400_000,
+                     precache_timeout_ms=400_000),
+}
+DEFAULT_PROFILES = "localhost,10mbps,phone"

@@ -10,21 +10,26 @@ import traceback
 
 from workbook.contract import ATTR, ROLE, STATE
 
-from . import pagejs
+from . import first_visit, pagejs
 from .browser import BenchError, Browsers
 from .config import (BUILD_ID, BUILD_LOOP, BUILD_NUMPY, BUILD_PLAIN, CH0, CH1, CH3, DERIVE_INPUT, GRADE_TIMEOUT_MS,
-                     GRADED, NUMPY_TIMEOUT_MS, READY_TIMEOUT_MS)
+                     GRADED, NUMPY_TIMEOUT_MS, READY_TIMEOUT_MS, Profile)
 from .pagejs import exercise, role
 from .records import percentile
 
 GRADED_STATES = (STATE.correct, STATE.incorrect)
 
 
-class Phases:
-    """The phases of one bench, by name: ``startup``, ``first_feedback``, ``baseline``, ``ready``."""
+LOCAL_PHASES = ("startup", "first_feedback", "baseline", "ready")
 
-    def __init__(self, browsers: Browsers, args):
-        self.b, self.args = browsers, args
+
+class Phases:
+    """The phases of one profile's bench, by name: ``startup``, ``first_feedback``,
+    ``baseline``, ``ready`` (localhost), and ``first_visit`` / ``first_visit_baseline``
+    (every profile; see first_visit.py)."""
+
+    def __init__(self, browsers: Browsers, args, profile: Profile):
+        self.b, self.args, self.profile = browsers, args, profile
         self.runs: list[dict] = []
 
     # -- start-up, then grading on the warm page ----------------------------------
@@ -151,16 +156,26 @@ class Phases:
         finally:
             ctx.close()
 
+    # -- a first visit on this profile's link, ours and the baseline's --------------
+    def first_visit(self, run: dict) -> None:
+        run["first_visit"] = first_visit.ours(self.b, self.profile)
+
+    def first_visit_baseline(self, run: dict) -> None:
+        run["first_visit_baseline"] = first_visit.baseline(self.b, self.profile)
+
     # -- all of them, `runs` times ------------------------------------------------
     def run_all(self, names: list[str], runs: int) -> list[dict]:
-        phases = [(name, getattr(self, name)) for name in ("startup", "first_feedback", "baseline", "ready")
-                  if name in names]
+        """`names` (of LOCAL_PHASES) then the first visits, ours and the baseline's
+        alternating which goes first from run to run."""
+        local = [name for name in LOCAL_PHASES if name in names]
         for i in range(runs):
-            run: dict = {"index": i + 1, "errors": {}}
-            for name, fn in phases:
-                self.run_phase(run, name, fn)
+            pair = ["first_visit", "first_visit_baseline"]
+            order = local + (pair if i % 2 == 0 else pair[::-1])
+            run: dict = {"index": i + 1, "profile": self.profile.name, "errors": {}}
+            for name in order:
+                self.run_phase(run, name, getattr(self, name))
             self.runs.append(run)
-            print(f"  run {i + 1}/{runs} done ({sum(run['phase_seconds'].values()):.0f} s)"
+            print(f"  {self.profile.name} run {i + 1}/{runs} done ({sum(run['phase_seconds'].values()):.0f} s)"
                   + (f", errors in {sorted(run['errors'])}" if run["errors"] else ""), file=sys.stderr)
         return self.runs
 
@@ -175,6 +190,6 @@ class Phases:
         except Exception as err:  # record and go on: one bad run must not lose the others
             detail = str(err) if isinstance(err, BenchError) else traceback.format_exc(limit=3)
             run["errors"][name] = detail
-            print(f"  run {run['index']} {name}: ERROR {detail.splitlines()[0]}", file=sys.stderr)
+            print(f"  {self.profile.name} run {run['index']} {name}: ERROR {detail.splitlines()[0]}", file=sys.stderr)
         run.setdefault("phase_seconds", {})[name] = round(time.monotonic() - t0, 1)
         self.b.remove_profiles()

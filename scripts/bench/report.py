@@ -75,7 +75,8 @@ def evaluate_targets(m: dict, runs: list[dict]) -> list[dict]:
 
     rw, rc = med("ratio_warm"), med("ratio_cold")
     add("warm ready <= 0.5 x baseline warm", rw, 0.5, None if rw is None else rw <= 0.5, "median of per-run ratios")
-    add("cold ready <= 0.8 x baseline cold", rc, 0.8, None if rc is None else rc <= 0.8, "median of per-run ratios")
+    add("localhost: cold ready <= 0.6 x baseline cold", rc, 0.6, None if rc is None else rc <= 0.6,
+        "median of per-run ratios (issue 14; was 0.8)")
     p50s = {k: med(f"grade_{k}_p50_ms") for k in GRADED}
     worst = max((v for v in p50s.values() if v is not None), default=None)
     add("grading round trip p50 <= 5 ms (every kind)", worst, 5.0,
@@ -198,7 +199,14 @@ def print_report(report: dict, out: Path, stamp: str, runs: int) -> None:
     print()
     print(f"Robotics Math Workbook bench, {report['date']}, {machine['nproc']} x {machine['cpu_model']}, "
           f"Chromium {version}, commit {report['git']['commit'][:10]}{' (dirty)' if report['git']['dirty'] else ''}")
-    print(render_table(report["metrics"], runs))
+    if runs:
+        print(render_table(report["metrics"], runs))
+    if report.get("network"):
+        from .network_report import render_network  # (it imports fmt from here)
+
+        print()
+        print("First visit per network profile (medians):")
+        print(render_network(report["network"]))
     print()
     print("Targets:")
     print(render_targets(report["targets"]))
