@@ -19,7 +19,7 @@ _ROLES = (ROLE.answer, ROLE.choice, ROLE.line, ROLE.check, ROLE.run, ROLE.editor
 
 
 def role(name: str) -> str:
-    """A CSS selector for a contract role: ``[data-role="check"]``."""
+    """A CSS selector for a contract role (the attribute and value from the contract)."""
     return f"[{role_attr(name)}]"
 
 
