@@ -149,8 +149,8 @@ def build_report(args, seen: dict, started: dt.datetime, t0: float, machine: dic
         "network": network,
         "external_requests": sorted(set(seen["external"])),
         "page_errors": seen["page_errors"],
-        "errors": {f"{name} run {r['index']} {k}": v for name, prs in seen["profiles"].items()
-                   for r in prs for k, v in r["errors"].items()},
+        "errors": {f"{'' if name == 'localhost' else name + ' '}run {r['index']} {k}": v
+                   for name, prs in seen["profiles"].items() for r in prs for k, v in r["errors"].items()},
         "runs": runs,
         "profile_runs": {name: prs for name, prs in seen["profiles"].items() if name != "localhost"},
     }
