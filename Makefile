@@ -92,7 +92,7 @@ test: site browser
 	$(BIN)/python -m pytest tests/browser
 
 bench: site browser
-	$(BIN)/python scripts/bench.py
+	cd scripts && ../$(BIN)/python -m bench $(BENCH_ARGS)
 
 clean:
 	rm -rf site build docs/assets/vendor docs/assets/dist

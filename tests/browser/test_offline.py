@@ -8,20 +8,18 @@ by terminating when an interrupt is ignored."""
 from __future__ import annotations
 
 import base64
-import functools
 import hashlib
-import http.server
 import json
 import os
 import re
 import shutil
-import threading
 import time
 from pathlib import Path
 from urllib.parse import urlsplit
 
 import pytest
-from conftest import SITE, SUBPATH, _SiteHandler
+from conftest import SITE
+from site_server import SiteServer
 from helpers import role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page, expect
 
@@ -169,10 +167,8 @@ def deploy(tmp_path):
     shutil.copytree(SITE, root, copy_function=os.symlink, ignore=shutil.ignore_patterns("sw.js", "related"))
     shutil.copy(SITE / "sw.js", root / "sw.js")
     shutil.copytree(SITE / "related", root / "related")
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(_SiteHandler, directory=str(root)))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    yield root, f"http://127.0.0.1:{server.server_address[1]}{SUBPATH}"
-    server.shutdown()
+    with SiteServer(root) as server:
+        yield root, server.url
 
 
 def publish_new_version(root: Path) -> None:
