@@ -77,6 +77,8 @@ class MatrixDerive(Derive):
         wrong = [list(p) for p in wrong_entries(got, key)]
         if not wrong:
             return Verdict("correct", "Correct: every entry agrees.")
+        if self.either_sign and not wrong_entries(got, [[-v for v in row] for row in key]):
+            return Verdict("correct", f"Correct: {self.either_sign}")
         data = {"wrong": wrong}
         for slip in self.slips:
             if not wrong_entries(got, [[clean(v) for v in row] for row in slip.value]):

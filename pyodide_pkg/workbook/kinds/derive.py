@@ -45,7 +45,8 @@ class Derive(Exercise):
     value in the other unit can be recognised and named; ``unit`` is the unit the
     answer is asked in (``m``, ``m/s``, ``°``, or a word such as ``variables``).
     A key of type ``int`` (a count) must be matched exactly; ``periodic`` accepts
-    an angle give or take whole turns.
+    an angle give or take whole turns; ``either_sign`` (the reason, in words)
+    accepts the negated key too.
     """
 
     key: float = 0.0
@@ -54,6 +55,7 @@ class Derive(Exercise):
     angle: str | None = None
     rel_tol: float = 1e-3
     periodic: bool = False
+    either_sign: str = ""  # why the negated key is right too (e.g. −q is the same rotation as q)
     slips: tuple[Slip, ...] = ()
     kind: ClassVar[str] = "derive"
     answer_kind: ClassVar[str] = "number"
@@ -87,6 +89,8 @@ class Derive(Exercise):
         if self.agrees(value, self.key):
             unit = f" {self.unit}" if self.unit and self.angle is None else ""
             return Verdict("correct", f"Correct: {self.worked_text()}{unit}.")
+        if self.either_sign and self.agrees(-value, self.key):
+            return Verdict("correct", f"Correct: {self.either_sign}")
         return self._diagnose(value, bare)
 
     def _diagnose(self, value: float, bare: bool) -> Verdict:
