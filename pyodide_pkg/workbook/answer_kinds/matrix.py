@@ -29,7 +29,7 @@ from ..contract import ATTR, ROLE, TAG
 from ..kinds.base import Page, check_button, escape, form, role_attr
 from ..kinds.derive import Derive, fmt
 from ..shaped import InvalidEntries, parse_entries, parse_pasted, whole_matrix_slips, wrong_entries
-from ..tolerance import agrees, clean
+from ..tolerance import clean
 from ..verdict import Verdict
 
 Rows = tuple[tuple[float, ...], ...]
