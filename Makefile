@@ -84,16 +84,15 @@ browser: $(BIN)/.installed
 test-unit: $(BIN)/.installed
 	$(BIN)/python -m pytest tests/unit
 
-# Browser tests get one retry (reported as "rerun" in the summary); unit tests get none.
 test-browser: site browser
-	$(BIN)/python -m pytest tests/browser --reruns 1
+	$(BIN)/python -m pytest tests/browser
 
 test: site browser
 	$(BIN)/python -m pytest tests/unit
-	$(BIN)/python -m pytest tests/browser --reruns 1
+	$(BIN)/python -m pytest tests/browser
 
 bench: site browser
-	$(BIN)/python scripts/bench.py
+	cd scripts && ../$(BIN)/python -m bench $(BENCH_ARGS)
 
 clean:
 	rm -rf site build docs/assets/vendor docs/assets/dist

@@ -1,14 +1,59 @@
-"""Read a learner's typed answer: a number or a small math expression.
+"""Read a learner's typed answer: a number, a small math expression, with units.
 
-The text is normalised (unicode minus, ×, π, √, ^, a trailing ° or rad), parsed
-with :mod:`ast`, and evaluated over a whitelist of nodes and names. Limits on
-length, nesting and exponents are checked before anything is evaluated, and all
+The text is normalised (unicode minus and degree signs, ×, π, √, superscripts,
+subscripts, a leading ``θ2 =``), split into tokens and parsed by a small
+recursive-descent parser into a tree of tuples. Nothing is ever passed to
+``eval``: only the nodes of :mod:`workbook.expr.parsing` exist, limits on
+length, nesting, node count and exponents are checked while parsing, and all
 arithmetic is done in floats, so no input can run for long or use much memory.
+:mod:`workbook.formula` uses the same parser with variables.
+
+This module is the public entry: :func:`parse_answer`, :func:`parse_quantity`,
+:class:`Answer` and :class:`InvalidAnswer`. The steps live in
+:mod:`workbook.expr`: :mod:`~workbook.expr.grammar` (names, functions,
+limits), :mod:`~workbook.expr.tokens` (text to tokens),
+:mod:`~workbook.expr.parsing` (tokens to a tree) and
+:mod:`~workbook.expr.evaluate` (a tree to a value with its dimension).
+
+Units are part of the evaluation: every value carries a dimension (see
+:mod:`workbook.units`), products and quotients combine dimensions, and sums
+need equal ones.
+
+How units bind (so that each reading is the one people mean):
+
+- A unit after a number or a closing parenthesis applies to the whole product
+  or quotient before it: ``pi/2 rad`` is (π/2) rad, ``1/2 m`` is half a metre,
+  ``180°/2`` is 90°. The exception: when the numerator already has a unit, a
+  unit after a divisor belongs to the divisor, so ``10 m / 5 s`` is 2 m/s.
+- ``m/s``, ``km/h``, ``cm/s`` (a unit, a slash, a unit) are one unit.
+- ``s ms min h m cm mm km`` are units only after a number or a parenthesis.
+- A bare number added to a quantity with a unit is refused (invalid, with a
+  message): in ``45 + 45°`` the 45 could be degrees or radians, so the learner
+  is asked to write the unit on every term. Quantities whose units cancel
+  (``2 m / 1 m``) are plain numbers and mix freely.
+- sin, cos and tan take an angle in radians (its SI value) or a bare number,
+  read as radians; their result has no unit. Inverse trig functions return a
+  bare number (radians). sind, cosd, tand read a bare number as degrees.
+- A function may be written without parentheses when its argument is one
+  number, name or number-with-unit: ``cos 45°``, ``√2/2``. Anything longer
+  (``cos 2x``, ``sin x^2``) must use parentheses, and so must a division
+  right after the argument of any function but √ (``cos pi/3`` could mean
+  either); the message says so.
 
 >>> parse_answer("sqrt(2)/2").value
 0.7071067811865476
 >>> parse_answer("53.13°").unit
 'deg'
+>>> a = parse_answer("45°+45°"); round(a.value, 12), a.unit, a.dimension
+(90.0, 'deg', 'angle')
+>>> a = parse_answer("20 cm"); a.si, a.dimension, a.unit
+(0.2, 'length', None)
+>>> parse_quantity("2.1263 m/s", "m/s")
+2.1263
+>>> parse_quantity("2 s", "m")
+Traceback (most recent call last):
+...
+workbook.answers.InvalidAnswer: This answer is a length in metres; 2 s is a time.
 >>> parse_answer("2,5")
 Traceback (most recent call last):
 ...
@@ -17,170 +62,122 @@ workbook.answers.InvalidAnswer: Use a dot for decimals: write 2.5, not 2,5.
 
 from __future__ import annotations
 
-import ast
+import functools
 import math
 import re
-import warnings
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 
-MAX_LENGTH = 200
-MAX_DEPTH = 12
-MAX_NODES = 100
-MAX_EXPONENT = 1000.0
+from . import units as U
+from .expr.evaluate import bare, evaluate
+# Re-exported: the names other modules (formula, shaped, kinds) and tests import from here.
+from .expr.grammar import (ALIASES, CONSTANTS, FUNCTIONS, GREEK, MAX_DEPTH, MAX_EXPONENT,
+                           MAX_LENGTH, MAX_NODES, SCALAR, Grammar, InvalidAnswer)
+from .expr.parsing import Parser, parse_tree
+from .expr.tokens import canonical_name, normalise, tokenize
 
-
-class InvalidAnswer(ValueError):
-    """The input could not be read as one number; the message says why."""
+__all__ = [
+    "ALIASES", "CONSTANTS", "FUNCTIONS", "GREEK", "MAX_DEPTH", "MAX_EXPONENT", "MAX_LENGTH", "MAX_NODES",
+    "SCALAR", "Answer", "Grammar", "InvalidAnswer", "Parser", "canonical_name", "normalise",
+    "parse_answer", "parse_quantity", "parse_tree", "tokenize",
+]
 
 
 @dataclass(frozen=True)
 class Answer:
+    """A parsed answer.
+
+    ``value`` is in the unit written for angles (degrees for ``53.13°``) and in
+    SI for everything else; ``unit`` is ``"deg"``, ``"rad"`` or None (no angle
+    unit); ``dimension`` is None when no unit was written, else ``"angle"``,
+    ``"length"``, ``"time"``, ``"speed"`` (or another name), or ``""`` when the
+    units cancel; ``si`` is the value in rad, m, s, m/s.
+    """
+
     value: float
-    unit: str | None  # "deg", "rad" or None (no unit written)
+    unit: str | None
     text: str
+    dimension: str | None = None
+    si: float | None = field(default=None)
+
+    def __post_init__(self) -> None:
+        if self.si is None:
+            object.__setattr__(self, "si", self.value)
 
 
-_FUNCS = {
-    "sqrt": math.sqrt, "sin": math.sin, "cos": math.cos, "tan": math.tan,
-    "asin": math.asin, "acos": math.acos, "atan": math.atan, "atan2": math.atan2,
-    "exp": math.exp, "ln": math.log, "log": math.log, "log10": math.log10,
-    "abs": abs, "sind": lambda d: math.sin(math.radians(d)),
-    "cosd": lambda d: math.cos(math.radians(d)), "tand": lambda d: math.tan(math.radians(d)),
-}
-_CONSTS = {"pi": math.pi, "e": math.e, "tau": math.tau}
-_ARITY = {"atan2": 2}
-
-_REPLACEMENTS = (
-    ("\u2212", "-"), ("\u2013", "-"), ("\u00d7", "*"), ("\u22c5", "*"), ("\u00b7", "*"),
-    ("\u00f7", "/"), ("\u03c0", "pi"), ("\u03c4", "tau"), ("^", "**"), ("\u00b2", "**2"),
-    ("\u00b3", "**3"), ("\u2044", "/"), ("\u00bd", "(1/2)"), ("\u00bc", "(1/4)"),
-    ("\u00be", "(3/4)"), ("\u00ba", "\u00b0"),
-)
+_PLAIN = re.compile(r"\s*[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?\s*")
 
 
-def _normalise(text: str) -> tuple[str, str | None]:
-    s = text.strip()
-    for old, new in _REPLACEMENTS:
-        s = s.replace(old, new)
+def _parse(text: object) -> tuple[Answer, U.Dim | None]:
+    if isinstance(text, str) and len(text) <= MAX_LENGTH:
+        if _PLAIN.fullmatch(text):  # the common case, a plain number: no parser needed
+            value = float(text)
+            if math.isfinite(value):
+                return Answer(value=value, unit=None, text=text), None
+        return _parse_cached(text)
+    return _parse_text(text)
+
+
+@functools.lru_cache(maxsize=512)
+def _parse_cached(text: str) -> tuple[Answer, U.Dim | None]:
+    return _parse_text(text)  # errors are raised, not cached
+
+
+def _parse_text(text: object) -> tuple[Answer, U.Dim | None]:
+    tree = parse_tree(text)  # type: ignore[arg-type]
+    try:
+        si, dim, angle = evaluate(tree)
+    except (OverflowError, RecursionError):
+        raise InvalidAnswer("That number is too large.") from None
+    if math.isnan(si) or math.isinf(si):
+        raise InvalidAnswer("That is not a finite number.")
     unit = None
-    m = re.search(r"(?:\s*(?:°|deg(?:rees?)?|rad(?:ians?)?))$", s, re.IGNORECASE)
-    if m:
-        unit = "deg" if (m.group(0).strip().startswith("°") or m.group(0).strip().lower().startswith("deg")) else "rad"
-        s = s[: m.start()].strip()
-        if not s:
-            raise InvalidAnswer("Type a number before the unit, for example 53.13°.")
-    # A degree sign inside the expression converts that number: cos(60°).
-    s = re.sub(r"(\d+(?:\.\d*)?|\.\d+)\s*°", r"(\1*pi/180)", s)
-    if "°" in s:
-        raise InvalidAnswer("Put the degree sign right after a number, for example 30°.")
-    # √2, √(2), 2√2  ->  sqrt(2), sqrt(2), 2*sqrt(2)
-    s = re.sub(r"(?<=[\d)])\s*√", "*√", s)
-    s = re.sub(r"√\s*(\d+(?:\.\d*)?|[a-z]+)", r"sqrt(\1)", s)
-    s = s.replace("√", "sqrt")
-    # implicit products the way people write them: 2pi, 2(3), (1)(2), 2sqrt(3)
-    s = re.sub(r"(?<![\w.])(\d+(?:\.\d*)?)\s*(?=pi\b|tau\b|sqrt|sin|cos|tan|\()", r"\1*", s)
-    s = re.sub(r"\)\s*(?=[\d(a-z])", ")*", s)
-    return s, unit
-
-
-def _check_shape(s: str) -> None:
-    depth = 0
-    for ch in s:
-        if ch in "([{":
-            depth += 1
-            if depth > MAX_DEPTH:
-                raise InvalidAnswer("That expression is nested too deeply; simplify it.")
-        elif ch in ")]}":
-            depth -= 1
-    if re.fullmatch(r"[+-]?\d+,\d+", s):
-        a, b = s.split(",")
-        raise InvalidAnswer(f"Use a dot for decimals: write {a}.{b}, not {a},{b}.")
-
-
-def _evaluate(node: ast.AST, budget: list[int]) -> float:
-    budget[0] -= 1
-    if budget[0] < 0:
-        raise InvalidAnswer("That expression is too long; simplify it.")
-    if isinstance(node, ast.Expression):
-        return _evaluate(node.body, budget)
-    if isinstance(node, ast.Constant):
-        if isinstance(node.value, bool) or not isinstance(node.value, (int, float)):
-            raise InvalidAnswer("Only numbers can be used in an answer.")
-        return float(node.value)
-    if isinstance(node, ast.UnaryOp) and isinstance(node.op, (ast.UAdd, ast.USub)):
-        v = _evaluate(node.operand, budget)
-        return v if isinstance(node.op, ast.UAdd) else -v
-    if isinstance(node, ast.BinOp):
-        a = _evaluate(node.left, budget)
-        b = _evaluate(node.right, budget)
-        op = node.op
-        if isinstance(op, ast.Add):
-            return a + b
-        if isinstance(op, ast.Sub):
-            return a - b
-        if isinstance(op, ast.Mult):
-            return a * b
-        if isinstance(op, ast.Div):
-            if b == 0:
-                raise InvalidAnswer("That divides by zero.")
-            return a / b
-        if isinstance(op, ast.Pow):
-            if abs(b) > MAX_EXPONENT:
-                raise InvalidAnswer("That exponent is too large.")
-            if a < 0 and b != int(b):
-                raise InvalidAnswer("A negative number to a fractional power is not a real number.")
-            return math.pow(a, b)
-        raise InvalidAnswer("Use only + − × / and ^ between numbers.")
-    if isinstance(node, ast.Name):
-        if node.id in _CONSTS:
-            return _CONSTS[node.id]
-        if node.id in _FUNCS:
-            raise InvalidAnswer(f"{node.id} needs an argument in parentheses, for example {node.id}(2).")
-        raise InvalidAnswer(f"Unknown name “{node.id}”. Use numbers, pi, e and functions such as sqrt, sin, cos, atan2.")
-    if isinstance(node, ast.Call):
-        if not isinstance(node.func, ast.Name) or node.func.id not in _FUNCS or node.keywords:
-            name = getattr(node.func, "id", "that")
-            raise InvalidAnswer(f"Unknown function “{name}”. Known: sqrt, sin, cos, tan, asin, acos, atan, atan2, exp, ln, log, abs.")
-        want = _ARITY.get(node.func.id, 1)
-        if len(node.args) != want:
-            raise InvalidAnswer(f"{node.func.id} takes {want} argument{'s' if want > 1 else ''}.")
-        args = [_evaluate(a, budget) for a in node.args]
-        try:
-            return float(_FUNCS[node.func.id](*args))
-        except (ValueError, OverflowError):
-            raise InvalidAnswer(f"{node.func.id} is not defined there (check its argument).") from None
-    if isinstance(node, (ast.Tuple, ast.List, ast.Set)):
-        raise InvalidAnswer("One number is expected here, not a list or a vector: type just the entry asked for.")
-    raise InvalidAnswer("That is not a number or an arithmetic expression.")
+    value = si
+    if dim == U.ANGLE:
+        unit = angle or "rad"
+        value = si / U.UNITS["°"][0] if unit == "deg" else si
+    return Answer(value=value, unit=unit, text=text, dimension=U.dimension_name(dim), si=si), dim  # type: ignore[arg-type]
 
 
 def parse_answer(text: object) -> Answer:
-    """Read ``text`` as one real number, or raise :class:`InvalidAnswer`."""
-    if not isinstance(text, str):
-        raise InvalidAnswer("Type your answer as text, for example 0.5 or sqrt(2)/2.")
-    raw = text
-    if not text.strip():
-        raise InvalidAnswer("Type an answer first: a number such as 0.5, or an expression such as sqrt(2)/2.")
-    if len(text) > MAX_LENGTH:
-        raise InvalidAnswer(f"That answer is too long (more than {MAX_LENGTH} characters); one number is expected.")
-    s, unit = _normalise(text)
-    _check_shape(s)
-    if len(s) > 2 * MAX_LENGTH:
-        raise InvalidAnswer("That answer is too long; one number is expected.")
-    try:
-        with warnings.catch_warnings():  # e.g. "invalid escape sequence" in a quoted string
-            warnings.simplefilter("ignore")
-            tree = ast.parse(s, mode="eval")
-    except (SyntaxError, ValueError, MemoryError, RecursionError):
-        if re.fullmatch(r"[-+\d.\s]+", s) and re.search(r"\d\s+[-+]?\d", s):
-            raise InvalidAnswer("One number is expected; there is a space between two numbers.") from None
-        if "," in s:
-            raise InvalidAnswer("One number is expected. Use a dot for decimals (2.5) and no commas.") from None
-        raise InvalidAnswer("That could not be read as a number. Examples that work: 0.5, -1/2, sqrt(2)/2, pi/4, 53.13°.") from None
-    try:
-        value = _evaluate(tree, [MAX_NODES])
-    except (OverflowError, RecursionError):
-        raise InvalidAnswer("That number is too large.") from None
-    if math.isnan(value) or math.isinf(value):
-        raise InvalidAnswer("That is not a finite number.")
-    return Answer(value=value, unit=unit, text=raw)
+    """Read ``text`` as one real number (with a unit, if one is written), or raise :class:`InvalidAnswer`.
+
+    >>> a = parse_answer("θ2 = 90°"); round(a.value, 9), a.unit
+    (90.0, 'deg')
+    >>> parse_answer("-0.2 m").si, parse_answer("10 m / 5 s").dimension
+    (-0.2, 'speed')
+    >>> round(parse_answer("cos 45°").value, 4), parse_answer("cos 45°").dimension
+    (0.7071, '')
+    """
+    return _parse(text)[0]
+
+
+def parse_quantity(text: object, expect: str | None) -> float:
+    """The answer's value in the unit the exercise asks for.
+
+    ``expect`` is one of ``"deg"``, ``"rad"``, ``"m"``, ``"m/s"``, ``"s"``, or None
+    for a plain number. A plain number (no unit, or units that cancel) is
+    returned as typed; a unit of the right kind is converted; a unit of the
+    wrong kind is :class:`InvalidAnswer` naming the unit expected.
+
+    >>> parse_quantity("20 cm", "m"), parse_quantity("0.5", "m")
+    (0.2, 0.5)
+    >>> round(parse_quantity("pi/2 rad", "deg"), 9), round(parse_quantity("90°", "rad"), 9)
+    (90.0, 1.570796327)
+    >>> parse_quantity("3 m", None)
+    Traceback (most recent call last):
+    ...
+    workbook.answers.InvalidAnswer: This answer is a plain number, without a unit; 3 m is a length.
+    """
+    if expect is not None and expect not in U.EXPECT:
+        raise ValueError(f"expect must be one of {sorted(U.EXPECT)} or None, not {expect!r}")
+    answer, dim = _parse(text)
+    if bare(dim):
+        return answer.value if dim is None else answer.si  # type: ignore[return-value]
+    shown = str(text).strip()
+    shown = shown if len(shown) <= 24 else "what you typed"
+    if expect is None:
+        raise InvalidAnswer(f"This answer is a plain number, without a unit; {shown} is {U.describe(dim)}.")
+    factor, want, words = U.EXPECT[expect]
+    if dim != want:
+        raise InvalidAnswer(f"This answer is {words}; {shown} is {U.describe(dim)}.")
+    return answer.si / factor  # type: ignore[operator]

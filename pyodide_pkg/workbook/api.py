@@ -1,9 +1,26 @@
-"""The one entry point the page's worker calls: a JSON request in, JSON out.
+"""The worker's one entry point: a JSON request in, a JSON envelope out.
 
-Requests: ``{"op": "grade", "exercise": "4.2", "answer": ...}`` for Derive, Trace,
-Debug and Design; ``{"op": "run", "exercise": "0.5", "code": "..."}`` for Build;
-``{"op": "figure", "figure": "rotation-2d", "params": {"theta": 30}}`` for a
-figure's next frame (``data`` holds its ``svg``, ``readouts`` and ``flags``).
+Requests (``contract.json`` → ``ops``):
+
+* ``{"op": "grade", "exercise": "4.2", "answer": ...}`` for the kinds whose ``op``
+  is ``grade`` (Derive, Trace, Debug, Design);
+* ``{"op": "run", "exercise": "0.5", "code": "..."}`` for Build (the page starts
+  its time limit when the worker says the code starts);
+* ``{"op": "figure", "figure": "rotation-2d", "params": {"theta": 30}}`` for a
+  figure's next frame (``svg``, ``readouts``, ``flags``);
+* ``{"op": "split", "exercise": "0.7", "text": "[[0, -1], [1, 0]]"}``: a pasted
+  vector or matrix split into the exercise's entries (Derive, shaped answers);
+* ``{"op": "read", "exercise": "6.6", "answer": "L1 cos θ1"}``: how an answer is
+  read (a formula's typeset form), before it is checked (Derive).
+
+Every reply is an envelope: ``{"ok": true, "value": VERDICT_OR_FRAME}`` or
+``{"ok": false, "error": {"kind": ..., "message": ...}}``.
+
+>>> import json
+>>> json.loads(handle('{"op": "grade", "exercise": "0.1", "answer": "3"}'))["value"]["status"]
+'correct'
+>>> json.loads(handle('{"op": "run", "exercise": "0.1", "code": ""}'))["error"]["kind"]
+'wrong-op'
 """
 
 from __future__ import annotations
@@ -12,47 +29,71 @@ import json
 from typing import Any
 
 from . import bank
-from .result import Result
+from .contract import OPS
+from .verdict import GradingError, fail, ok
 
 
-def dispatch(request: dict[str, Any]) -> Result:
-    op = request.get("op")
-    if op == "ping":
-        return Result("correct", "pong")
-    if op == "figure":
-        return _figure(request)
-    if op not in ("grade", "run"):
-        return Result("error", f"Unknown request {op!r}.")
+def _exercise(request: dict[str, Any], kind: str | None = None):
     try:
         ex = bank.get(str(request.get("exercise")))
     except KeyError:
-        return Result("error", f"This page asked about exercise {request.get('exercise')!r}, which the grader does not know.")
-    if op == "run":
-        if ex.kind != "build":
-            return Result("error", f"Exercise {ex.id} has no tests to run.")
-        from .runner import run_build
+        raise GradingError("unknown-exercise", f"This page asked about exercise {request.get('exercise')!r}, "
+                           "which the grader does not know.") from None
+    if kind is not None:
+        if ex.kind != kind:
+            raise GradingError("wrong-op", f"Exercise {ex.id} is a {ex.kind} exercise: {request['op']!r} is for {kind} exercises.")
+    elif ex.op != request["op"]:
+        raise GradingError("wrong-op", f"Exercise {ex.id} is a {ex.kind} exercise: it is graded with "
+                           f"{ex.op!r}, not {request['op']!r}.")
+    return ex
 
-        return run_build(ex, str(request.get("code", "")))
-    from .checkers import check
 
-    return check(ex, request.get("answer"))
+def _grade(request: dict[str, Any]) -> dict[str, Any]:
+    return _exercise(request).check(request.get("answer")).to_dict()
 
 
-def _figure(request: dict[str, Any]) -> Result:
+def _run(request: dict[str, Any]) -> dict[str, Any]:
+    return _exercise(request).check(str(request.get("code", ""))).to_dict()
+
+
+def _figure(request: dict[str, Any]) -> dict[str, Any]:
     from . import figures
 
     try:
-        frame = figures.render(str(request.get("figure")), request.get("params"))
+        return figures.render(str(request.get("figure")), request.get("params"))
     except figures.FigureError as err:
-        return Result("error", str(err), tag="figure")
-    return Result("correct", "", data=frame)
+        raise GradingError("figure", str(err)) from None
+
+
+def _split(request: dict[str, Any]) -> dict[str, Any]:
+    return _exercise(request, "derive").split(request.get("text"))
+
+
+def _read(request: dict[str, Any]) -> dict[str, Any]:
+    return _exercise(request, "derive").read(request.get("answer"))
+
+
+HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read}
+assert set(HANDLERS) == set(OPS), "every op in contract.json has one handler"
+
+
+def dispatch(request: Any) -> dict[str, Any]:
+    """The envelope for one decoded request."""
+    op = request.get("op") if isinstance(request, dict) else None
+    if op not in HANDLERS:
+        return fail("bad-request", f"The grader does not know the request {op!r}.")
+    try:
+        return ok(HANDLERS[op](request))
+    except GradingError as err:
+        return fail(err.kind, err.message)
 
 
 def handle(raw: str) -> str:
-    """Decode a request, dispatch it, and encode the result; never raises."""
+    """Decode a request, dispatch it, and encode the envelope; never raises."""
     try:
-        request = json.loads(raw)
-        result = dispatch(request if isinstance(request, dict) else {})
+        envelope = dispatch(json.loads(raw))
+    except MemoryError:
+        envelope = fail("memory", "The grader ran out of memory. The Python runtime was restarted.")
     except Exception as err:  # the page must always get an answer
-        result = Result("error", f"The grader failed unexpectedly ({type(err).__name__}). Please report it.")
-    return json.dumps(result.to_dict())
+        envelope = fail("internal", f"The grader failed unexpectedly ({type(err).__name__}). Please report it.")
+    return json.dumps(envelope)

@@ -36,7 +36,9 @@ STATUS = _names(DATA["statuses"])
 TAG = _names(DATA["tags"])
 ERROR = _names(DATA["errors"])
 KINDS: tuple[str, ...] = tuple(DATA["kinds"])
+ANSWER_KINDS: tuple[str, ...] = tuple(DATA["answerKinds"])
 STATUSES: tuple[str, ...] = tuple(DATA["statuses"])
+ERRORS: tuple[str, ...] = tuple(DATA["errors"])
 OPS: dict[str, dict[str, Any]] = DATA["ops"]
 
 

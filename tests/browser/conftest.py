@@ -8,11 +8,7 @@ chromium (see scripts/find_browser.py).
 
 from __future__ import annotations
 
-import functools
-import http.server
-import re
 import sys
-import threading
 from pathlib import Path
 from urllib.parse import urlsplit
 
@@ -20,57 +16,18 @@ import pytest
 
 ROOT = Path(__file__).resolve().parents[2]
 SITE = ROOT / "site"
-SUBPATH = "/workbook/"
 sys.path.insert(0, str(ROOT / "scripts"))
 
 from find_browser import find_browser  # noqa: E402
-
-
-class _SiteHandler(http.server.SimpleHTTPRequestHandler):
-    extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",
-                      ".js": "text/javascript", ".mjs": "text/javascript"}
-
-    def translate_path(self, path):
-        parts = urlsplit(path).path
-        if not parts.startswith(SUBPATH):
-            return str(SITE / "__not_found__")
-        return super().translate_path("/" + parts[len(SUBPATH):])
-
-    def do_GET(self):
-        # As if deployed at this address: the sitemap lists absolute URLs built from
-        # site_url, and mkdocs-material's instant navigation follows only those.
-        if urlsplit(self.path).path == SUBPATH + "sitemap.xml":
-            text = (SITE / "sitemap.xml").read_text()
-            home = re.search(r"<loc>(.*?)</loc>", text).group(1)
-            body = text.replace(home, f"http://{self.headers['Host']}{SUBPATH}").encode()
-            self.send_response(200)
-            self.send_header("Content-Type", "application/xml")
-            self.send_header("Content-Length", str(len(body)))
-            self.end_headers()
-            self.wfile.write(body)
-            return
-        super().do_GET()
-
-    def log_message(self, *args):  # keep test output quiet
-        pass
-
-    def handle(self):
-        try:
-            super().handle()
-        except (ConnectionResetError, BrokenPipeError):
-            pass  # the browser went away mid-response (a test ended): not an error
+from site_server import SUBPATH, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 
 
 @pytest.fixture(scope="session")
 def site_url():
     if not (SITE / "index.html").exists():
         pytest.fail("site/ is not built: run `make site` (make test does)")
-    handler = functools.partial(_SiteHandler, directory=str(SITE))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    thread = threading.Thread(target=server.serve_forever, daemon=True)
-    thread.start()
-    yield f"http://127.0.0.1:{server.server_address[1]}{SUBPATH}"
-    server.shutdown()
+    with SiteServer(SITE) as server:
+        yield server.url
 
 
 @pytest.fixture(scope="session")

@@ -1,8 +1,18 @@
-"""Small helpers over the page contract (../shared/GUIDE.md §1)."""
+"""Small helpers over the page contract (CONTRACT.md; names from workbook/contract.json)."""
 
 from __future__ import annotations
 
 from playwright.sync_api import Locator, Page
+
+from workbook.contract import ATTR, ROLE
+from workbook.kinds.derive import fmt
+
+
+def role(name: str, extra: str = "") -> str:
+    """A CSS selector for the contract role ``name`` (raises for a role the contract lacks)."""
+    if name.replace("-", "_") not in vars(ROLE):
+        raise KeyError(f"no role {name!r} in the contract")
+    return f'[{ATTR.role}="{name}"]{extra}'
 
 CHAPTERS = {
     0: "chapters/00-rotations-2d/", 1: "chapters/01-transforms/", 2: "chapters/02-rotations-3d/",
@@ -90,3 +100,30 @@ def run_build(ex: Locator, timeout: float = 60_000) -> str:
 
 def feedback(ex: Locator) -> str:
     return ex.locator('[data-role="feedback"]').inner_text()
+
+
+def fill_matrix(ex: Locator, rows: list[list[str]]) -> None:
+    """Type each entry of a vector or matrix answer."""
+    for i, row in enumerate(rows, start=1):
+        for j, text in enumerate(row, start=1):
+            ex.locator(f'[data-role="entry"][data-row="{i}"][data-col="{j}"]').fill(text)
+
+
+def solve(page: Page, ex) -> str:
+    """Answer exercise ``ex`` (from the bank) correctly in the page; return the state it ends in."""
+    el = exercise(page, ex.id)
+    el.scroll_into_view_if_needed()
+    if ex.kind == "derive":
+        if ex.answer_kind == "matrix":
+            fill_matrix(el, [[fmt(v, digits=4) for v in row] for row in ex.cleaned])
+            return check(el)
+        return answer_derive(el, ex.worked_text())
+    if ex.kind == "trace":
+        return answer_trace(el, ex.answer)
+    if ex.kind == "debug":
+        return answer_debug(el, ex.bug_line)
+    if ex.kind == "design":
+        arrange_design(el, list(ex.solution))
+        return check(el)
+    set_editor(page, el, ex.solution)
+    return run_build(el)

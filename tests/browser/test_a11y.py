@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import pytest
 from conftest import ROOT
-from helpers import CHAPTERS, exercise, open_chapter, settle, wait_runtime
+from helpers import role, CHAPTERS, exercise, open_chapter, settle, wait_runtime
 from playwright.sync_api import Page, expect
 
 from workbook import bank
@@ -30,7 +30,7 @@ def open_ready(page: Page, site_url: str, n: int) -> None:
 def settle_page(page: Page) -> None:
     """Wait until the page's script has drawn everything it draws (editors built now)."""
     page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)")
-    page.evaluate("() => Promise.all([...document.querySelectorAll('[data-role=editor]')].map(h => h.wbOpenEditor()))")
+    page.evaluate(("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor()))"))
     page.wait_for_function("""() => {
       const exercises = [...document.querySelectorAll('[data-exercise-id]')];
       const builds = exercises.filter(e => e.dataset.kind === 'build');
@@ -42,9 +42,9 @@ def settle_page(page: Page) -> None:
 
 
 def open_all_help(page: Page) -> None:
-    for button in page.locator('[data-role="hint"], [data-role="reveal"]').all():
+    for button in page.locator((role("hint") + ', ' + role("reveal"))).all():
         button.click()
-    page.wait_for_function("() => [...document.querySelectorAll('.wb-solution')].every(s => !s.hidden)")
+    page.wait_for_function("sel => [...document.querySelectorAll(sel)].every(s => !s.hidden)", arg=role("solution-panel"))
 
 
 def audit(page: Page) -> list[str]:
@@ -85,15 +85,15 @@ def test_exercise_feedback_states_pass_the_audit(page, site_url):
     """Right, wrong and invalid feedback and a Build test table, in both palettes."""
     open_ready(page, site_url, 0)
     ex = exercise(page, "0.1")
-    ex.locator('[data-role="answer"]').fill("2")
-    ex.locator('[data-role="check"]').click()
+    ex.locator(role("answer")).fill("2")
+    ex.locator(role("check")).click()
     settle(ex)
     trace = exercise(page, "0.3")
-    trace.locator('[data-role="check"]').click()  # nothing chosen: invalid
+    trace.locator(role("check")).click()  # nothing chosen: invalid
     build = exercise(page, "0.5")
-    build.locator('[data-role="run"]').click()
+    build.locator(role("run")).click()
     settle(build, timeout=120_000)
-    assert build.locator('[data-role="test-result"]').count() > 0
+    assert build.locator(role("test-result")).count() > 0
     audit(page)  # loads axe and stops colour transitions before the palette changes
     for scheme in ("light", "dark"):
         page.emulate_media(color_scheme=scheme)
@@ -122,27 +122,27 @@ def tab_to(page: Page, selector: str, limit: int = 60) -> None:
 def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
     open_ready(page, site_url, 1)
     # Derive: type, Enter.
-    exercise(page, "1.1").locator('[data-role="answer"]').focus()
+    exercise(page, "1.1").locator(role("answer")).focus()
     page.keyboard.type("4")
     page.keyboard.press("Enter")
     assert settle(exercise(page, "1.1")) == "correct"
     # Hint and derivation: Tab to the buttons, Enter and Space.
-    tab_to(page, '[data-exercise-id="1.1"] [data-role="hint"]')
+    tab_to(page, ('[data-exercise-id="1.1"] ' + role("hint")))
     page.keyboard.press("Enter")
-    expect(exercise(page, "1.1").locator(".wb-hint")).to_be_visible()
-    tab_to(page, '[data-exercise-id="1.1"] [data-role="reveal"]')
+    expect(exercise(page, "1.1").locator(role("hint-panel"))).to_be_visible()
+    tab_to(page, ('[data-exercise-id="1.1"] ' + role("reveal")))
     page.keyboard.press(" ")
-    expect(exercise(page, "1.1").locator(".wb-solution")).to_be_visible()
-    assert exercise(page, "1.1").locator('[data-role="reveal"]').get_attribute("aria-expanded") == "true"
+    expect(exercise(page, "1.1").locator(role("solution-panel"))).to_be_visible()
+    assert exercise(page, "1.1").locator(role("reveal")).get_attribute("aria-expanded") == "true"
     # Trace: Tab into the options, arrows choose, Tab to Check, Enter.
     spec = bank.get("1.4")
-    tab_to(page, '[data-exercise-id="1.4"] [data-role="choice"]')
+    tab_to(page, ('[data-exercise-id="1.4"] ' + role("choice")))
     keys = [o.key for o in spec.options]
     page.keyboard.press(" ")
     for _ in range(keys.index(spec.answer)):
         page.keyboard.press("ArrowDown")
-    assert exercise(page, "1.4").locator(f'[data-role="choice"][value="{spec.answer}"]').is_checked()
-    tab_to(page, '[data-exercise-id="1.4"] [data-role="check"]')
+    assert exercise(page, "1.4").locator(role("choice") + f'[value="{spec.answer}"]').is_checked()
+    tab_to(page, ('[data-exercise-id="1.4"] ' + role("check")))
     page.keyboard.press("Enter")
     assert settle(exercise(page, "1.4")) == "correct"
     # Design: Tab to the move buttons, Enter moves a step (focus stays on the button).
@@ -150,21 +150,21 @@ def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
     solution = list(bank.get("1.5").solution)
     for target, key in enumerate(solution):
         while True:
-            order = design.locator('[data-role="step"]').evaluate_all("els => els.map(e => e.dataset.step)")
+            order = design.locator(role("step")).evaluate_all("els => els.map(e => e.dataset.step)")
             if order.index(key) == target:
                 break
-            design.locator(f'[data-step="{key}"] [data-role="move-up"]').focus()
+            design.locator((f'[data-step="{key}"] ' + role("move-up"))).focus()
             assert has_visible_focus(page)
             page.keyboard.press("Enter")
-    assert "is now step" in design.locator('[data-role="feedback"]').inner_text()
-    tab_to(page, '[data-exercise-id="1.5"] [data-role="check"]')
+    assert "is now step" in design.locator(role("feedback")).inner_text()
+    tab_to(page, ('[data-exercise-id="1.5"] ' + role("check")))
     page.keyboard.press("Enter")
     assert settle(design) == "correct"
 
     # Debug: arrows move between lines, Space picks, Enter checks.
     open_ready(page, site_url, 3)
     bug = bank.get("3.5").bug_line
-    tab_to(page, '[data-exercise-id="3.5"] [data-role="line"]')
+    tab_to(page, ('[data-exercise-id="3.5"] ' + role("line")))
     for _ in range(bug - 1):
         page.keyboard.press("ArrowDown")
     assert has_visible_focus(page)
@@ -177,13 +177,13 @@ def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
     open_ready(page, site_url, 0)
     build = exercise(page, "0.5")
     # Until the editor is built the code is plain text in the tab order; Enter opens the editor.
-    build.locator(".wb-starter").focus()
+    build.locator(role("code")).focus()
     assert has_visible_focus(page)
     page.keyboard.press("Enter")
     build.locator(".cm-content:focus").wait_for()
     page.keyboard.press("Control+a")
     page.keyboard.press("Delete")
-    build.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbEditor.view.dispatch({changes: {from: 0, insert: code}})",
+    build.evaluate(("(el, code) => el.querySelector('" + role("editor") + "').wbEditor.view.dispatch({changes: {from: 0, insert: code}})"),
                    ROTATE_OK.replace("    ", "\t"))  # typed text is auto-indented; insert as one change
     page.keyboard.press("Control+Enter")
     assert settle(build, timeout=120_000) == "correct"
@@ -208,9 +208,9 @@ def test_progress_controls_work_from_the_keyboard(page, site_url):
     assert page.evaluate("document.activeElement.dataset.wbAction") == "reset"
 
 
-TARGETS = """() => {
+TARGETS = ("""() => {
   const sel = 'button, input:not([type=radio]):not([type=checkbox]):not([type=file]), select, textarea, .wb-choice,' +
-              ' [data-role=line], [role=button], .wb-progress-panel a';
+              ' """ + role("line") + """, [role=button], .wb-progress-panel a';
   const small = [];
   for (const el of document.querySelectorAll('.md-content ' + sel.split(',').join(', .md-content '))) {
     const r = el.getBoundingClientRect();
@@ -219,14 +219,14 @@ TARGETS = """() => {
     if (r.width < 24 || r.height < 24) small.push(`${el.tagName.toLowerCase()}.${el.className} ${Math.round(r.width)}x${Math.round(r.height)}`);
   }
   return small;
-}"""
+}""")
 
-OVERFLOW = """() => {
+OVERFLOW = ("""() => {
   const doc = document.scrollingElement;
   const out = [];
   if (doc.scrollWidth > doc.clientWidth) out.push(`page scrolls sideways: ${doc.scrollWidth} > ${doc.clientWidth}`);
   const width = doc.clientWidth;
-  for (const el of document.querySelectorAll('.wb-exercise, .cm-editor, [data-role=figure], .md-content img, .md-content svg, .wb-progress-panel')) {
+  for (const el of document.querySelectorAll('.wb-exercise, .cm-editor, """ + role("figure") + """, .md-content img, .md-content svg, .wb-progress-panel')) {
     const r = el.getBoundingClientRect();
     if (!r.width) continue;
     // Inside a box that scrolls sideways on purpose (wide formulas, tables, code): fine.
@@ -239,7 +239,7 @@ OVERFLOW = """() => {
     if (!scrolls && (r.left < -0.5 || r.right > width + 0.5)) out.push(`${el.tagName.toLowerCase()}.${el.className}: ${Math.round(r.left)}..${Math.round(r.right)} of ${width}`);
   }
   return out;
-}"""
+}""")
 
 
 def test_every_page_fits_360_px(page, site_url):

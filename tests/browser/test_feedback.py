@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import re
 
-from helpers import answer_derive, editor_code, exercise, feedback, open_chapter, run_build, set_editor
+from helpers import role, answer_derive, editor_code, exercise, feedback, open_chapter, run_build, set_editor
 
 
 def test_derive_messages(page, site_url):
@@ -41,7 +41,7 @@ def test_build_traceback_points_at_the_learners_line(page, site_url):
     ex = exercise(page, "0.5")
     set_editor(page, ex, "import math\n\ndef rotate_2d(x, y, theta):\n    c = math.cos(theta)\n    return (c * x - s * y, 0)\n")
     assert run_build(ex) == "incorrect"
-    text = ex.locator('[data-role="tests"]').inner_text()
+    text = ex.locator(role("tests")).inner_text()
     assert "line 5, in rotate_2d" in text and "NameError" in text
     assert "runner.py" not in text
     marked = ex.locator(".cm-line.wb-error-line")
@@ -56,7 +56,7 @@ def test_build_syntax_error_and_print_output(page, site_url):
     assert re.search(r"syntax error on line 1", feedback(ex), re.I)
     set_editor(page, ex, "def rotate_2d(x, y, theta):\n    print('debug', x)\n    return x, y\n")
     run_build(ex)
-    assert "debug 3" in ex.locator('[data-role="stdout"]').inner_text()
+    assert "debug 3" in ex.locator(role("stdout")).inner_text()
 
 
 def test_build_with_numpy_loads_it_on_demand(page, site_url):

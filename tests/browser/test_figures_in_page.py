@@ -9,7 +9,7 @@ import re
 
 import pytest
 
-from helpers import CHAPTERS, open_chapter, wait_runtime
+from helpers import role, CHAPTERS, open_chapter, wait_runtime
 from workbook.figures import arm_2link, capstone, ekf_update, jacobian
 from workbook.reference.arm import inverse_kinematics_2link, jacobian_det
 from workbook.reference.ekf import ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
@@ -33,11 +33,11 @@ def assert_close(text: str, expected, digits: int = 3) -> None:
 
 
 def figure(page):
-    return page.locator('[data-role="figure"]')
+    return page.locator(role("figure"))
 
 
 def readout(page, key: str) -> str:
-    return figure(page).locator(f'[data-role="readout"][data-readout="{key}"]').inner_text()
+    return figure(page).locator(role("readout") + f'[data-readout="{key}"]').inner_text()
 
 
 def press(page, param: str, key: str, watch: str) -> str:
@@ -46,7 +46,7 @@ def press(page, param: str, key: str, watch: str) -> str:
     figure(page).locator(f'input[type="range"][data-param="{param}"]').focus()
     page.keyboard.press(key)
     page.wait_for_function(
-        "([key, before]) => document.querySelector(`[data-role=readout][data-readout=\"${key}\"]`).textContent !== before",
+        ("([key, before]) => document.querySelector(`" + role("readout") + "[data-readout=\"${key}\"]`).textContent !== before"),
         arg=[watch, before],
     )
     return readout(page, watch)
@@ -63,7 +63,7 @@ def test_every_chapter_page_has_a_figure(page, site_url):
         assert fig.count() == 1
         assert fig.locator("svg").count() == 1
         assert fig.locator('input[type="range"]').count() >= 1
-        assert fig.locator('[data-role="readout"]').count() >= 1
+        assert fig.locator(role("readout")).count() >= 1
 
 
 def test_ch0_rotation(page, site_url):
@@ -71,7 +71,7 @@ def test_ch0_rotation(page, site_url):
     text = press(page, "theta", "ArrowRight", "image")
     assert slider_value(page, "theta") == 31
     assert_close(text, rotate_2d(1.5, 0.5, rad(31)))
-    assert figure(page).locator('output[data-role="control-value"]').first.inner_text() == "31°"
+    assert figure(page).locator(('output' + role("control-value"))).first.inner_text() == "31°"
 
 
 def test_ch0_controls_queue_until_the_runtime_is_ready(page, site_url):

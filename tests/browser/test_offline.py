@@ -8,21 +8,19 @@ by terminating when an interrupt is ignored."""
 from __future__ import annotations
 
 import base64
-import functools
 import hashlib
-import http.server
 import json
 import os
 import re
 import shutil
-import threading
 import time
 from pathlib import Path
 from urllib.parse import urlsplit
 
 import pytest
-from conftest import SITE, SUBPATH, _SiteHandler
-from helpers import answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
+from conftest import SITE
+from site_server import SiteServer
+from helpers import role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page, expect
 
 ROTATE_NUMPY = (
@@ -131,7 +129,7 @@ def test_interrupt_stops_an_endless_loop_on_an_isolated_page(page, site_url):
     assert page.evaluate("workbook.runtime.interrupt instanceof Int32Array")
     build = exercise(page, "0.5")
     set_editor(page, build, LOOP)
-    build.locator('[data-role="run"]').click()
+    build.locator(role("run")).click()
     timed_out(page, build)
     stops = page.evaluate("[workbook.runtime.lastStop, workbook.runtime.interrupts, workbook.runtime.restarts]")
     assert stops == ["interrupt", 1, 0], f"interrupts sent: {page.evaluate('workbook.runtime.interruptsSent')}"
@@ -140,7 +138,7 @@ def test_interrupt_stops_an_endless_loop_on_an_isolated_page(page, site_url):
 
     # Code that swallows KeyboardInterrupt: a second later, the worker is terminated.
     set_editor(page, build, STUBBORN_LOOP)
-    build.locator('[data-role="run"]').click()
+    build.locator(role("run")).click()
     timed_out(page, build)
     assert page.evaluate("[workbook.runtime.lastStop, workbook.runtime.restarts]") == ["terminate", 1]
     wait_runtime(page, timeout=LONG)
@@ -153,7 +151,7 @@ def test_terminate_stops_an_endless_loop_where_not_isolated(page, site_url):
     assert page.evaluate("workbook.runtime.interrupt") is None
     build = exercise(page, "0.5")
     set_editor(page, build, LOOP)
-    build.locator('[data-role="run"]').click()
+    build.locator(role("run")).click()
     timed_out(page, build)
     assert page.evaluate("[workbook.runtime.lastStop, workbook.runtime.restarts, workbook.runtime.interrupts]") == [
         "terminate", 1, 0]
@@ -169,10 +167,8 @@ def deploy(tmp_path):
     shutil.copytree(SITE, root, copy_function=os.symlink, ignore=shutil.ignore_patterns("sw.js", "related"))
     shutil.copy(SITE / "sw.js", root / "sw.js")
     shutil.copytree(SITE / "related", root / "related")
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(_SiteHandler, directory=str(root)))
-    threading.Thread(target=server.serve_forever, daemon=True).start()
-    yield root, f"http://127.0.0.1:{server.server_address[1]}{SUBPATH}"
-    server.shutdown()
+    with SiteServer(root) as server:
+        yield root, server.url
 
 
 def publish_new_version(root: Path) -> None:

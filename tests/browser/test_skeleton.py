@@ -7,7 +7,7 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from helpers import (answer_debug, answer_derive, answer_trace, arrange_design, check, editor_code, exercise, feedback,
+from helpers import (role, answer_debug, answer_derive, answer_trace, arrange_design, check, editor_code, exercise, feedback,
                      open_chapter, run_build, set_editor, settle, wait_runtime)
 
 from workbook import bank
@@ -20,7 +20,7 @@ def test_html_contract_before_python_is_ready(page, site_url):
     page.goto(site_url + "chapters/00-rotations-2d/")
     # Rendered at build time: visible before the runtime is ready.
     assert page.locator("[data-exercise-id]").count() == 6
-    assert page.locator('[data-exercise-id="0.3"] [data-role="choice"]').count() >= 3
+    assert page.locator(('[data-exercise-id="0.3"] ' + role("choice"))).count() >= 3
     assert exercise(page, "0.1").get_attribute("data-kind") == "derive"
     assert exercise(page, "0.1").get_attribute("data-state") == "unanswered"
     assert page.evaluate("document.documentElement.dataset.workbookRuntime") in ("loading", "ready")
@@ -58,16 +58,16 @@ def test_debug_right_and_wrong_line(page, site_url):
     assert answer_debug(ex, other) == "incorrect"
     assert f"Line {other} is fine" in feedback(ex)
     # One line selected at a time.
-    assert ex.locator('[data-role="line"].is-selected').count() == 1
+    assert ex.locator(role("line") + '.is-selected').count() == 1
     assert answer_debug(ex, spec.bug_line) == "correct"
-    assert ex.locator('[data-role="line"][aria-selected="true"]').count() == 1
+    assert ex.locator(role("line") + '[aria-selected="true"]').count() == 1
 
 
 def test_design_starts_unsolved_and_can_be_ordered(page, site_url):
     open_chapter(page, site_url, 1)
     ex = exercise(page, "1.5")
     spec = bank.get("1.5")
-    shown = ex.locator('[data-role="step"]').evaluate_all("els => els.map(e => e.dataset.step)")
+    shown = ex.locator(role("step")).evaluate_all("els => els.map(e => e.dataset.step)")
     assert tuple(shown) != spec.solution
     assert check(ex) == "incorrect"
     assert "steps are in place" in feedback(ex)
@@ -87,7 +87,7 @@ def test_runtime_starts_from_the_memory_snapshot(page, site_url):
         ex = exercise(page, "0.5")
         set_editor(page, ex, "import random\nprint('draw', random.random())\n" + ROTATE_OK)
         assert run_build(ex) == "correct"
-        draws.append(re.search(r"draw (\S+)", ex.locator('[data-role="stdout"]').inner_text()).group(1))
+        draws.append(re.search(r"draw (\S+)", ex.locator(role("stdout")).inner_text()).group(1))
         page.reload()
         wait_runtime(page)
     assert draws[0] != draws[1]
@@ -113,10 +113,10 @@ def test_editor_is_built_when_the_exercise_comes_into_view(page, site_url):
     ex = exercise(page, "0.5")
     page.wait_for_timeout(1500)  # idle time after start-up: still nothing to build off screen
     assert ex.locator(".cm-editor").count() == 0
-    assert "def rotate_2d" in ex.locator(".wb-starter").inner_text()
-    ex.locator('[data-role="editor"]').scroll_into_view_if_needed()
+    assert "def rotate_2d" in ex.locator(role("code")).inner_text()
+    ex.locator(role("editor")).scroll_into_view_if_needed()
     ex.locator(".cm-editor").wait_for()
-    assert ex.locator(".wb-starter").count() == 0
+    assert ex.locator(role("code")).count() == 0
     assert "def rotate_2d" in editor_code(ex)
 
 
@@ -124,9 +124,9 @@ def test_run_works_before_the_editor_is_built(page, site_url):
     open_chapter(page, site_url, 0)
     ex = exercise(page, "0.5")
     assert ex.locator(".cm-editor").count() == 0
-    ex.evaluate("el => el.querySelector('[data-role=run]').click()")  # no scrolling: the editor is not built yet
+    ex.evaluate(("el => el.querySelector('" + role("run") + "').click()"))  # no scrolling: the editor is not built yet
     assert settle(ex) == "incorrect"  # the starter code, graded
-    assert ex.locator('[data-role="test-result"]').count() >= 1
+    assert ex.locator(role("test-result")).count() >= 1
     assert ex.locator(".cm-editor").count() == 1
 
 
@@ -134,24 +134,24 @@ def test_build_wrong_then_right(page, site_url):
     open_chapter(page, site_url, 0)
     ex = exercise(page, "0.5")
     assert run_build(ex) == "incorrect"  # the starter stub
-    assert ex.locator('[data-role="test-result"][data-passed="false"]').count() >= 1
+    assert ex.locator(role("test-result") + '[data-passed="false"]').count() >= 1
     set_editor(page, ex, ROTATE_OK)
     assert run_build(ex) == "correct"
-    rows = ex.locator('[data-role="test-result"]')
+    rows = ex.locator(role("test-result"))
     assert rows.count() == len(bank.get("0.5").examples) + 1
-    assert ex.locator('[data-role="test-result"][data-passed="false"]').count() == 0
+    assert ex.locator(role("test-result") + '[data-passed="false"]').count() == 0
 
 
 def test_infinite_loop_is_stopped_and_the_page_keeps_grading(page, site_url):
     open_chapter(page, site_url, 0)
     ex = exercise(page, "0.5")
     set_editor(page, ex, "def rotate_2d(x, y, theta):\n    while True:\n        pass\n")
-    ex.locator('[data-role="run"]').click()
+    ex.locator(role("run")).click()
     # While the worker is stuck, the page itself stays responsive.
     assert page.evaluate("1 + 1") == 2
     derive = exercise(page, "0.1")
-    derive.locator('[data-role="answer"]').fill("3")
-    derive.locator('[data-role="check"]').click()  # queued: answered by the new worker
+    derive.locator(role("answer")).fill("3")
+    derive.locator(role("check")).click()  # queued: answered by the new worker
     page.wait_for_function("el => el.dataset.state === 'error'", arg=ex.element_handle(), timeout=60_000)
     assert re.search(r"stopped after 5 s", feedback(ex), re.I)
     page.wait_for_function("el => el.dataset.state === 'correct'", arg=derive.element_handle(), timeout=60_000)
@@ -178,7 +178,7 @@ def test_solved_exercise_stays_solved_after_reload(page, site_url):
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     page.reload()
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
-    assert exercise(page, "0.1").locator('[data-role="answer"]').input_value() == "3"
+    assert exercise(page, "0.1").locator(role("answer")).input_value() == "3"
     wait_runtime(page)
 
 
@@ -186,6 +186,6 @@ def test_opened_from_a_file_explains_how_to_serve(browser):
     page = browser.new_page()
     page.goto((SITE / "chapters" / "00-rotations-2d" / "index.html").as_uri())
     page.wait_for_function("() => document.documentElement.dataset.workbookRuntime === 'failed'")
-    text = exercise(page, "0.1").locator('[data-role="feedback"]').inner_text()
+    text = exercise(page, "0.1").locator(role("feedback")).inner_text()
     assert "python3 -m http.server" in text
     page.close()

@@ -1,26 +1,47 @@
-"""The worker's entry point never raises and always answers in the one result shape."""
+"""The worker's entry point never raises and always answers in the one envelope shape."""
 
 import json
 
-from workbook.api import handle
+from workbook.api import HANDLERS, handle
+from workbook.contract import ERRORS, OPS, STATUSES
 
 
 def call(request):
     out = json.loads(handle(json.dumps(request) if not isinstance(request, str) else request))
-    assert set(out) == {"status", "message", "tag", "data"}
+    if out["ok"]:
+        assert set(out) == {"ok", "value"}
+    else:
+        assert set(out) == {"ok", "error"} and set(out["error"]) == {"kind", "message"}
+        assert out["error"]["kind"] in ERRORS and out["error"]["message"]
     return out
 
 
-def test_grade_and_run():
-    assert call({"op": "grade", "exercise": "0.1", "answer": "3"})["status"] == "correct"
-    assert call({"op": "grade", "exercise": "0.3", "answer": "a"})["status"] == "incorrect"
-    assert call({"op": "run", "exercise": "0.5", "code": "def rotate_2d(x, y, t):\n    return x, y\n"})["status"] == "incorrect"
+def test_every_op_of_the_contract_has_one_handler():
+    assert set(HANDLERS) == set(OPS)
 
 
-def test_bad_requests_get_an_error_result():
-    assert call({"op": "grade", "exercise": "99.1", "answer": "3"})["status"] == "error"
-    assert call({"op": "grade", "exercise": None})["status"] == "error"
-    assert call({"op": "nope"})["status"] == "error"
-    assert call({"op": "run", "exercise": "0.1", "code": ""})["status"] == "error"
-    assert call("not json")["status"] == "error"
-    assert call("[1, 2]")["status"] == "error"
+def test_grade_and_run_answer_with_a_verdict():
+    for request, status in (
+        ({"op": "grade", "exercise": "0.1", "answer": "3"}, "correct"),
+        ({"op": "grade", "exercise": "0.3", "answer": "a"}, "incorrect"),
+        ({"op": "grade", "exercise": "0.1", "answer": ""}, "invalid"),
+        ({"op": "run", "exercise": "0.5", "code": "def rotate_2d(x, y, t):\n    return x, y\n"}, "incorrect"),
+    ):
+        value = call(request)["value"]
+        assert set(value) == {"status", "message", "tag", "data"} and value["status"] in STATUSES
+        assert value["status"] == status
+
+
+def test_bad_requests_get_an_error_envelope():
+    cases = [
+        ({"op": "grade", "exercise": "99.1", "answer": "3"}, "unknown-exercise"),
+        ({"op": "grade", "exercise": None}, "unknown-exercise"),
+        ({"op": "nope"}, "bad-request"),
+        ({"op": "ping"}, "bad-request"),
+        ({"op": "run", "exercise": "0.1", "code": ""}, "wrong-op"),
+        ({"op": "grade", "exercise": "0.5", "answer": "def f(): pass"}, "wrong-op"),  # Build runs only through "run"
+        ("not json", "internal"),
+        ("[1, 2]", "bad-request"),
+    ]
+    for request, kind in cases:
+        assert call(request)["error"]["kind"] == kind, request

@@ -14,9 +14,11 @@ import pytest
 from mkdocs.exceptions import PluginError
 
 from workbook import figures
+from workbook.contract import ATTR, ROLE
 from workbook.api import handle
 from workbook.figures import FigureError
-from workbook.figures.html import figure_html
+from render_figure import figure_html  # docs/hooks (build side)
+from blocks import FigureBlock
 from workbook.reference.arm import forward_kinematics_2link, inverse_kinematics_2link, jacobian_det
 from workbook.reference.ekf import covariance_ellipse, ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
 from workbook.reference.pid import simulate_step_response, step_metrics
@@ -222,16 +224,14 @@ def test_capstone_replays_the_simulation():
 
 
 def api(request):
-    out = json.loads(handle(json.dumps(request)))
-    assert set(out) == {"status", "message", "tag", "data"}
-    return out
+    return json.loads(handle(json.dumps(request)))
 
 
 def test_api_figure_op():
     out = api({"op": "figure", "figure": "rotation-2d", "params": {"theta": 90}})
-    assert out["status"] == "correct"
-    assert set(out["data"]) == {"svg", "readouts", "flags"}
-    assert close(out["data"]["readouts"]["image"], rotate_2d(1.5, 0.5, math.pi / 2))
+    assert out["ok"] is True
+    assert set(out["value"]) == {"svg", "readouts", "flags"}
+    assert close(out["value"]["readouts"]["image"], rotate_2d(1.5, 0.5, math.pi / 2))
 
 
 @pytest.mark.parametrize("request_", [
@@ -247,7 +247,7 @@ def test_api_figure_op():
 ])
 def test_api_figure_errors(request_):
     out = api(request_)
-    assert out["status"] == "error" and out["message"]
+    assert out["ok"] is False and out["error"]["kind"] == "figure" and out["error"]["message"]
 
 
 def test_nan_is_refused():
@@ -260,29 +260,28 @@ def test_static_html_holds_the_first_frame(name):
     fig = figures.get(name)
     html = figure_html(name)
     root = ET.fromstring(html)  # the figure's HTML is well-formed XML too
-    assert root.tag == "figure" and root.get("data-role") == "figure" and root.get("data-figure") == name
+    assert root.tag == "figure" and root.get(ATTR.role) == ROLE.figure and root.get(ATTR.figure) == name
     assert fig.render()["svg"] in html
     ranges = root.findall(".//input[@type='range']")
-    toggles = root.findall(".//button[@data-param]")
+    toggles = root.findall(f".//button[@{ATTR.param}]")
     assert len(ranges) + len(toggles) == len(fig.controls)
     for c, el in zip([c for c in fig.controls if c.kind == "range"], ranges):
-        assert el.get("data-param") == c.name and float(el.get("value")) == c.default
+        assert el.get(ATTR.param) == c.name and float(el.get("value")) == c.default
         assert float(el.get("min")) == c.min and float(el.get("max")) == c.max and float(el.get("step")) == c.step
         label = root.find(f".//label[@for='{el.get('id')}']")
         assert label is not None and label.text
-    readouts = root.findall(".//*[@data-role='readout']")
-    assert [r.get("data-readout") for r in readouts] == [r.key for r in fig.readouts]
+    readouts = root.findall(f".//*[@{ATTR.role}='{ROLE.readout}']")
+    assert [r.get(ATTR.readout) for r in readouts] == [r.key for r in fig.readouts]
     assert root.find("figcaption") is not None
 
 
 def test_hook_places_figures_and_rejects_unknown_names():
-    lines = ["# Title", "", "::: figure rotation-2d", "", "## Exercises"]
-    out = hook._place_figures(lines, "chapters/test.md")
-    assert '<div data-wb-figure-slot="rotation-2d"></div>' in "\n".join(out)
-    assert hook._figure_slots["chapters/test.md"]["rotation-2d"].startswith("<figure")
+    seen: set[str] = set()
+    slot, html = hook._figure(FigureBlock("rotation-2d", 2), "chapters/test.md", seen)
+    assert "figure:rotation-2d" in slot and html.startswith("<figure")
     with pytest.raises(PluginError, match="unknown figure"):
-        hook._place_figures(["::: figure no-such-figure"], "chapters/test.md")
+        hook._figure(FigureBlock("no-such-figure", 0), "chapters/test.md", set())
     with pytest.raises(PluginError, match="twice"):
-        hook._place_figures(["::: figure frames", "::: figure frames"], "chapters/test.md")
+        hook._figure(FigureBlock("rotation-2d", 4), "chapters/test.md", seen)
     with pytest.raises(FigureError):
         figure_html("no-such-figure")

@@ -2,8 +2,14 @@
 
 import numpy as np  # noqa: F401  (available natively; the worker loads it on demand)
 
+import json
+
+import pytest
+
 from workbook import bank
-from workbook.runner import STDOUT_CAP, run_build
+from workbook.api import handle
+from workbook.verdict import GradingError
+from workbook.kinds.build import STDOUT_CAP, run as run_build
 
 EX = bank.get("0.5")
 GOOD = "import math\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c*x - s*y, s*x + c*y)\n"
@@ -75,6 +81,9 @@ def test_hidden_cases_report_the_first_failing_input():
     assert hidden["passed"] is False and hidden["input"].startswith("rotate_2d(")
 
 
-def test_memory_error_is_reported_not_raised():
-    r = run_build(EX, "def rotate_2d(x, y, theta):\n    raise MemoryError\n")
-    assert (r.status, r.tag) == ("error", "memory")
+def test_memory_error_becomes_a_memory_error_envelope():
+    reply = json.loads(handle(json.dumps({"op": "run", "exercise": "0.5",
+                                          "code": "def rotate_2d(x, y, theta):\n    raise MemoryError\n"})))
+    assert reply["ok"] is False and reply["error"]["kind"] == "memory"
+    with pytest.raises(GradingError):
+        run_build(EX, "def rotate_2d(x, y, theta):\n    raise MemoryError\n")

@@ -9,9 +9,11 @@ export const ROLE = names(Object.keys(contract.roles));
 export const STATE = names(contract.states);
 export const STATUS = names(contract.statuses);
 export const TAG = names(Object.keys(contract.tags));
+export const ERROR = names(Object.keys(contract.errors));
 export const RUNTIME = names(contract.runtimeStates);
 export const OFFLINE = names(contract.offlineStates);
 export const KINDS = Object.freeze([...contract.kinds]);
+export const ANSWER_KINDS = Object.freeze([...contract.answerKinds]);
 
 /** `[data-role="NAME"]`, optionally with more attribute tests. */
 export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;

@@ -1,42 +1,65 @@
-// One renderer for every checker's result: state attribute, message, test rows.
+// One renderer for every reply: the exercise's state attribute, its message,
+// and a Build run's test rows. The wording comes from the grader (Python); this
+// module only places it.
 
-const STATE_FOR = { correct: "correct", incorrect: "incorrect", invalid: "invalid", error: "error" };
+import { ATTR, ROLE, STATE, findRole } from "./contract.js";
 
 export function setPending(el) {
-  el.dataset.state = "pending";
+  el.setAttribute(ATTR.state, STATE.pending);
   el.setAttribute("aria-busy", "true");
 }
 
-export function showResult(el, result) {
+/** Show a reply envelope: {ok: true, value: verdict} or {ok: false, error: {kind, message}}. */
+export function showReply(el, reply) {
   el.removeAttribute("aria-busy");
-  el.dataset.state = STATE_FOR[result.status] || "error";
-  if (result.tag) el.dataset.feedback = result.tag;
-  else delete el.dataset.feedback;
-  const box = el.querySelector('[data-role="feedback"]');
-  box.replaceChildren();
-  const lead = result.tag === "timeout" ? "" : { correct: "Correct.", incorrect: "Not yet.", invalid: "", error: "Something went wrong." }[result.status] ?? "";
-  const p = document.createElement("p");
-  const message = result.message || "";
-  if (lead && !message.startsWith(lead.replace(".", ""))) {
-    const strong = document.createElement("strong");
-    strong.textContent = lead + " ";
-    p.append(strong);
-  }
-  p.append(message);
-  box.append(p);
+  const verdict = reply.ok ? reply.value : null;
+  el.setAttribute(ATTR.state, verdict ? verdict.status : STATE.error);
+  const tag = verdict ? verdict.tag : reply.error.kind;
+  if (tag) el.setAttribute(ATTR.tag, tag);
+  else el.removeAttribute(ATTR.tag);
+  showMessage(el, verdict ? verdict.message : reply.error.message);
 }
 
 export function showMessage(el, text) {
-  const box = el.querySelector('[data-role="feedback"]');
   const p = document.createElement("p");
   p.textContent = text;
-  box.replaceChildren(p);
+  findRole(el, ROLE.feedback).replaceChildren(p);
 }
 
-export function renderTests(el, result) {
-  const panel = el.querySelector('[data-role="tests"]');
-  const out = el.querySelector('[data-role="stdout"]');
-  const data = result.data || {};
+function testRow(row) {
+  const tr = document.createElement("tr");
+  tr.setAttribute(ATTR.role, ROLE.testResult);
+  tr.setAttribute(ATTR.passed, String(Boolean(row.passed)));
+  for (const text of [row.input, row.expected, row.actual]) {
+    const code = document.createElement("code");
+    code.textContent = text ?? "";
+    const td = document.createElement("td");
+    td.append(code);
+    tr.append(td);
+  }
+  const result = document.createElement("td");
+  result.textContent = row.passed ? "✓ pass" : "✗ fail";
+  tr.append(result);
+  return tr;
+}
+
+function noteRow(message) {
+  const pre = document.createElement("pre");
+  pre.textContent = message;
+  const td = document.createElement("td");
+  td.colSpan = 4;
+  td.append(pre);
+  const tr = document.createElement("tr");
+  tr.className = "wb-test-note";
+  tr.append(td);
+  return tr;
+}
+
+/** A Build run's rows (and traceback, and printed output) from a reply. */
+export function renderTests(el, reply) {
+  const panel = findRole(el, ROLE.tests);
+  const out = findRole(el, ROLE.stdout);
+  const data = (reply.ok && reply.value.data) || {};
   const rows = data.tests || [];
   panel.replaceChildren();
   panel.hidden = rows.length === 0 && !data.error;
@@ -52,30 +75,8 @@ export function renderTests(el, result) {
     table.innerHTML = "<thead><tr><th scope=col>Test</th><th scope=col>Expected</th><th scope=col>Got</th><th scope=col>Result</th></tr></thead>";
     const body = document.createElement("tbody");
     for (const row of rows) {
-      const tr = document.createElement("tr");
-      tr.dataset.role = "test-result";
-      tr.dataset.passed = String(Boolean(row.passed));
-      const cells = [row.input, row.expected, row.actual, row.passed ? "✓ pass" : "✗ fail"];
-      for (const text of cells) {
-        const td = document.createElement("td");
-        const code = document.createElement("code");
-        code.textContent = text ?? "";
-        td.append(code);
-        tr.append(td);
-      }
-      tr.lastChild.replaceChildren(row.passed ? "✓ pass" : "✗ fail");
-      body.append(tr);
-      if (!row.passed && row.message && row.message !== "values differ") {
-        const note = document.createElement("tr");
-        note.className = "wb-test-note";
-        const td = document.createElement("td");
-        td.colSpan = 4;
-        const pre = document.createElement("pre");
-        pre.textContent = row.message;
-        td.append(pre);
-        note.append(td);
-        body.append(note);
-      }
+      body.append(testRow(row));
+      if (!row.passed && row.message) body.append(noteRow(row.message));
     }
     table.append(body);
     panel.append(table);

@@ -1,9 +1,11 @@
-// Interactive figures (data-role="figure"). The page computes nothing: it sends
+// Interactive figures (role "figure" in the contract). The page computes nothing: it sends
 // the control values to the worker ({op: "figure"}) and swaps in the SVG,
 // readouts and flags that come back. At most one request per figure is in
 // flight; changes made meanwhile are sent, latest values only, when it returns.
 // Before the runtime is ready the static first frame stays on screen and the
 // request waits in the runtime's queue.
+
+import { ATTR, ROLE, byRole, findRole, findRoles } from "./contract.js";
 
 const LIMIT_MS = 10_000;
 
@@ -11,10 +13,10 @@ class FigureView {
   constructor(el, runtime) {
     this.el = el;
     this.runtime = runtime;
-    this.name = el.dataset.figure;
-    this.canvas = el.querySelector('[data-role="figure-canvas"]');
-    this.status = el.querySelector('[data-role="figure-status"]');
-    this.controls = [...el.querySelectorAll("[data-param]")];
+    this.name = el.getAttribute(ATTR.figure);
+    this.canvas = findRole(el, ROLE.figureCanvas);
+    this.status = findRole(el, ROLE.figureStatus);
+    this.controls = [...el.querySelectorAll(`[${ATTR.param}]`)];
     this.inFlight = false;
     for (const control of this.controls) {
       if (control.type === "range") {
@@ -33,7 +35,7 @@ class FigureView {
   params() {
     const out = {};
     for (const control of this.controls) {
-      out[control.dataset.param] =
+      out[control.getAttribute(ATTR.param)] =
         control.type === "range" ? Number(control.value) : control.getAttribute("aria-pressed") === "true" ? 1 : 0;
     }
     return out;
@@ -47,7 +49,7 @@ class FigureView {
     if (control.type === "range") {
       const text = control.value + (control.dataset.suffix || "");
       control.setAttribute("aria-valuetext", text);
-      const output = control.parentElement.querySelector('[data-role="control-value"]');
+      const output = findRole(control.parentElement, ROLE.controlValue);
       if (output) output.textContent = text;
     }
     if (!this.inFlight) this.send();
@@ -56,30 +58,30 @@ class FigureView {
   async send() {
     const key = this.key();
     this.inFlight = true;
-    this.el.dataset.state = "pending";
-    const result = await this.runtime.request(
+    this.el.setAttribute(ATTR.state, "pending");
+    const reply = await this.runtime.request(
       { op: "figure", figure: this.name, params: JSON.parse(key) },
       { limitMs: LIMIT_MS },
     );
     this.inFlight = false;
-    if (result.status === "correct") {
-      this.apply(result.data);
+    if (reply.ok) {
+      this.apply(reply.value);
       this.status.textContent = "";
-      this.el.dataset.state = "ready";
+      this.el.setAttribute(ATTR.state, "ready");
     } else {
-      this.status.textContent = result.message;
-      this.el.dataset.state = "error";
+      this.status.textContent = reply.error.message;
+      this.el.setAttribute(ATTR.state, "error");
     }
-    if (this.key() !== key && result.tag !== "runtime") this.send();
+    if (this.key() !== key && (reply.ok || reply.error.kind === "figure")) this.send();
   }
 
   apply({ svg, readouts, flags }) {
     this.canvas.innerHTML = svg;
     for (const [name, text] of Object.entries(readouts || {})) {
-      const out = this.el.querySelector(`[data-role="readout"][data-readout="${name}"]`);
+      const out = findRole(this.el, ROLE.readout, `[${ATTR.readout}="${name}"]`);
       if (out) out.textContent = text;
     }
-    this.el.dataset.flags = (flags || []).join(" ");
+    this.el.setAttribute(ATTR.flags, (flags || []).join(" "));
   }
 
   // Dragging a handle (data-drag-x / data-drag-y): the SVG's own transform maps
@@ -112,7 +114,7 @@ class FigureView {
   }
 
   setSlider(param, value) {
-    const input = this.controls.find((c) => c.dataset.param === param && c.type === "range");
+    const input = this.controls.find((c) => c.getAttribute(ATTR.param) === param && c.type === "range");
     if (!input) return;
     const before = input.value;
     input.value = String(value); // the browser clamps to [min, max] and snaps to the step
@@ -122,7 +124,7 @@ class FigureView {
 
 /** Wire up every figure under `root` once (pages arrive again with instant navigation). */
 export function initFigures(root, runtime) {
-  for (const el of root.querySelectorAll('[data-role="figure"][data-figure]')) {
+  for (const el of findRoles(root, ROLE.figure, `[${ATTR.figure}]`)) {
     if (!el.wbFigure) el.wbFigure = new FigureView(el, runtime);
   }
 }

@@ -2,7 +2,8 @@
 // tab, and initialises every exercise on every page, including pages reached by
 // mkdocs-material's instant navigation.
 
-import { initExercise } from "./widgets.js";
+import { ATTR, ERROR, ROLE, RUNTIME, findRole, setRootState } from "./contract.js";
+import { initExercise } from "./exercise.js";
 import { Progress } from "./progress.js";
 import { Runtime } from "./runtime.js";
 import { initFigures } from "./figures.js";
@@ -13,9 +14,11 @@ import { initScrollRegions } from "./a11y.js";
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
 
+const exercises = () => document.querySelectorAll(`[${ATTR.exercise}]`);
+
 function showRuntimeProblem(message) {
-  for (const el of document.querySelectorAll("[data-exercise-id]")) {
-    const box = el.querySelector('[data-role="feedback"]');
+  for (const el of exercises()) {
+    const box = findRole(el, ROLE.feedback);
     if (box && !box.textContent) {
       const p = document.createElement("p");
       p.className = "wb-runtime-problem";
@@ -27,7 +30,7 @@ function showRuntimeProblem(message) {
 
 let runtime = null;
 if (typeof Worker === "undefined") {
-  document.documentElement.dataset.workbookRuntime = "failed";
+  setRootState("runtime", RUNTIME.failed);
 } else {
   const early = window.__workbookEarly || null;
   window.__workbookEarly = null;
@@ -37,14 +40,9 @@ window.workbook = { runtime, progress };
 registerOffline(siteRoot, progress);
 initScrollRegions();
 
-const noWorker = {
-  status: "error",
-  tag: "runtime",
-  message: "This browser cannot run the Python grader (no Web Worker support).",
-  data: {},
-};
+const NO_WORKER = "This browser cannot run the Python grader (no Web Worker support).";
 const shared = {
-  runtime: runtime || { request: async () => noWorker },
+  runtime: runtime || { request: async () => ({ ok: false, error: { kind: ERROR.runtime, message: NO_WORKER } }) },
   progress,
   renderMath,
 };
@@ -79,9 +77,9 @@ async function renderMath(scope) {
 
 function initPage() {
   renderMath(document);
-  for (const el of document.querySelectorAll("[data-exercise-id]")) initExercise(el, shared);
+  for (const el of exercises()) initExercise(el, shared);
   initFigures(document, shared.runtime);
-  if (!runtime) showRuntimeProblem(noWorker.message);
+  if (!runtime) showRuntimeProblem(NO_WORKER);
   else if (runtime.failure) showRuntimeProblem(runtime.failure);
   if (progress.notice) showNotice(progress.notice);
   initProgressPage(progress, siteRoot);
@@ -101,7 +99,7 @@ function showNotice(text) {
 }
 
 document.addEventListener("workbook:runtime", (event) => {
-  if (event.detail === "failed") showRuntimeProblem(runtime.failure);
+  if (event.detail === RUNTIME.failed) showRuntimeProblem(runtime.failure);
 });
 document.addEventListener("workbook:storage-error", (event) => showNotice(event.detail));
 

@@ -147,8 +147,8 @@ function describeMerge({ added, replaced, kept }) {
   return `Imported a file with ${total} exercise${total === 1 ? "" : "s"}: ${parts.join("; ")}.`;
 }
 
-function buildPanel(panel, manifest, progress, siteRoot) {
-  const knownIds = new Set(manifest.chapters.flatMap((c) => c.ids));
+// ---- The progress page's panel: export, import, reset ----------------------------
+function statusLine() {
   const message = el("div", { className: "wb-progress-message", role: "status" });
   message.setAttribute("aria-live", "polite");
   message.dataset.wbProgressMessage = "";
@@ -156,18 +156,48 @@ function buildPanel(panel, manifest, progress, siteRoot) {
     message.dataset.kind = kind;
     message.replaceChildren(el("p", { textContent: text }));
   };
-  const button = (text, action) => {
-    const b = el("button", { type: "button", className: "md-button", textContent: text });
-    b.dataset.wbAction = action;
-    return b;
-  };
-  const exportButton = button("Export progress", "export");
-  const importButton = button("Import progress…", "import");
-  const resetButton = button("Reset all progress…", "reset");
+  return { message, say };
+}
+
+function actionButton(text, action) {
+  const b = el("button", { type: "button", className: "md-button", textContent: text });
+  b.dataset.wbAction = action;
+  return b;
+}
+
+function exportAction(progress, say) {
+  const button = actionButton("Export progress", "export");
+  button.addEventListener("click", () => {
+    const data = progress.exportData();
+    const name = `robotics-math-workbook-progress-${data.exported.slice(0, 10)}.json`;
+    download(name, JSON.stringify(data, null, 1));
+    const n = Object.keys(data.exercises).length;
+    say(`Exported ${n} exercise record${n === 1 ? "" : "s"} to ${name}.`, "ok");
+  });
+  return [button];
+}
+
+function importAction(progress, say, knownIds) {
+  const button = actionButton("Import progress…", "import");
   const file = el("input", { type: "file", accept: "application/json,.json", hidden: true });
   file.dataset.wbAction = "import-file";
   file.setAttribute("aria-label", "Progress file to import");
+  button.addEventListener("click", () => file.click());
+  file.addEventListener("change", async () => {
+    const chosen = file.files?.[0];
+    file.value = "";
+    if (!chosen) return;
+    const result = chosen.size > MAX_IMPORT_BYTES
+      ? { ok: false, reason: `The file is too large (${chosen.size.toLocaleString("en")} bytes); a progress file is much smaller.` }
+      : parseImport(await chosen.text().catch(() => null), knownIds);
+    if (!result.ok) say(`Import refused: ${result.reason} Nothing was changed.`, "error");
+    else say(describeMerge(progress.merge(result.exercises)), "ok");
+  });
+  return [button, file];
+}
 
+function resetAction(progress, say) {
+  const button = actionButton("Reset all progress…", "reset");
   const dialog = el("dialog", { className: "wb-confirm" });
   dialog.setAttribute("aria-labelledby", "wb-confirm-title");
   const form = el("form", { method: "dialog" },
@@ -178,41 +208,24 @@ function buildPanel(panel, manifest, progress, siteRoot) {
       el("button", { value: "reset", className: "md-button md-button--primary", textContent: "Erase everything" })));
   form.querySelector('[value="reset"]').dataset.wbAction = "confirm-reset";
   dialog.append(form);
-
-  exportButton.addEventListener("click", () => {
-    const data = progress.exportData();
-    const name = `robotics-math-workbook-progress-${data.exported.slice(0, 10)}.json`;
-    download(name, JSON.stringify(data, null, 1));
-    const n = Object.keys(data.exercises).length;
-    say(`Exported ${n} exercise record${n === 1 ? "" : "s"} to ${name}.`, "ok");
-  });
-  importButton.addEventListener("click", () => file.click());
-  file.addEventListener("change", async () => {
-    const chosen = file.files?.[0];
-    file.value = "";
-    if (!chosen) return;
-    let result;
-    if (chosen.size > MAX_IMPORT_BYTES) {
-      result = { ok: false, reason: `The file is too large (${chosen.size.toLocaleString("en")} bytes); a progress file is much smaller.` };
-    } else {
-      result = parseImport(await chosen.text().catch(() => null), knownIds);
-    }
-    if (!result.ok) {
-      say(`Import refused: ${result.reason} Nothing was changed.`, "error");
-      return;
-    }
-    say(describeMerge(progress.merge(result.exercises)), "ok");
-  });
-  resetButton.addEventListener("click", () => dialog.showModal());
+  button.addEventListener("click", () => dialog.showModal());
   dialog.addEventListener("close", () => {
     if (dialog.returnValue === "reset") {
       progress.reset();
       say("All progress was erased.", "ok");
     }
     dialog.returnValue = "";
-    resetButton.focus();
+    button.focus();
   });
+  return [button, dialog];
+}
 
+function buildPanel(panel, manifest, progress) {
+  const knownIds = new Set(manifest.chapters.flatMap((c) => c.ids));
+  const { message, say } = statusLine();
+  const [exportButton] = exportAction(progress, say);
+  const [importButton, file] = importAction(progress, say, knownIds);
+  const [resetButton, dialog] = resetAction(progress, say);
   panel.replaceChildren(
     el("div", { className: "wb-progress-table-wrap" }),
     el("div", { className: "wb-progress-actions" }, exportButton, importButton, resetButton, file),
@@ -222,7 +235,7 @@ function buildPanel(panel, manifest, progress, siteRoot) {
 
 function progressPanel(manifest, progress, siteRoot) {
   for (const panel of document.querySelectorAll("[data-wb-progress-panel]")) {
-    if (!panel.dataset.wbBuilt) buildPanel(panel, manifest, progress, siteRoot);
+    if (!panel.dataset.wbBuilt) buildPanel(panel, manifest, progress);
     panel.querySelector(".wb-progress-table-wrap").replaceChildren(table(manifest, progress, siteRoot));
   }
 }

@@ -3,41 +3,35 @@
 // A request waits until the worker is ready, then gets a limit. When a limit
 // fires on a cross-origin isolated page (the service worker adds COOP/COEP), the
 // page writes SIGINT into a buffer it shares with the worker, and Python raises
-// KeyboardInterrupt; if the worker has not answered within a second, or the page
-// is not isolated, the worker is terminated and a fresh one started. Either way
-// the request that ran too long is answered with a "timeout" result, and every
-// other request waits for the worker instead of failing.
+// KeyboardInterrupt; if the worker has not answered within INTERRUPT_GRACE_MS, or
+// the page is not isolated, the worker is terminated and a fresh one started.
+// Either way the request that ran too long is answered with a "timeout" error,
+// and every other request waits for the worker instead of failing.
+//
+// Every request resolves (never rejects) with an envelope: {ok: true, value} or
+// {ok: false, error: {kind, message}} (CONTRACT.md).
 
-const root = document.documentElement;
+import { ERROR, RUNTIME, setRootState } from "./contract.js";
+
 const DEFAULT_LIMIT_MS = 10_000;
 const LOAD_LIMIT_MS = 120_000; // fetching a package (NumPy) before a run starts
 const INTERRUPT_GRACE_MS = 2_000; // after an interrupt, how long to wait before terminating
 const SIGINT = 2;
 
 function setRuntimeState(state) {
-  root.dataset.workbookRuntime = state;
+  setRootState("runtime", state);
   document.dispatchEvent(new CustomEvent("workbook:runtime", { detail: state }));
 }
 
-function timeoutResult(entry, how) {
+const failure = (kind, message) => ({ ok: false, error: { kind, message } });
+
+function timeoutReply(entry, how) {
   const seconds = (entry.limitMs / 1000).toLocaleString();
   const after = how === "interrupt" ? "It was interrupted" : "The Python runtime was restarted";
-  return {
-    status: "error",
-    tag: "timeout",
-    message: `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). ${after}; your code is kept.`,
-    data: { stoppedBy: how },
-  };
+  return failure(ERROR.timeout, `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). ${after}; your code is kept.`);
 }
 
-function crashResult() {
-  return {
-    status: "error",
-    tag: "crash",
-    message: "The Python runtime crashed while running this; it was restarted. Your code is kept.",
-    data: {},
-  };
-}
+const crashReply = () => failure(ERROR.crash, "The Python runtime crashed while running this; it was restarted. Your code is kept.");
 
 export class Runtime {
   constructor(workerURL, early) {
@@ -46,7 +40,6 @@ export class Runtime {
     this.pending = new Map(); // id -> {msg, resolve, limitMs, timer, onProgress}
     this.readyAt = null;
     this.failure = null;
-    this.listeners = new Set();
     this.restarts = 0; // runs stopped by terminating the worker
     this.interrupts = 0; // runs stopped by KeyboardInterrupt
     this.lastStop = null; // "interrupt" | "terminate"
@@ -56,7 +49,7 @@ export class Runtime {
   spawn(early) {
     this.ready = false;
     this.startedAt = early ? early.started : performance.now();
-    setRuntimeState("loading");
+    setRuntimeState(RUNTIME.loading);
     this.worker = early ? early.worker : new Worker(this.workerURL);
     this.worker.onmessage = (event) => this.receive(event.data);
     this.worker.onerror = (event) => {
@@ -67,7 +60,7 @@ export class Runtime {
       }
       // A crash after start-up: answer the request that was running, start afresh.
       const [running] = this.pending.values();
-      if (running) this.restart(running, crashResult());
+      if (running) this.restart(running, crashReply());
     };
     // Shared with the worker: [0] Pyodide's signal slot, [1] the id of the request now running.
     this.interrupt = null;
@@ -82,11 +75,10 @@ export class Runtime {
     if (data.type === "ready") {
       this.ready = true;
       this.readyAt = performance.now();
-      this.lastStartMs = this.readyAt - this.startedAt;
       this.startedFrom = data.from; // "snapshot", or "boot" when the snapshot could not be used
       this.startStages = data.stages;
       if (data.why) console.warn("Python runtime: booted without the snapshot:", data.why);
-      setRuntimeState("ready");
+      setRuntimeState(RUNTIME.ready);
       for (const entry of this.pending.values()) this.send(entry);
       return;
     }
@@ -100,26 +92,27 @@ export class Runtime {
       entry.onProgress?.(data.message);
     } else if (data.type === "started") {
       this.arm(entry, entry.limitMs); // the learner's code starts now
-    } else if (data.type === "result") {
+    } else if (data.type === "reply") {
       clearTimeout(entry.timer);
       this.pending.delete(data.id);
+      const kind = data.reply.ok ? null : data.reply.error.kind;
       if (entry.interrupted) {
         this.interrupts++;
         this.lastStop = "interrupt";
-        entry.resolve(timeoutResult(entry, "interrupt"));
-      } else if (data.result.tag === "memory" || data.result.tag === "runtime") {
+        entry.resolve(timeoutReply(entry, "interrupt"));
+      } else if (kind === ERROR.memory || kind === ERROR.runtime) {
         this.pending.set(data.id, entry);
-        this.restart(entry, data.result); // Python may be left broken: replace it
-      } else entry.resolve(data.result);
+        this.restart(entry, data.reply); // Python may be left broken: replace it
+      } else entry.resolve(data.reply);
     }
   }
 
   fail(message) {
     this.failure = message;
-    setRuntimeState("failed");
+    setRuntimeState(RUNTIME.failed);
     for (const [id, entry] of this.pending) {
       clearTimeout(entry.timer);
-      entry.resolve({ status: "error", tag: "runtime", message, data: {} });
+      entry.resolve(failure(ERROR.runtime, message));
       this.pending.delete(id);
     }
   }
@@ -147,26 +140,24 @@ export class Runtime {
   }
 
   terminate(entry) {
-    this.restart(entry, timeoutResult(entry, "terminate"));
+    this.restart(entry, timeoutReply(entry, "terminate"));
   }
 
-  /** Answer `entry` with `result`, replace the worker; other requests wait for the new one. */
-  restart(entry, result) {
+  /** Answer `entry` with `reply`, replace the worker; other requests wait for the new one. */
+  restart(entry, reply) {
     this.pending.delete(entry.msg.id);
     clearTimeout(entry.timer);
     this.worker.terminate();
     for (const other of this.pending.values()) clearTimeout(other.timer); // re-armed when re-sent
-    entry.resolve(result);
+    entry.resolve(reply);
     this.restarts++;
     this.lastStop = "terminate";
     this.spawn(null); // other pending requests are re-sent once the new worker is ready
   }
 
-  /** Send `request` ({op, id, ...}); resolves with a result, never rejects. */
+  /** Send `request` ({op, ...}); resolves with an envelope, never rejects. */
   request(request, { limitMs = DEFAULT_LIMIT_MS, onProgress } = {}) {
-    if (this.failure) {
-      return Promise.resolve({ status: "error", tag: "runtime", message: this.failure, data: {} });
-    }
+    if (this.failure) return Promise.resolve(failure(ERROR.runtime, this.failure));
     return new Promise((resolve) => {
       const msg = { ...request, id: this.nextId++ };
       const entry = { msg, resolve, limitMs, onProgress, timer: null };

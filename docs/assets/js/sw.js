@@ -76,7 +76,6 @@ self.addEventListener("activate", (event) => {
 
 self.addEventListener("message", (event) => {
   if (event.data?.type === "activate-update") self.skipWaiting();
-  else if (event.data?.type === "version") event.source?.postMessage({ type: "version", version: VERSION });
 });
 
 function isolate(response) {

@@ -2,7 +2,10 @@
 // requests from the page. One request at a time; the page enforces time limits
 // by an interrupt when it is cross-origin isolated (it shares a buffer, see
 // runtime.js), else by terminating this worker.
+// Replies are envelopes (CONTRACT.md): the grader's own, or {ok: false, error}
+// when the runtime itself fails.
 /* global loadPyodide, importScripts */
+import { ERROR } from "./contract.js";
 
 const indexURL = new URL("../vendor/pyodide/", self.location.href).href;
 let handle = null;
@@ -154,6 +157,8 @@ const ready = (async () => {
   throw err;
 });
 
+const failure = (kind, message) => ({ ok: false, error: { kind, message } });
+
 async function serve(msg) {
   await ready;
   if (msg.op === "run" && /\bimport\b/.test(msg.code || "")) {
@@ -162,7 +167,7 @@ async function serve(msg) {
     try {
       await pyodide.loadPackagesFromImports(msg.code);
     } catch (err) {
-      return { status: "error", tag: "package", message: "A package your code imports could not be loaded: " + err.message, data: {} };
+      return failure(ERROR.package, "A package your code imports could not be loaded: " + err.message);
     }
   }
   if (msg.op === "run") self.postMessage({ id: msg.id, type: "started" });
@@ -189,15 +194,15 @@ self.onmessage = (event) => {
   }
   if (!msg || typeof msg.id !== "number") return;
   queue = queue.then(async () => {
-    let result;
+    let reply;
     try {
-      result = await serve(msg);
+      reply = await serve(msg);
     } catch (err) {
       const text = String((err && err.message) || err);
-      result = /MemoryError|out of memory/i.test(text)
-        ? { status: "error", tag: "memory", message: "Your code ran out of memory. The Python runtime was restarted; your code is kept.", data: {} }
-        : { status: "error", tag: "runtime", message: "The Python runtime failed: " + text.split("\n").slice(-2).join(" "), data: {} };
+      reply = /MemoryError|out of memory/i.test(text)
+        ? failure(ERROR.memory, "Your code ran out of memory. The Python runtime was restarted; your code is kept.")
+        : failure(ERROR.runtime, "The Python runtime failed: " + text.split("\n").slice(-2).join(" "));
     }
-    self.postMessage({ id: msg.id, type: "result", result });
+    self.postMessage({ id: msg.id, type: "reply", reply });
   });
 };

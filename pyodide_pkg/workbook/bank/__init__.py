@@ -10,7 +10,7 @@ import importlib
 import pkgutil
 from functools import cache
 
-from ..exercises import Exercise
+from ..kinds.base import Exercise
 
 
 @cache

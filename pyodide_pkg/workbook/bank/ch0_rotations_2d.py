@@ -2,7 +2,9 @@
 
 import math
 
-from ..exercises import Build, Derive, Option, Slip, Trace
+from ..kinds.build import Build
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.rotation2d import compose, det_rot2, rotate_2d
 
 EXERCISES = (

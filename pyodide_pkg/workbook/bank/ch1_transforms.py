@@ -2,7 +2,9 @@
 
 import math
 
-from ..exercises import Derive, Design, Option, Slip, Step, Trace
+from ..kinds.derive import Derive, Slip
+from ..kinds.design import Design, Step
+from ..kinds.trace import Option, Trace
 from ..reference.transform2d import apply, chain, transform2d
 
 _T_WORLD_BASE = transform2d(0, 1, 0)

@@ -2,7 +2,8 @@
 
 import math
 
-from ..exercises import Derive, Option, Slip, Trace
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.linalg import matvec
 from ..reference.rotation3d import quat_from_axis_angle, quat_norm, rz
 
@@ -41,6 +42,7 @@ EXERCISES = (
         id="2.3",
         title="Quaternion for 90° about z",
         key=quat_from_axis_angle((0, 0, 1), math.pi / 2)[0],
+        either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
         label="w",
         slips=(
             Slip(math.cos(math.pi / 2),

@@ -2,7 +2,9 @@
 
 import math
 
-from ..exercises import Debug, Derive, Option, Slip, Trace
+from ..kinds.debug import Debug
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
 
 _P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]

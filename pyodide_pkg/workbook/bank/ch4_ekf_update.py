@@ -2,7 +2,9 @@
 
 import math
 
-from ..exercises import Build, Derive, Option, Slip, Trace
+from ..kinds.build import Build
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.ekf import ekf_update, measurement_jacobian, range_bearing
 
 _POSE = (0, 0, 0)
@@ -26,6 +28,7 @@ EXERCISES = (
         label="φ (degrees)",
         unit="°",
         angle="deg",
+        periodic=True,  # a bearing: 413.13° points the same way
         slips=(
             Slip(math.degrees(math.atan2(3, 4)),
                  "The arguments are swapped. atan2 takes (dy, dx): atan2(4, 3), measured from the x-axis."),

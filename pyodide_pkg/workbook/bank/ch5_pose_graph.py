@@ -1,6 +1,7 @@
 """Chapter 5 · Pose-graph SLAM."""
 
-from ..exercises import Derive, Option, Slip, Trace
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.pose_graph import (
     edge_error_simple,
     gauss_newton_size,

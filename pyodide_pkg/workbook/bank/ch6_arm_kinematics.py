@@ -2,7 +2,9 @@
 
 import math
 
-from ..exercises import Build, Derive, Option, Slip, Trace
+from ..kinds.build import Build
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.arm import (
     cos_elbow,
     forward_kinematics_2link,

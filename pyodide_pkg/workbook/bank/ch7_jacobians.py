@@ -2,7 +2,8 @@
 
 import math
 
-from ..exercises import Debug, Derive, Slip
+from ..kinds.debug import Debug
+from ..kinds.derive import Derive, Slip
 from ..reference.arm import (
     end_effector_velocity,
     jacobian_2link,

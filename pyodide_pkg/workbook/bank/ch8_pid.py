@@ -1,6 +1,8 @@
 """Chapter 8 · PID control."""
 
-from ..exercises import Build, Derive, Option, Slip, Trace
+from ..kinds.build import Build
+from ..kinds.derive import Derive, Slip
+from ..kinds.trace import Option, Trace
 from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step
 
 _GAINS = dict(Kp=1, Ki=0.1, Kd=0.5, dt=1)

@@ -6,7 +6,8 @@ full precision (the page prints them to four decimals, well within tolerance).
 
 import math
 
-from ..exercises import Derive, Design, Slip, Step
+from ..kinds.derive import Derive, Slip
+from ..kinds.design import Design, Step
 from ..reference.ekf import ekf_update, motion_jacobian, motion_model, range_bearing
 from ..reference.pid import p_term
 

@@ -48,7 +48,17 @@ def cos_elbow(L1: float, L2: float, x: float, y: float) -> float:
 
     >>> cos_elbow(1, 1, 1, 1)
     0.0
+
+    A link of length 0 leaves no elbow angle to find:
+
+    >>> cos_elbow(1, 0, 1, 0)
+    Traceback (most recent call last):
+    ...
+    ValueError: L2 must be non-zero: cos θ2 divides by 2·L1·L2 (got L1=1, L2=0)
     """
+    if L1 == 0 or L2 == 0:
+        bad = "L1" if L1 == 0 else "L2"
+        raise ValueError(f"{bad} must be non-zero: cos θ2 divides by 2·L1·L2 (got L1={L1:g}, L2={L2:g})")
     return (x * x + y * y - L1 * L1 - L2 * L2) / (2 * L1 * L2)
 
 

@@ -97,10 +97,16 @@ def measurement_jacobian(state, landmark) -> Matrix:
 
     >>> [[round(h, 4) for h in row] for row in measurement_jacobian((0, 0, 0), (3, 4))]
     [[-0.6, -0.8, 0.0], [0.16, -0.12, -1.0]]
+    >>> measurement_jacobian((3, 4, 0), (3, 4))
+    Traceback (most recent call last):
+    ...
+    ValueError: landmark (3, 4) is at the robot's position: its bearing is undefined
     """
     x, y, _ = state
     dx, dy = landmark[0] - x, landmark[1] - y
     q = dx * dx + dy * dy
+    if q == 0:
+        raise ValueError(f"landmark ({landmark[0]:g}, {landmark[1]:g}) is at the robot's position: its bearing is undefined")
     r = math.sqrt(q)
     return [[-dx / r, -dy / r, 0.0],
             [dy / q, -dx / q, -1.0]]
@@ -120,7 +126,17 @@ def ekf_update(x: float, P: float, z: float, R: float) -> tuple[float, float]:
 
     >>> ekf_update(2.0, 1.0, 3.0, 0.0)
     (3.0, 0.0)
+
+    With P = R = 0 the innovation covariance S = P + R is zero and the gain
+    is undefined:
+
+    >>> ekf_update(2.0, 0.0, 3.0, 0.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: P + R must be positive: the innovation covariance S = P + R is 0 (P=0, R=0)
     """
+    if not P + R > 0:
+        raise ValueError(f"P + R must be positive: the innovation covariance S = P + R is {P + R:g} (P={P:g}, R={R:g})")
     K = P / (P + R)
     return x + K * (z - x), (1 - K) * P
 
@@ -170,10 +186,22 @@ def kalman_gain(P: Matrix, H: Matrix, R: Matrix) -> Matrix:
 
     >>> kalman_gain([[1.0]], [[1]], [[0.0]])
     [[1.0]]
+
+    P = R = 0 leaves nothing to weigh:
+
+    >>> kalman_gain([[0.0]], [[1]], [[0.0]])
+    Traceback (most recent call last):
+    ...
+    ValueError: the innovation covariance S = H P Hᵀ + R is singular (P and R are both zero along some measurement): matrix is singular (all its entries are 0)
     """
     Ht = transpose(H)
     S = add(matmul(matmul(H, P), Ht), R)
-    return matmul(matmul(P, Ht), inverse(S))
+    try:
+        S_inv = inverse(S)
+    except ValueError as err:
+        raise ValueError(f"the innovation covariance S = H P Hᵀ + R is singular "
+                         f"(P and R are both zero along some measurement): {err}") from None
+    return matmul(matmul(P, Ht), S_inv)
 
 
 def covariance_ellipse(P: Matrix, n_sigma: float = 1.0) -> tuple[float, float, float]:

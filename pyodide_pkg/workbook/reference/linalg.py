@@ -79,6 +79,9 @@ def det2(a: Matrix) -> float:
     return a[0][0] * a[1][1] - a[0][1] * a[1][0]
 
 
+PIVOT_RTOL = 1e-12
+
+
 def inverse(a: Matrix) -> Matrix:
     """Inverse by Gauss–Jordan elimination with partial pivoting.
 
@@ -87,14 +90,32 @@ def inverse(a: Matrix) -> Matrix:
     >>> inverse([[1, 2], [2, 4]])
     Traceback (most recent call last):
     ...
-    ValueError: matrix is singular
+    ValueError: matrix is singular (a pivot is 0 times its largest entry 4)
+
+    The singularity test is relative to the matrix's size (its largest entry),
+    not an absolute 1e-12: a tiny but well-conditioned matrix inverts, and a
+    singular one stays singular at any scale.
+
+    >>> inverse([[1e-13, 0], [0, 1e-13]])[0][0]
+    10000000000000.0
+    >>> inverse([[1e9, 2e9], [2e9, 4e9]])
+    Traceback (most recent call last):
+    ...
+    ValueError: matrix is singular (a pivot is 0 times its largest entry 4e+09)
+    >>> inverse([[0.0, 0.0], [0.0, 0.0]])
+    Traceback (most recent call last):
+    ...
+    ValueError: matrix is singular (all its entries are 0)
     """
     n = len(a)
     m = [[float(x) for x in row] + identity(n)[i] for i, row in enumerate(a)]
+    size = max((abs(x) for row in m for x in row[:n]), default=0.0)
+    if n and size == 0.0:
+        raise ValueError("matrix is singular (all its entries are 0)")
     for c in range(n):
         p = max(range(c, n), key=lambda r: abs(m[r][c]))
-        if abs(m[p][c]) < 1e-12:
-            raise ValueError("matrix is singular")
+        if abs(m[p][c]) <= PIVOT_RTOL * size:
+            raise ValueError(f"matrix is singular (a pivot is {abs(m[p][c]) / size:.3g} times its largest entry {size:g})")
         m[c], m[p] = m[p], m[c]
         piv = m[c][c]
         m[c] = [x / piv for x in m[c]]

@@ -32,8 +32,18 @@ def d_term(e: float, e_prev: float, Kd: float, dt: float) -> float:
 
     >>> round(d_term(2, 5, 1, 0.1), 9)
     -30.0
+    >>> d_term(2, 5, 1, 0)
+    Traceback (most recent call last):
+    ...
+    ValueError: dt must be positive (the time step, in seconds), got 0
     """
+    _check_dt(dt)
     return Kd * (e - e_prev) / dt
+
+
+def _check_dt(dt: float) -> None:
+    if not dt > 0:
+        raise ValueError(f"dt must be positive (the time step, in seconds), got {dt!r}")
 
 
 def pid_step(e: float, e_prev: float, integral: float, Kp: float, Ki: float, Kd: float,
@@ -45,7 +55,15 @@ def pid_step(e: float, e_prev: float, integral: float, Kp: float, Ki: float, Kd:
     >>> u, s = pid_step(1, 3, 8, 1, 0.1, 0.5, 1)
     >>> round(u, 12), s
     (0.9, 9)
+
+    The derivative divides by dt, so dt = 0 is refused by name:
+
+    >>> pid_step(1, 3, 8, 1, 0.1, 0.5, 0)
+    Traceback (most recent call last):
+    ...
+    ValueError: dt must be positive (the time step, in seconds), got 0
     """
+    _check_dt(dt)
     new_integral = integral + e * dt
     u = Kp * e + Ki * new_integral + Kd * (e - e_prev) / dt
     return u, new_integral
@@ -98,6 +116,7 @@ def simulate_step_response(Kp: float, Ki: float, Kd: float, dt: float = 0.01, du
     >>> len(ts), ts[-1], round(ys[-1], 3)
     (1001, 10.0, 0.9)
     """
+    _check_dt(dt)
     steps = int(round(duration / dt))
     y = velocity = integral = 0.0
     e_prev = target - y
@@ -137,7 +156,25 @@ def step_metrics(ts: Sequence[float], ys: Sequence[float], target: float = 1.0, 
     0.0
     >>> step_metrics(*simulate_step_response(9, 0, 3)).overshoot
     0.0
+
+    A negative target is the mirror image of a positive one: overshoot is how
+    far the output goes past the target (below it), as a fraction of |target|,
+    and the steady-state error keeps its sign (target − final). A target of 0
+    has no size to measure overshoot against, so it is refused.
+
+    >>> m = step_metrics(*simulate_step_response(9, 0, 0, target=-1.0), target=-1.0)
+    >>> round(m.overshoot, 3), round(m.settling_time, 2), round(m.steady_state_error, 3)
+    (0.214, 3.52, -0.1)
+    >>> step_metrics([0.0, 1.0], [0.0, 0.0], target=0.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: target must be non-zero: overshoot is measured as a fraction of it
     """
+    if target == 0:
+        raise ValueError("target must be non-zero: overshoot is measured as a fraction of it")
+    if target < 0:
+        m = step_metrics(ts, [-y for y in ys], -target, band)
+        return StepMetrics(m.overshoot, m.settling_time, -m.steady_state_error)
     final = ys[-1]
     overshoot = max(0.0, (max(ys) - target) / target)
     tolerance = band * max(abs(final), 1e-12)

@@ -62,8 +62,17 @@ def quat_from_axis_angle(axis, angle: float) -> tuple[float, float, float, float
 
     >>> [round(v, 4) + 0.0 for v in quat_from_axis_angle((1, 0, 0), math.pi)]
     [0.0, 1.0, 0.0, 0.0]
+
+    A zero axis has no direction:
+
+    >>> quat_from_axis_angle((0, 0, 0), 1.0)
+    Traceback (most recent call last):
+    ...
+    ValueError: axis must not be the zero vector: a rotation needs a direction to turn about
     """
     n = math.sqrt(sum(a * a for a in axis))
+    if n == 0.0:
+        raise ValueError("axis must not be the zero vector: a rotation needs a direction to turn about")
     h = angle / 2
     s = math.sin(h) / n
     return (math.cos(h), s * axis[0], s * axis[1], s * axis[2])
@@ -80,22 +89,49 @@ def quat_norm(q) -> float:
     return math.sqrt(sum(c * c for c in q))
 
 
+DEFAULT_AXIS = (1.0, 0.0, 0.0)
+
+
 def quat_axis_angle(q) -> tuple[tuple[float, float, float], float]:
     """The (unit axis, angle in radians) of a unit quaternion; the inverse of
-    :func:`quat_from_axis_angle` for angles in [0, 2π).
+    :func:`quat_from_axis_angle` for angles in [0, 2π].
+
+    angle = 2·atan2(‖v‖, w) with v = (x, y, z), and axis = v/‖v‖. Unlike
+    2·acos(w), this keeps tiny angles (w rounds to 1 long before ‖v‖ is 0) and
+    does not need q to be exactly unit length.
 
     (0.5, 0.5, 0.5, 0.5) is 120° about (1, 1, 1)/√3.
 
     >>> axis, angle = quat_axis_angle((0.5, 0.5, 0.5, 0.5))
     >>> [round(a, 4) for a in axis], round(math.degrees(angle), 2)
     ([0.5774, 0.5774, 0.5774], 120.0)
+
+    Tiny turns: at 1e-7 rad the axis is still a unit vector, and 1e-8 rad does
+    not collapse to 0 (2·acos(w) gives 0 there).
+
+    >>> axis, angle = quat_axis_angle(quat_from_axis_angle((0, 0.6, 0.8), 1e-7))
+    >>> round(math.hypot(*axis), 15), [round(a, 12) for a in axis], angle
+    (1.0, [0.0, 0.6, 0.8], 1e-07)
+    >>> quat_axis_angle(quat_from_axis_angle((1, 0, 0), 1e-8))[1]
+    1e-08
+
+    The identity turns by 0 about any axis; this returns the x-axis,
+    ``DEFAULT_AXIS``. A zero quaternion is not a rotation.
+
+    >>> quat_axis_angle((1.0, 0.0, 0.0, 0.0)), quat_axis_angle((-1.0, 0.0, 0.0, 0.0))
+    (((1.0, 0.0, 0.0), 0.0), ((1.0, 0.0, 0.0), 6.283185307179586))
+    >>> quat_axis_angle((0, 0, 0, 0))
+    Traceback (most recent call last):
+    ...
+    ValueError: quaternion q must not be zero: it is not a rotation
     """
-    w, x, y, z = q
-    angle = 2 * math.acos(max(-1.0, min(1.0, w)))
-    s = math.sqrt(max(0.0, 1 - w * w))
-    if s < 1e-12:
-        return (1.0, 0.0, 0.0), 0.0
-    return (x / s, y / s, z / s), angle
+    w, x, y, z = (float(c) for c in q)
+    s = math.hypot(x, y, z)  # no underflow of the squares for tiny turns
+    if s == 0.0:
+        if w == 0.0:
+            raise ValueError("quaternion q must not be zero: it is not a rotation")
+        return DEFAULT_AXIS, 2 * math.atan2(0.0, w)
+    return (x / s, y / s, z / s), 2 * math.atan2(s, w)
 
 
 def gimbal_lock_angle(yaw: float, pitch_sign: int, roll: float) -> float:

@@ -1,4 +1,4 @@
-"""The static HTML of a figure, rendered at build time by the MkDocs hook.
+"""Build side: the static HTML of a figure, rendered by the MkDocs hook.
 
 It holds the first frame (the SVG at the default control values), the
 controls and the readouts, so the page shows a complete figure before the
@@ -6,9 +6,9 @@ Python runtime has started; ``docs/assets/js/figures.js`` then redraws it on
 every change.
 
 >>> html = figure_html("rotation-2d")
->>> html.startswith('<figure class="wb-figure" data-role="figure" data-figure="rotation-2d"')
+>>> html.startswith(f'<figure class="wb-figure" {role_attr(ROLE.figure)} {ATTR.figure}="rotation-2d"')
 True
->>> 'data-role="readout" data-readout="image"' in html
+>>> f'{role_attr(ROLE.readout)} {ATTR.readout}="image"' in html
 True
 """
 
@@ -16,7 +16,8 @@ from __future__ import annotations
 
 from html import escape
 
-from . import Control, Figure, get
+from workbook.contract import ATTR, ROLE, role_attr
+from workbook.figures import Control, Figure, get
 
 
 def value_text(value: float, unit: str) -> str:
@@ -41,12 +42,12 @@ def _control(fig: Figure, c: Control) -> str:
     if c.kind == "toggle":
         pressed = "true" if c.default else "false"
         return (f'<div class="wb-fig-control wb-fig-toggle"><button type="button" id="{cid}" class="md-button" '
-                f'data-param="{c.name}" aria-pressed="{pressed}">{escape(c.label)}</button></div>')
+                f'{ATTR.param}="{c.name}" aria-pressed="{pressed}">{escape(c.label)}</button></div>')
     text = value_text(c.default, c.unit)
     return (
         f'<div class="wb-fig-control"><label for="{cid}">{escape(c.label)}</label>'
-        f'<output for="{cid}" data-role="control-value">{escape(text)}</output>'
-        f'<input type="range" id="{cid}" data-param="{c.name}" min="{c.min:g}" max="{c.max:g}" '
+        f'<output for="{cid}" {role_attr(ROLE.control_value)}>{escape(text)}</output>'
+        f'<input type="range" id="{cid}" {ATTR.param}="{c.name}" min="{c.min:g}" max="{c.max:g}" '
         f'step="{c.step:g}" value="{c.default:g}" data-suffix="{escape(unit_suffix(c.unit))}" '
         f'aria-valuetext="{escape(text)}"/></div>'
     )
@@ -59,17 +60,17 @@ def figure_html(name: str) -> str:
     base = f"fig-{fig.name}"
     readouts = "".join(
         f'<div class="wb-fig-readout{" wb-fig-matrix" if r.matrix else ""}{" wb-fig-text" if r.text else ""}"><dt>{escape(r.label)}</dt>'
-        f'<dd data-role="readout" data-readout="{r.key}">{escape(frame["readouts"][r.key])}</dd></div>'
+        f'<dd {role_attr(ROLE.readout)} {ATTR.readout}="{r.key}">{escape(frame["readouts"][r.key])}</dd></div>'
         for r in fig.readouts
     )
     controls = "".join(_control(fig, c) for c in fig.controls)
     return (
-        f'<figure class="wb-figure" data-role="figure" data-figure="{fig.name}" id="{base}" '
-        f'data-flags="{" ".join(frame["flags"])}" aria-labelledby="{base}-caption">'
-        f'<div class="wb-fig-canvas" data-role="figure-canvas">{frame["svg"]}</div>'
+        f'<figure class="wb-figure" {role_attr(ROLE.figure)} {ATTR.figure}="{fig.name}" id="{base}" '
+        f'{ATTR.flags}="{" ".join(frame["flags"])}" aria-labelledby="{base}-caption">'
+        f'<div class="wb-fig-canvas" {role_attr(ROLE.figure_canvas)}>{frame["svg"]}</div>'
         f'<div class="wb-fig-panel"><div class="wb-fig-controls">{controls}</div>'
         f'<dl class="wb-fig-readouts">{readouts}</dl></div>'
-        f'<p class="wb-fig-status" data-role="figure-status" role="status"></p>'
+        f'<p class="wb-fig-status" {role_attr(ROLE.figure_status)} role="status"></p>'
         f'<figcaption id="{base}-caption"><strong>{escape(fig.title)}.</strong> {escape(fig.caption)}</figcaption>'
         f"</figure>"
     )

@@ -1,0 +1,55 @@
+// A vector or matrix answer: a grid of entries. Arrow keys move between entries
+// (left and right once the caret is at the edge), Tab goes in reading order, and a
+// whole matrix pasted into any entry is split by the grader and fills the grid.
+import { ATTR, ROLE, findRoles } from "../contract.js";
+import { showMessage } from "../feedback.js";
+
+export function init(ctx) {
+  const entries = findRoles(ctx.el, ROLE.entry);
+  const at = (r, c) => entries.find((e) => Number(e.getAttribute(ATTR.row)) === r && Number(e.getAttribute(ATTR.col)) === c);
+  const rows = Math.max(...entries.map((e) => Number(e.getAttribute(ATTR.row))));
+  const cols = Math.max(...entries.map((e) => Number(e.getAttribute(ATTR.col))));
+  const fill = (grid) => {
+    grid.forEach((row, i) => row.forEach((text, j) => {
+      const input = at(i + 1, j + 1);
+      if (input) input.value = text;
+    }));
+  };
+  for (const input of entries) {
+    const r = Number(input.getAttribute(ATTR.row));
+    const c = Number(input.getAttribute(ATTR.col));
+    input.addEventListener("keydown", (event) => {
+      const atStart = input.selectionStart === 0 && input.selectionEnd === 0;
+      const atEnd = input.selectionStart === input.value.length;
+      const moves = { ArrowUp: [r - 1, c], ArrowDown: [r + 1, c], ArrowLeft: atStart ? [r, c - 1] : null, ArrowRight: atEnd ? [r, c + 1] : null };
+      const target = moves[event.key] && at(...moves[event.key]);
+      if (!target) return;
+      event.preventDefault();
+      target.focus();
+      target.select();
+    });
+    input.addEventListener("paste", async (event) => {
+      const text = event.clipboardData?.getData("text") ?? "";
+      if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim())) return; // one value: paste as usual
+      event.preventDefault();
+      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, text });
+      if (reply.ok && reply.value.entries) fill(reply.value.entries);
+      else showMessage(ctx.el, reply.ok ? reply.value.message : reply.error.message);
+    });
+  }
+  return {
+    value: () => Array.from({ length: rows }, (_, i) => Array.from({ length: cols }, (_, j) => at(i + 1, j + 1)?.value ?? "")),
+    restore(last) {
+      if (Array.isArray(last)) fill(last);
+    },
+    show(reply) {
+      const data = (reply.ok && reply.value.data) || {};
+      const marked = new Set([...(data.wrong || []), ...(data.invalid || [])].map(([r, c]) => `${r},${c}`));
+      for (const input of entries) {
+        const key = `${input.getAttribute(ATTR.row)},${input.getAttribute(ATTR.col)}`;
+        if (marked.has(key)) input.setAttribute("aria-invalid", "true");
+        else input.removeAttribute("aria-invalid");
+      }
+    },
+  };
+}

@@ -1,0 +1,12 @@
+// A number or an expression in one text field (the grader reads units and forms).
+import { ROLE, findRole } from "../contract.js";
+
+export function init(ctx) {
+  const input = findRole(ctx.el, ROLE.answer);
+  return {
+    value: () => input.value,
+    restore(last) {
+      if (typeof last === "string") input.value = last;
+    },
+  };
+}

@@ -1,0 +1,90 @@
+// Wires each exercise element (CONTRACT.md) to the runtime and the progress
+// store: the parts every kind shares (state, attempts, hint and derivation); the
+// kind's own widget is docs/assets/js/kinds/<kind>.js, loaded by name.
+
+import { ATTR, ROLE, STATE, findRole } from "./contract.js";
+import { setPending, showMessage, showReply } from "./feedback.js";
+
+function decodeBase64(text) {
+  const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
+  return new TextDecoder().decode(bytes);
+}
+
+// A graded attempt (not an invalid input or an error) counts; the first correct
+// one marks the exercise solved, noting whether the solution was revealed first.
+function recordAttempt({ id, progress }, reply, extra = {}) {
+  const status = reply.ok ? reply.value.status : null;
+  if (status !== STATE.correct && status !== STATE.incorrect) return;
+  const before = progress.get(id);
+  const patch = { ...extra, attempts: (before.attempts || 0) + 1 };
+  if (status === STATE.correct && !before.solved) {
+    patch.solved = true;
+    patch.solvedAfterReveal = Boolean(before.revealed);
+  }
+  progress.update(id, patch);
+}
+
+/** Send one request for this exercise and show its reply; `op` is "grade" or "run". */
+async function submit(ctx, op, payload, { limitMs, onProgress, saved = {} } = {}) {
+  setPending(ctx.el);
+  const reply = await ctx.runtime.request({ op, exercise: ctx.id, ...payload }, { limitMs, onProgress });
+  showReply(ctx.el, reply);
+  recordAttempt(ctx, reply, saved);
+  return reply;
+}
+
+function toggle(button, panel, showLabel, hideLabel) {
+  const open = panel.hidden;
+  panel.hidden = !open;
+  button.setAttribute("aria-expanded", String(open));
+  button.textContent = open ? hideLabel : showLabel;
+  return open;
+}
+
+function initHelp(ctx) {
+  const { el, id, progress } = ctx;
+  const hintButton = findRole(el, ROLE.hint);
+  const revealButton = findRole(el, ROLE.reveal);
+  if (hintButton) {
+    const panel = findRole(el, ROLE.hintPanel);
+    hintButton.addEventListener("click", () => {
+      if (toggle(hintButton, panel, "Show hint", "Hide hint")) progress.update(id, { hinted: true });
+    });
+  }
+  if (revealButton) {
+    const panel = findRole(el, ROLE.solutionPanel);
+    const showLabel = revealButton.textContent;
+    const hideLabel = showLabel.replace("Show", "Hide");
+    revealButton.addEventListener("click", () => {
+      if (!panel.dataset.rendered) {
+        panel.innerHTML = `<p class="admonition-title">${panel.dataset.title}</p>${decodeBase64(panel.dataset.content)}`;
+        panel.dataset.rendered = "true";
+        ctx.renderMath?.(panel);
+      }
+      if (toggle(revealButton, panel, showLabel, hideLabel) && !progress.get(id).revealed) {
+        progress.update(id, { revealed: true });
+      }
+    });
+  }
+}
+
+/** Start one exercise element once (pages come back with instant navigation). */
+export function initExercise(el, shared) {
+  if (el.dataset.wbReady) return;
+  el.dataset.wbReady = "true";
+  const ctx = { ...shared, el, id: el.getAttribute(ATTR.exercise) };
+  ctx.submit = (op, payload, options) => submit(ctx, op, payload, options);
+  const saved = ctx.progress.get(ctx.id);
+  if (saved.solved) {
+    el.setAttribute(ATTR.state, STATE.correct);
+    showMessage(el, saved.solvedAfterReveal ? "Solved earlier (after revealing the solution)." : "Solved earlier.");
+  }
+  initHelp(ctx);
+  const kind = el.getAttribute(ATTR.kind);
+  import(`./kinds/${kind}.js`)
+    .then((module) => module.init(ctx))
+    .catch((err) => {
+      el.setAttribute(ATTR.state, STATE.error);
+      showMessage(el, `This exercise could not start: ${err.message}`);
+    });
+}

@@ -1,0 +1,109 @@
+// Build: the learner's code and a Run button; the worker runs the tests.
+//
+// The page shows the code (starter or saved) as plain text at first. CodeMirror
+// is loaded and built only when the exercise comes near the viewport and the
+// browser is idle after the Python runtime has started, or at once when the
+// learner clicks, focuses or runs it: opening a chapter never waits for, or
+// stutters on, an editor nobody is looking at yet.
+import { ATTR, ROLE, RUNTIME, findRole } from "../contract.js";
+import { renderTests, setPending, showMessage } from "../feedback.js";
+
+const runtimeSettled = new Promise((resolve) => {
+  const done = () => document.documentElement.getAttribute(ATTR.runtime) !== RUNTIME.loading;
+  if (done()) return resolve();
+  const onChange = () => done() && (document.removeEventListener("workbook:runtime", onChange), resolve());
+  document.addEventListener("workbook:runtime", onChange);
+  setTimeout(resolve, 8000); // a slow start should not keep the editor away for long
+});
+const whenIdle = () => new Promise((resolve) => (self.requestIdleCallback ? requestIdleCallback(resolve, { timeout: 1500 }) : setTimeout(resolve, 50)));
+
+/** The plain code first, the editor when it is wanted; `code()` is always the latest text. */
+function lazyEditor(ctx, host, onRun) {
+  const plain = findRole(host, ROLE.code);
+  const starter = plain.textContent;
+  const saved = ctx.progress.get(ctx.id);
+  let code = typeof saved.code === "string" ? saved.code : starter;
+  // A <pre> hides one final newline; the editor shows it as an empty last line.
+  plain.querySelector("code").textContent = code.endsWith("\n") ? code + "\n" : code;
+  plain.tabIndex = 0;
+  plain.setAttribute("aria-label", "Python code (press Enter or click to edit)");
+  let editor = null;
+  let opening = null;
+  let timer = null;
+  const save = () => {
+    clearTimeout(timer);
+    ctx.progress.update(ctx.id, { code });
+  };
+  const open = () => {
+    opening ||= import("../editor.js").then(({ createEditor }) => {
+      const hadFocus = document.activeElement === plain;
+      editor = createEditor(host, code, {
+        onChange(text) {
+          code = text;
+          clearTimeout(timer);
+          timer = setTimeout(save, 400);
+        },
+        onRun,
+      });
+      plain.remove();
+      host.wbEditor = editor; // for tests and tools: getCode(), setCode(), markLine()
+      if (hadFocus) editor.view.focus();
+      return editor;
+    });
+    return opening;
+  };
+  host.wbOpenEditor = open; // builds the editor now (tests and tools); resolves to it
+  const nearView = new IntersectionObserver((entries) => {
+    if (!entries.some((entry) => entry.isIntersecting)) return;
+    nearView.disconnect();
+    runtimeSettled.then(whenIdle).then(open);
+  }, { rootMargin: "400px 0px" });
+  nearView.observe(host);
+  const openNow = () => {
+    nearView.disconnect();
+    open().then((ed) => ed.view.focus());
+  };
+  plain.addEventListener("click", openNow);
+  plain.addEventListener("keydown", (event) => {
+    if (event.key === "Enter" || event.key === " ") {
+      event.preventDefault();
+      openNow();
+    }
+  });
+  return {
+    starter,
+    open,
+    async latest() {
+      const ed = editor || (await open());
+      code = ed.getCode();
+      save();
+      return ed;
+    },
+  };
+}
+
+export function init(ctx) {
+  const host = findRole(ctx.el, ROLE.editor);
+  const runButton = findRole(ctx.el, ROLE.run);
+  const limitMs = Number(host.dataset.timeLimit || 5) * 1000;
+  const editor = lazyEditor(ctx, host, () => run());
+
+  async function run() {
+    setPending(ctx.el); // at once: building the editor first may take a moment
+    runButton.disabled = true;
+    const ed = await editor.latest();
+    ed.markLine(null);
+    const reply = await ctx.submit("run", { code: ed.getCode() }, { limitMs, onProgress: (text) => showMessage(ctx.el, text) });
+    runButton.disabled = false;
+    renderTests(ctx.el, reply);
+    const line = reply.ok && reply.value.data?.error?.line;
+    if (line) ed.markLine(line);
+  }
+  runButton.addEventListener("click", run);
+  findRole(ctx.el, ROLE.reset).addEventListener("click", async () => {
+    if (window.confirm("Replace your code with the starter code? Your current code will be lost.")) {
+      (await editor.open()).setCode(editor.starter);
+      ctx.progress.update(ctx.id, { code: editor.starter });
+    }
+  });
+}

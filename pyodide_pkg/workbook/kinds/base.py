@@ -1,0 +1,65 @@
+"""What every exercise kind shares: an id, a title, a check and a widget."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from html import escape
+from typing import Any, Callable, ClassVar, Protocol
+
+from ..contract import ATTR, ROLE, role_attr
+from ..verdict import Verdict
+
+
+class Page(Protocol):
+    """What a widget's markup may ask of the page it is built for (build side)."""
+
+    def inline(self, markdown: str) -> str: ...  # one line of Markdown as inline HTML
+    def highlight(self, line: str) -> str: ...  # one line of Python, highlighted
+
+
+class PlainPage:
+    """A page without Markdown or highlighting (tests, and the worker)."""
+
+    inline = staticmethod(escape)
+    highlight = staticmethod(escape)
+
+
+@dataclass(frozen=True)
+class Exercise:
+    """Base of every kind. Subclasses set ``kind`` and ``op`` and implement the rest.
+
+    ``op`` is the one request that grades the kind: ``"grade"`` (an answer) or
+    ``"run"`` (code, with a time limit that starts when the code starts).
+    """
+
+    id: str
+    title: str
+    kind: ClassVar[str] = ""
+    op: ClassVar[str] = "grade"
+    reveal_label: ClassVar[str] = "Show explanation"
+
+    def check(self, answer: Any) -> Verdict:
+        raise NotImplementedError
+
+    def widget(self, base: str, page: Page) -> str:
+        """The HTML of the answer area (inside the exercise element)."""
+        raise NotImplementedError
+
+    def attributes(self) -> dict[str, str]:
+        """Extra attributes of the exercise element (e.g. an answer's shape)."""
+        return {}
+
+    def worked_html(self) -> str:
+        """HTML that ends the revealed derivation (Derive: the answer as typed)."""
+        return ""
+
+
+def check_button() -> str:
+    return f'<button type="submit" class="md-button md-button--primary wb-check" {role_attr(ROLE.check)}>Check</button>'
+
+
+def form(kind: str, inner: str) -> str:
+    return f'<form class="wb-form wb-{kind}" novalidate>{inner}</form>'
+
+
+__all__ = ["ATTR", "Callable", "Exercise", "Page", "PlainPage", "ROLE", "check_button", "escape", "form", "role_attr"]

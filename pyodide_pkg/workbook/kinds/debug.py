@@ -1,0 +1,62 @@
+"""Debug: click the buggy line of a short program."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any, Callable, ClassVar, Mapping
+
+from ..verdict import Verdict
+from .base import ATTR, ROLE, Exercise, Page, check_button, form, role_attr
+
+
+@dataclass(frozen=True)
+class Debug(Exercise):
+    """``notes`` maps every other line number (1-based) to a word on what that
+    line does right; ``bug`` explains the bug; ``fixed_line`` is the repair,
+    used by the tests to prove the program then agrees with ``reference``.
+    """
+
+    code: str = ""
+    bug_line: int = 0
+    fixed_line: str = ""
+    bug: str = ""
+    notes: Mapping[int, str] = field(default_factory=dict)
+    function: str = ""
+    reference: Callable[..., Any] | None = None
+    cases: tuple[tuple, ...] = ()
+    kind: ClassVar[str] = "debug"
+
+    @property
+    def lines(self) -> list[str]:
+        return self.code.rstrip("\n").split("\n")
+
+    def check(self, line: object) -> Verdict:
+        count = len(self.lines)
+        try:
+            n = int(line)  # type: ignore[arg-type]
+        except (TypeError, ValueError):
+            return Verdict("invalid", "Click the line you think holds the bug, then check.")
+        if not 1 <= n <= count:
+            return Verdict("invalid", f"Pick a line between 1 and {count}.")
+        if n == self.bug_line:
+            return Verdict("correct", self.bug, data={"line": n})
+        note = self.notes.get(n, "This line does what it should.").rstrip()
+        note = note if note.endswith((".", "!", "?")) else note + "."
+        return Verdict("incorrect", f"Line {n} is fine: {note} The bug is on another line.", data={"line": n})
+
+    def widget(self, base: str, page: Page) -> str:
+        rows = "".join(
+            f'<li class="wb-line" {role_attr(ROLE.line)} {ATTR.line}="{n}" role="option" aria-selected="false" '
+            f'tabindex="{0 if n == 1 else -1}"><span class="wb-lineno" aria-hidden="true">{n}</span>'
+            f"<code>{page.highlight(text)}</code></li>"
+            for n, text in enumerate(self.lines, start=1)
+        )
+        return form(self.kind, (
+            f'<p class="wb-label" id="{base}-lines-label">'
+            f"Click the line with the bug (or move with the arrow keys and press Space).</p>"
+            f'<ol class="wb-code highlight" role="listbox" aria-labelledby="{base}-lines-label" '
+            f'aria-describedby="{base}-feedback">{rows}</ol>{check_button()}'
+        ))
+
+
+EXERCISE = Debug

@@ -1,0 +1,47 @@
+"""Trace: choose one option, then read why it is (or is not) right."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import ClassVar
+
+from ..contract import TAG
+from ..verdict import Verdict
+from .base import ROLE, Exercise, Page, check_button, escape, form, role_attr
+
+
+@dataclass(frozen=True)
+class Option:
+    """One option of a Trace exercise; ``why`` is shown once it is picked."""
+
+    key: str
+    text: str
+    why: str
+
+
+@dataclass(frozen=True)
+class Trace(Exercise):
+    options: tuple[Option, ...] = ()
+    answer: str = ""
+    kind: ClassVar[str] = "trace"
+
+    def check(self, choice: object) -> Verdict:
+        options = {o.key: o for o in self.options}
+        if choice not in options:
+            return Verdict("invalid", "Choose one of the options first.")
+        return Verdict("correct" if choice == self.answer else "incorrect", options[choice].why, tag=TAG.why)
+
+    def widget(self, base: str, page: Page) -> str:
+        items = "".join(
+            f'<label class="wb-choice"><input type="radio" name="{base}-choice" value="{escape(o.key)}" '
+            f'{role_attr(ROLE.choice)}><span class="wb-choice-key">{escape(o.key)}</span>'
+            f'<span class="wb-choice-text">{page.inline(o.text)}</span></label>'
+            for o in self.options
+        )
+        return form(self.kind, (
+            f'<fieldset class="wb-choices" aria-describedby="{base}-feedback">'
+            f'<legend class="wb-label">Choose one answer</legend>{items}</fieldset>{check_button()}'
+        ))
+
+
+EXERCISE = Trace

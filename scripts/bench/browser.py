@@ -1,0 +1,137 @@
+"""Browsers for the bench: a fresh profile per phase, pages, visits and waits."""
+
+from __future__ import annotations
+
+import shutil
+import tempfile
+
+from find_browser import find_browser
+from workbook.contract import ATTR
+
+from . import pagejs
+from .config import BASELINE_PATH, CHROMIUM_ARGS, DEAD_PROXY, READY_TIMEOUT_MS, SUBPATH
+from .records import attribute_long_tasks, net_summary
+
+RUNTIME = f"document.documentElement.getAttribute({ATTR.runtime!r})"
+
+
+class BenchError(RuntimeError):
+    pass
+
+
+class Browsers:
+    """Launches Chromium (a new profile each time), opens pages, and visits the site."""
+
+    def __init__(self, pw, server, deadline: float, cpu_slowdown: float = 1.0):
+        self.pw, self.server = pw, server
+        self.site = server.origin + SUBPATH
+        self.baseline_url = server.origin + BASELINE_PATH
+        exe = find_browser()
+        if not exe:
+            raise BenchError("no Chromium found: run `make browser` (or `playwright install chromium`)")
+        self.executable = exe
+        self.version = ""
+        self.service_workers = "allow"  # "block" measures the HTTP cache alone
+        self.cpu_slowdown = cpu_slowdown  # > 1: CDP Emulation.setCPUThrottlingRate on every page
+        self.external: list[str] = []
+        self.page_errors: list[str] = []
+        self.deadline = deadline  # time.monotonic(): phases after it are skipped
+        self.profiles: list[str] = []  # removed after each phase (their browsers are closed by then)
+
+    def remove_profiles(self) -> None:
+        while self.profiles:
+            shutil.rmtree(self.profiles.pop(), ignore_errors=True)
+
+    def new_context(self):
+        """A fresh browser with an empty profile of its own: an on-disk HTTP cache and
+        code cache, as a learner's browser has. (Playwright's ``new_context()`` is
+        off the record: its in-memory cache refuses entries over ~6 MB, so the 10 MB
+        pyodide.asm.wasm would be fetched again on every visit.)"""
+        profile = tempfile.mkdtemp(prefix="wb-bench-profile-")
+        try:
+            ctx = self.pw.chromium.launch_persistent_context(
+                profile, executable_path=self.executable, args=CHROMIUM_ARGS, headless=True, proxy=DEAD_PROXY,
+                service_workers=self.service_workers)
+        except Exception:
+            shutil.rmtree(profile, ignore_errors=True)
+            raise
+        self.profiles.append(profile)
+        if not self.version and ctx.browser:
+            self.version = ctx.browser.version
+        for page in ctx.pages:  # the persistent context opens with a blank tab
+            page.close()
+        ctx.add_init_script(pagejs.init_script())
+        origin = self.server.origin
+
+        def watch(request):
+            url = request.url
+            if not (url.startswith(origin) or url.startswith(("data:", "blob:", "about:", "chrome"))):
+                self.external.append(url)
+
+        ctx.on("request", watch)
+        return ctx
+
+    def new_page(self, ctx):
+        page = ctx.new_page()
+        page.set_default_timeout(30_000)
+        page.on("pageerror", lambda err: self.page_errors.append(f"{page.url}: {err}"))
+        if self.cpu_slowdown > 1:
+            cdp = ctx.new_cdp_session(page)
+            cdp.send("Emulation.setCPUThrottlingRate", {"rate": self.cpu_slowdown})
+        return page
+
+    def wait_state(self, page, what: str, expr: str, timeout_ms: int = READY_TIMEOUT_MS):
+        try:
+            page.wait_for_function(expr, timeout=timeout_ms, polling=50)
+        except Exception as err:
+            state = page.evaluate(RUNTIME) if not page.is_closed() else "?"
+            raise BenchError(f"{what}: not reached within {timeout_ms / 1000:.0f} s at {page.url} "
+                             f"(runtime state {state!r}): {str(err).splitlines()[0]}") from None
+
+    def wait_ready(self, page, timeout_ms: int = READY_TIMEOUT_MS):
+        self.wait_state(page, "runtime ready", f"() => ['ready','failed'].includes({RUNTIME})", timeout_ms)
+        if page.evaluate(RUNTIME) == "failed":
+            raise BenchError(f"the runtime failed to start at {page.url}")
+
+    def visit(self, ctx, url: str, baseline: bool = False, timeout_ms: int = READY_TIMEOUT_MS,
+              settle: bool = True) -> tuple[object, dict]:
+        """Open `url` in a new page of `ctx`; wait until graded-ready (or the baseline's
+        loaded); return the page and a record of time, bytes and long tasks.
+        With `settle`, wait a little for late fetches and long tasks first."""
+        mark = self.server.mark()
+        page = self.new_page(ctx)
+        page.goto(url, wait_until="commit", timeout=timeout_ms)
+        if baseline:
+            self.wait_state(page, "baseline loaded",
+                            "() => ['ready','failed'].includes(document.documentElement.dataset.baseline)", timeout_ms)
+        else:
+            self.wait_ready(page, timeout_ms)
+        if settle:
+            page.wait_for_timeout(300)  # long tasks right after start-up still count
+            self.server.wait_quiet(1.0, 15.0)
+        snap = pagejs.run(page, "snapshot")
+        if baseline:
+            if not snap["baseline"] or "ready" not in snap["baseline"]:
+                raise BenchError(f"baseline failed: {snap['baseline']}")
+            ready = snap["baseline"]["ready"]
+        else:
+            ready = next((t for s, t in snap["runtime"] if s == "ready"), None)
+        entries = self.server.since(mark)
+        rec = {"ready_ms": ready, "net": net_summary(entries), "nav": snap["nav"], "sw": snap["sw"],
+               "worker_started_ms": snap["workerStartedAt"],
+               "started_from": snap.get("startedFrom"), "worker_stages": snap.get("workerStages"),
+               "long_tasks": attribute_long_tasks(snap, (ready or 0) + 300, url)}
+        page.bench_mark, page.bench_snapshot = mark, snap  # for the network phase's extra numbers
+        return page, rec
+
+    def settle_sw(self, page) -> None:
+        """If the page registered a service worker, let it activate and finish caching."""
+        try:
+            has = page.evaluate("async () => 'serviceWorker' in navigator && "
+                                "(await navigator.serviceWorker.getRegistrations()).length > 0")
+        except Exception:
+            has = False
+        if has:
+            page.evaluate("() => Promise.race([navigator.serviceWorker.ready.then(() => true),"
+                          " new Promise((r) => setTimeout(() => r(false), 20000))])")
+            self.server.wait_quiet(2.0, 60.0)

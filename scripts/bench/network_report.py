@@ -1,0 +1,105 @@
+"""The first visit on each network profile: metrics, issue 14's targets, and the table."""
+
+from __future__ import annotations
+
+from .records import summary
+from .report import fmt
+
+# (key in a first-visit record, label, unit, ours only)
+MEASURES = [
+    ("ready_ms", "Ready (nav start -> ready)", "ms", False),
+    ("bytes_before_ready", "Bytes on the wire before ready", "B", False),
+    ("bytes_first_visit", "Bytes of the first visit (service worker done)", "B", False),
+    ("fetched_twice_count", "Files sent more than once", "n", False),
+    ("revalidated_304", "Requests answered 304 (revalidations)", "n", False),
+    ("lcp_ms", "Largest contentful paint", "ms", False),
+    ("tbt_ms", "Total blocking time, nav start -> ready", "ms", False),
+    ("first_grade_ms", "First grade right after ready (Derive)", "ms", True),
+]
+RATIOS = ("ready_ms", "bytes_before_ready", "bytes_first_visit")
+
+
+def collect_network(profiles: dict[str, list[dict]]) -> dict:
+    """Per profile: a summary per measure (ours, baseline) and per-run ratios."""
+    out = {}
+    for name, runs in profiles.items():
+        ours = [r["first_visit"] for r in runs if isinstance(r.get("first_visit"), dict)]
+        base = [r["first_visit_baseline"] for r in runs if isinstance(r.get("first_visit_baseline"), dict)]
+        m: dict = {}
+        for key, _, _, ours_only in MEASURES:
+            m[key] = summary([o.get(key) for o in ours])
+            if not ours_only:
+                m[f"baseline_{key}"] = summary([b.get(key) for b in base])
+        for key in RATIOS:
+            m[f"ratio_{key}"] = summary([r["first_visit"][key] / r["first_visit_baseline"][key] for r in runs
+                                         if (r.get("first_visit") or {}).get(key)
+                                         and (r.get("first_visit_baseline") or {}).get(key)])
+        twice = sorted({f["path"] for o in ours for f in o["fetched_twice"]})
+        twice_base = sorted({f["path"] for b in base for f in b["fetched_twice"]})
+        offline = [o["offline"] for o in ours]
+        out[name] = {"runs": len(runs), "measured": {"ours": len(ours), "baseline": len(base)}, "metrics": m,
+                     "fetched_twice": twice, "baseline_fetched_twice": twice_base,
+                     "offline_finished": sum(1 for o in offline if o["finished"]),
+                     "offline_states": [o["state"] for o in offline]}
+    return out
+
+
+def _med(net: dict, profile: str, key: str):
+    return ((net.get(profile) or {}).get("metrics", {}).get(key) or {}).get("median")
+
+
+def network_targets(net: dict) -> list[dict]:
+    """Issue 14's targets for the network profiles (the localhost ones are in report.py)."""
+    targets = []
+
+    def add(name, value, limit, note=""):
+        targets.append({"target": name, "value": value, "limit": limit,
+                        "met": None if value is None else value <= limit, "note": note})
+
+    add("10 Mbps: ready <= 0.8 x baseline", _med(net, "10mbps", "ratio_ready_ms"), 0.8, "median of per-run ratios")
+    add("10 Mbps: bytes before ready <= 0.8 x baseline", _med(net, "10mbps", "ratio_bytes_before_ready"), 0.8,
+        "median of per-run ratios, bytes as sent (gzip)")
+    add("phone: ready <= 1.0 x baseline", _med(net, "phone", "ratio_ready_ms"), 1.0,
+        "median of per-run ratios; CPU x4 slows the main thread only, not our worker")
+    lcp = _med(net, "phone", "lcp_ms")
+    add("phone: largest contentful paint <= 2.5 s", None if lcp is None else lcp / 1000, 2.5, "seconds, median")
+    tbt = _med(net, "phone", "tbt_ms")
+    others = ", ".join(f"{p} {_med(net, p, 'tbt_ms'):.0f} ms" for p in net
+                       if p != "phone" and _med(net, p, "tbt_ms") is not None)
+    add("phone: total blocking time nav -> ready <= 300 ms", tbt, 300.0,
+        "median" + (f"; other profiles: {others}" if others else ""))
+    counts = {p: (net[p]["metrics"].get("fetched_twice_count") or {}).get("max") for p in net}
+    known = [v for v in counts.values() if v is not None]
+    files = sorted({f for p in net for f in net[p]["fetched_twice"]})
+    add("no file fetched twice on a first visit (every profile)", max(known) if known else None, 0,
+        "most in one visit; " + (", ".join(files) if files else "none"))
+    grades = {p: _med(net, p, "first_grade_ms") for p in net}
+    worst = max((v for v in grades.values() if v is not None), default=None)
+    add("first grade right after ready <= 20 ms (every profile)", worst, 20.0,
+        "worst median; " + ", ".join(f"{p} {v:.1f} ms" for p, v in grades.items() if v is not None))
+    return targets
+
+
+def render_network(net: dict) -> str:
+    """One row per profile and measure: ours, the baseline, the ratio (medians)."""
+    rows = [("Profile", "Measurement", "ours", "baseline", "ours / baseline")]
+    for name, p in net.items():
+        m = p["metrics"]
+        for key, label, unit, ours_only in MEASURES:
+            ours = (m.get(key) or {}).get("median")
+            base = None if ours_only else (m.get(f"baseline_{key}") or {}).get("median")
+            ratio = (m.get(f"ratio_{key}") or {}).get("median") if key in RATIOS else None
+            rows.append((f"{name} (n={p['measured']['ours']}/{p['measured']['baseline']})", label, fmt(ours, unit),
+                         "" if ours_only else fmt(base, unit), fmt(ratio, "x") if key in RATIOS else ""))
+    widths = [max(len(r[i]) for r in rows) for i in range(5)]
+    lines = ["| " + " | ".join(c.ljust(w) if i < 2 else c.rjust(w) for i, (c, w) in enumerate(zip(r, widths))) + " |"
+             for r in rows]
+    lines.insert(1, "|" + "|".join("-" * (w + 2) if i < 2 else "-" * (w + 1) + ":" for i, w in enumerate(widths)) + "|")
+    listed = [f"- {name}: {', '.join(p['fetched_twice'])}" for name, p in net.items() if p["fetched_twice"]]
+    if listed:
+        lines += ["", "Files sent more than once on a first visit (ours):", *listed]
+    unfinished = [f"{name} ({p['offline_finished']}/{p['measured']['ours']} finished: {p['offline_states']})"
+                  for name, p in net.items() if p["offline_finished"] < p["measured"]["ours"]]
+    if unfinished:
+        lines += ["", "Service worker precache not finished within the wait: " + "; ".join(unfinished)]
+    return "\n".join(lines)

@@ -1,0 +1,54 @@
+"""A learner's Build code cannot change what it is graded against, nor anything after it."""
+
+import math
+import random
+
+import pytest
+
+from workbook import bank
+from workbook.kinds.build import Build
+
+EX = bank.get("0.5")
+IDENTITY = "def rotate_2d(x, y, theta):\n    return (x, y)\n"
+GOOD = EX.solution
+
+HOSTILE = {
+    "reference": "import workbook.reference.rotation2d as r\nimport workbook.bank.ch0_rotations_2d as c\n"
+                 "r.rotate_2d = lambda x, y, t: (x, y)\nobject.__setattr__(c.EXERCISES[4], 'reference', r.rotate_2d)\n",
+    "math": "import math\nmath.cos = lambda t: 1.0\nmath.sin = lambda t: 0.0\nmath.isclose = lambda *a, **k: True\n",
+    "random": "import random\nrandom.seed(0)\nrandom.Random.uniform = lambda self, a, b: 0.0\n",
+    "builtins": "import builtins\nbuiltins.round = lambda *a: 0\nbuiltins.abs = lambda v: 0\nbuiltins.sum = lambda *a: 0\n",
+    "grader": "import workbook.kinds.build as b\nb.as_numbers = lambda v, n: [0.0] * n\nb.Build.hidden_cases = lambda self: []\n"
+              "import workbook.kinds.derive as d\nd.Derive.check = lambda self, a: None\n",
+}
+
+
+def expected(verdict):
+    return [(row["input"], row["expected"]) for row in verdict.data["tests"]]
+
+
+@pytest.mark.parametrize("attack", sorted(HOSTILE))
+def test_a_hostile_run_is_graded_against_the_true_reference(attack):
+    verdict = EX.check(HOSTILE[attack] + IDENTITY)
+    assert verdict.status == "incorrect", attack
+    # The same cases and expected values as an honest run of the same wrong function.
+    assert expected(verdict) == expected(EX.check(IDENTITY))
+
+
+@pytest.mark.parametrize("attack", sorted(HOSTILE))
+def test_nothing_a_run_patches_outlives_it(attack):
+    before = (math.cos, math.sin, math.isclose, round, abs, sum, random.Random.uniform, Build.hidden_cases)
+    EX.check(HOSTILE[attack] + GOOD)
+    after = (math.cos, math.sin, math.isclose, round, abs, sum, random.Random.uniform, Build.hidden_cases)
+    assert before == after
+    assert bank.get("0.5").reference(3, 0, math.pi / 2)[1] == pytest.approx(3.0)
+    assert bank.get("0.1").check("3").status == "correct"
+    assert EX.check(GOOD).status == "correct"
+    assert EX.check(IDENTITY).status == "incorrect"
+
+
+def test_random_is_reseeded_after_a_run_that_seeds_it():
+    EX.check("import random\nrandom.seed(0)\n" + GOOD)
+    first = random.random()
+    random.seed(0)
+    assert first != random.random()

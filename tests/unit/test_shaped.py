@@ -1,0 +1,163 @@
+"""Vector and matrix answers: pasted text, entries, and whole-matrix slips."""
+
+import math
+
+import pytest
+
+from workbook.answers import InvalidAnswer
+from workbook.shaped import InvalidEntries, parse_entries, parse_pasted, whole_matrix_slips, wrong_entries
+
+ROT90 = [["0", "-1"], ["1", "0"]]
+
+
+@pytest.mark.parametrize("text", [
+    "[[0,-1],[1,0]]", "[[0, -1], [1, 0]]", "0 -1; 1 0", "[0, -1; 1, 0]", "[0 -1; 1 0]", "0 -1\n1 0", "0, -1\n1, 0",
+    "array([[ 0, -1],\n       [ 1,  0]])", "np.array([[0, -1], [1, 0]])", "{{0,-1},{1,0}}", "[[0, −1], [1, 0]]",
+    "  0  -1 \n\n  1   0  \n", "[[0, -1],\n [1, 0]]", "0 −1; 1 0",
+])
+def test_a_pasted_2x2_in_every_form(text):
+    assert parse_pasted(text, shape=(2, 2)) == ROT90
+
+
+def test_a_numpy_repr_with_floats_and_a_dtype():
+    grid = parse_pasted("array([[ 0., -1.],\n [ 1.,  0.]])", shape=(2, 2))
+    assert parse_entries(grid, (2, 2)) == [[0.0, -1.0], [1.0, 0.0]]
+    grid = parse_pasted("array([[1, 0], [0, 1]], dtype=float64)", shape=(2, 2))
+    assert grid == [["1", "0"], ["0", "1"]]
+
+
+@pytest.mark.parametrize("text", ["[1, 2, 3]", "1 2 3", "1; 2; 3", "1\n2\n3", "[[1], [2], [3]]", "(1, 2, 3)",
+                                  "array([[1.],\n [2.],\n [3.]])"])
+def test_a_column_vector(text):
+    grid = parse_pasted(text, shape=(3, 1))
+    assert [[float(e)] for row in grid for e in row] == [[1.0], [2.0], [3.0]]
+    assert len(grid) == 3 and all(len(row) == 1 for row in grid)
+
+
+def test_a_flat_list_fills_a_matrix_row_by_row():
+    assert parse_pasted("[0, -1, 1, 0]", shape=(2, 2)) == ROT90
+
+
+@pytest.mark.parametrize("text,entries", [
+    ("[[sqrt(2)/2, -sqrt(2)/2], [sqrt(2)/2, sqrt(2)/2]]", [["sqrt(2)/2", "-sqrt(2)/2"], ["sqrt(2)/2", "sqrt(2)/2"]]),
+    ("cos(30°) -sin(30°); sin(30°) cos(30°)", [["cos(30°)", "-sin(30°)"], ["sin(30°)", "cos(30°)"]]),
+    ("[atan2(1, 2), 1 - 2]", [["atan2(1, 2)", "1 - 2"]]),
+    ("1 - 2  3", [["1 - 2", "3"]]),
+    ("sqrt(2) / 2  0", [["sqrt(2) / 2", "0"]]),
+    ("2 *3 4", [["2 *3", "4"]]),
+    ("[1, 2, ]", [["1", "2"]]),
+])
+def test_entries_that_are_expressions_stay_whole(text, entries):
+    assert parse_pasted(text) == entries
+
+
+@pytest.mark.parametrize("text,shape,fragment", [
+    ("", (2, 2), "Paste or type the matrix"), ("1 2; 3 4", (3, 1), "3×1 column vector"),
+    ("1 2 3", (2, 2), "2×2 matrix (2 rows of 2)"), ("1 2; 3", (2, 2), "Row 2 has 1 entries"),
+    ("[[1, 2], [3, 4]", (2, 2), "brackets do not match"), ("[1, 2] 3", (1, 3), "outside its brackets"),
+    ("1 2 3; 4 5 6", (2, 2), "what you pasted is 2×3"),
+])
+def test_shape_mismatches_say_what_is_needed(text, shape, fragment):
+    with pytest.raises(InvalidAnswer) as err:
+        parse_pasted(text, shape=shape)
+    assert fragment in str(err.value)
+
+
+def test_parse_entries_reads_expressions_and_units():
+    grid = parse_pasted("cos(60°) -sin(60°); sin(60°) cos(60°)", shape=(2, 2))
+    got = parse_entries(grid, (2, 2))
+    c, s = 0.5, math.sqrt(3) / 2
+    assert all(math.isclose(a, b, abs_tol=1e-12) for ra, rb in zip(got, [[c, -s], [s, c]]) for a, b in zip(ra, rb))
+    assert parse_entries([["20 cm"], ["1 m"]], (2, 1), expect="m") == [[0.2], [1.0]]
+
+
+def test_parse_entries_collects_every_problem():
+    with pytest.raises(InvalidEntries) as err:
+        parse_entries([["1", ""], ["", "2 s"], ["x", "2,5"]], (3, 2), expect="m")
+    e = err.value
+    assert isinstance(e, InvalidAnswer)
+    assert e.positions == [(1, 2), (2, 1), (2, 2), (3, 1), (3, 2)]
+    message = str(e)
+    assert "Entries (1,2), (2,1) are empty." in message
+    assert "Entry (2,2): This answer is a length in metres; 2 s is a time." in message
+    assert "Entry (3,1): Unknown name “x”" in message
+    assert "Entry (3,2): Use a dot for decimals" in message
+
+
+def test_one_empty_entry():
+    with pytest.raises(InvalidEntries, match=r"^Entry \(2,1\) is empty\.$") as err:
+        parse_entries([["1", "0"], [" ", "1"]], (2, 2))
+    assert err.value.positions == [(2, 1)]
+
+
+def test_parse_entries_checks_the_shape():
+    with pytest.raises(InvalidAnswer, match="2×2 matrix"):
+        parse_entries([["1", "2"]], (2, 2))
+
+
+def rot(theta):
+    c, s = math.cos(theta), math.sin(theta)
+    return [[c, -s], [s, c]]
+
+
+def tags(got, key, **kw):
+    return [t for t, _ in whole_matrix_slips(got, key, **kw)]
+
+
+def test_slips_of_a_rotation():
+    th = math.radians(30)
+    key = rot(th)
+    assert tags(rot(-th), key, rotation_angle=th) == ["transpose", "inverse", "sine-sign"]
+    assert tags(rot(-th), key) == ["transpose", "inverse"]
+    assert tags([[-v for v in row] for row in key], key) == ["negated"]
+    assert tags([key[1], key[0]], key) == ["rows-swapped"]
+    assert tags([[row[1], row[0]] for row in key], key) == ["columns-swapped"]
+    assert tags(rot(30.0), key, rotation_angle=th) == ["degrees"]
+    assert tags(key, key, rotation_angle=th) == []
+    assert tags([[0.1, 0.2], [0.3, 0.4]], key, rotation_angle=th) == []
+
+
+def test_a_slip_equal_to_the_key_is_never_reported():
+    # R(180°): its transpose, inverse and R(−180°) are all R(180°) itself.
+    key = rot(math.pi)
+    assert whole_matrix_slips(key, key, rotation_angle=math.pi) == []
+    # The identity is its own transpose, inverse and sine-flip.
+    eye = [[1.0, 0.0], [0.0, 1.0]]
+    assert tags([[-1.0, 0.0], [0.0, -1.0]], eye) == ["negated"]
+
+
+def test_slips_of_a_non_rotation_and_of_a_3x3():
+    key = [[1.0, 2.0], [3.0, 4.0]]
+    assert tags([[1.0, 3.0], [2.0, 4.0]], key) == ["transpose"]
+    assert tags([[-2.0, 1.0], [1.5, -0.5]], key) == ["inverse"]
+    th = math.radians(40)
+    c, s = math.cos(th), math.sin(th)
+    T = [[c, -s, 2.0], [s, c, 1.0], [0.0, 0.0, 1.0]]
+    assert tags([[c, s, 2.0], [-s, c, 1.0], [0.0, 0.0, 1.0]], T, rotation_angle=th) == ["sine-sign"]
+    assert tags([T[0], T[2], T[1]], T) == ["rows-swapped"]
+
+
+def test_wrong_entries_are_named_by_position():
+    th = math.radians(30)
+    key = rot(th)
+    got = [row[:] for row in key]
+    got[0][1] = -got[0][1]
+    assert wrong_entries(got, key) == [(1, 2)]
+    assert wrong_entries([[0.866, -0.5], [0.5, 0.866]], key) == []
+
+
+from hypothesis import given, settings  # noqa: E402
+from hypothesis import strategies as st  # noqa: E402
+
+PASTE_PIECES = st.sampled_from(list("0123456789.+-*/^()[]{},; \n°−") + ["cos(", "sqrt(2)", "array(", "x", "1e999", "dtype=float"])
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.one_of(st.text(max_size=80), st.lists(PASTE_PIECES, max_size=40).map("".join)))
+def test_any_paste_gives_a_matrix_or_a_message(text):
+    try:
+        values = parse_entries(parse_pasted(text, shape=(2, 2)), (2, 2))
+    except InvalidAnswer as err:
+        assert str(err)
+    else:
+        assert len(values) == 2 and all(len(row) == 2 and all(math.isfinite(v) for v in row) for row in values)
