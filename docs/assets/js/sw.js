@@ -76,6 +76,8 @@ self.addEventListener("activate", (event) => {
 
 self.addEventListener("message", (event) => {
   if (event.data?.type === "activate-update") self.skipWaiting();
+  // offline.js asks which version (so which cache) serves the page, to show the stored size.
+  else if (event.data?.type === "version") event.source?.postMessage({ type: "version", version: VERSION });
 });
 
 function isolate(response) {
