@@ -14,12 +14,12 @@ from urllib.parse import urlsplit
 
 import pytest
 from conftest import SITE
-from helpers import (CHAPTERS, answer_debug, answer_derive, answer_trace, check, exercise, feedback, run_build,
+from helpers import (CHAPTERS, answer_debug, answer_derive, answer_trace, check, exercise, feedback, role, run_build,
                      set_editor, wait_runtime)
 from playwright.sync_api import expect
 
 from workbook import bank
-from workbook.contract import ATTR, role_attr
+from workbook.contract import ATTR
 
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 REPORT = """
@@ -40,10 +40,6 @@ def site_pages() -> list[str]:
     home = locs[0]
     assert all(loc.startswith(home) for loc in locs)
     return [loc[len(home):] for loc in locs] + ["404.html"]
-
-
-def sel(role: str) -> str:
-    return f"[{role_attr(role)}]"
 
 
 @pytest.fixture
@@ -138,17 +134,18 @@ def work_chapter_0(page) -> None:
     set_editor(page, build, ROTATE_OK)  # CodeMirror writes its styles into a <style> element
     assert run_build(build, timeout=LONG) == "correct", feedback(build)
 
-    figure = page.locator(sel("figure")).first
-    readouts = figure.locator(sel("readout")).all_inner_texts()
+    figure = page.locator(role("figure")).first
+    readouts = figure.locator(role("readout")).all_inner_texts()
     figure.locator('input[type="range"]').first.focus()
     page.keyboard.press("ArrowRight")
     page.wait_for_function("([fig, sel, before]) => [...fig.querySelectorAll(sel)].map(r => r.textContent).join('|') "
-                           "!== before", arg=[figure.element_handle(), sel("readout"), "|".join(readouts)])
+                           "!== before", arg=[figure.element_handle(), role("readout"), "|".join(readouts)])
 
     derivation = exercise(page, "0.2")
-    derivation.locator(sel("reveal")).click()
-    expect(derivation.locator(".wb-solution")).to_be_visible()
-    page.wait_for_function("el => !!el.querySelector('.wb-solution .katex')", arg=derivation.element_handle())
+    derivation.locator(role("reveal")).click()
+    panel = derivation.locator(role("solution-panel"))
+    expect(panel).to_be_visible()
+    expect(panel.locator(".katex").first).to_be_attached()
     # KaTeX's fonts come from the site (font-src 'self').
     page.evaluate("document.fonts.ready")
     loaded = page.evaluate("[...document.fonts].filter(f => f.family.includes('KaTeX') && f.status === 'loaded').length")
