@@ -14,17 +14,19 @@ Point = tuple[float, float]
 Box = tuple[float, float, float, float]  # left, top, right, bottom (viewBox units)
 
 # Text sizes in viewBox units, as workbook.css sets them (".wb-fig-svg text" and
-# ".wb-fig-small"), and a rough box for a label: 0.6 em a character is wider
-# than most sans-serif glyphs, so the estimate holds the real text.
+# ".wb-fig-small"), and a rough box for a label's ink: 0.6 em a character (plus
+# 0.1 em of side bearings) is wider than most sans-serif glyphs, so the estimate
+# holds the real text; ascenders reach 0.8 em above the baseline, descenders 0.25 em.
 FONT_SIZE = 15.0
 SMALL_SIZE = 12.5
 CHAR_EM = 0.6
+PAD_EM = 0.1
 ASCENT_EM = 0.8
 DESCENT_EM = 0.25
 # How far a placed label may move from its point (viewBox units), nearest first,
-# and the directions tried at each distance (steps of 30° either side of the preferred one).
+# and the directions tried at each distance (steps of 15° either side of the preferred one).
 LABEL_GAPS = (7.0, 15.0, 26.0, 40.0, 56.0)
-LABEL_TURNS = (0, 1, -1, 2, -2, 3, -3, 4, -4, 5, -5, 6)
+LABEL_TURNS = (0,) + tuple(k * sign for k in range(1, 12) for sign in (1, -1)) + (12,)
 CLEARANCE = 2.5  # what a label keeps from a drawn line (half a thick stroke, and a little air)
 AIR = 1.5  # what a label keeps from other texts and dots
 
@@ -71,11 +73,11 @@ def text_box(x: float, y: float, content: str, size: float, anchor: str = "middl
     """The box a text at (x, y) (its baseline) covers, roughly: see CHAR_EM.
 
     >>> text_box(100, 50, "col 1", 10)
-    (85.0, 42.0, 115.0, 52.5)
+    (84.5, 42.0, 115.5, 52.5)
     >>> text_box(100, 50, "ab", 10, anchor="end")
-    (88.0, 42.0, 100.0, 52.5)
+    (87.0, 42.0, 100.0, 52.5)
     """
-    width = len(content) * CHAR_EM * size
+    width = (len(content) * CHAR_EM + PAD_EM) * size
     left = x if anchor == "start" else x - width if anchor == "end" else x - width / 2
     return (left, y - ASCENT_EM * size, left + width, y + DESCENT_EM * size)
 
@@ -258,7 +260,7 @@ class Canvas:
     def _place_labels(self) -> None:
         for p, content, cls, toward in self._labels:
             size = font_size(cls)
-            w, h = len(content) * CHAR_EM * size, (ASCENT_EM + DESCENT_EM) * size
+            w, h = (len(content) * CHAR_EM + PAD_EM) * size, (ASCENT_EM + DESCENT_EM) * size
             x, y = self.xy(*p)
             # a point beyond the picture's edge is labelled where it leaves the picture
             x = min(max(x, self.left + 4), self.left + self.width - 4)
@@ -268,7 +270,7 @@ class Canvas:
             best: tuple[float, Box] | None = None
             for gap in LABEL_GAPS:
                 for turn in LABEL_TURNS:
-                    ux, uy = math.cos(base + turn * math.pi / 6), math.sin(base + turn * math.pi / 6)
+                    ux, uy = math.cos(base + turn * math.pi / 12), math.sin(base + turn * math.pi / 12)
                     reach = gap + abs(ux) * w / 2 + abs(uy) * h / 2
                     cx, cy = x + ux * reach, y + uy * reach
                     box = (cx - w / 2, cy - h / 2, cx + w / 2, cy + h / 2)
