@@ -25,7 +25,7 @@ ASCENT_EM = 0.8
 DESCENT_EM = 0.25
 # How far a placed label may move from its point (viewBox units), nearest first,
 # and the directions tried at each distance (steps of 15° either side of the preferred one).
-LABEL_GAPS = (7.0, 15.0, 26.0, 40.0, 56.0)
+LABEL_GAPS = (7.0, 15.0, 26.0, 40.0, 56.0, 75.0, 100.0)
 LABEL_TURNS = (0,) + tuple(k * sign for k in range(1, 12) for sign in (1, -1)) + (12,)
 CLEARANCE = 2.5  # what a label keeps from a drawn line (half a thick stroke, and a little air)
 AIR = 1.5  # what a label keeps from other texts and dots
