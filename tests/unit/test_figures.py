@@ -285,3 +285,68 @@ def test_hook_places_figures_and_rejects_unknown_names():
         hook._figure(FigureBlock("rotation-2d", 4), "chapters/test.md", seen)
     with pytest.raises(FigureError):
         figure_html("no-such-figure")
+
+
+# ---- labels: clear of each other and of the drawn vectors ---------------------
+# Each figure whose labels are placed (Canvas.label) is swept over its controls'
+# whole ranges on a grid; at every setting no two text boxes overlap, no text
+# crosses an arrow or the arm, and every text stays inside the picture. A text's
+# box is estimated from its x, y, anchor and font size (workbook.figures.svg.text_box).
+from itertools import product  # noqa: E402
+
+from workbook.figures.svg import boxes_overlap, font_size, segment_hits_box, text_box  # noqa: E402
+
+LABEL_SWEEPS = {"rotation-2d": {"theta": 20, "px": 0.5, "py": 0.5}, "jacobian": {"theta1": 10, "theta2": 10}}
+
+
+def sweep(fig, steps):
+    """Every combination of each control from its min to its max in ``steps``."""
+    grids = []
+    for c in fig.controls:
+        n = round((c.max - c.min) / steps[c.name])
+        assert abs(c.min + n * steps[c.name] - c.max) < 1e-9, f"{c.name}: the sweep must reach both ends"
+        grids.append([c.min + k * steps[c.name] for k in range(n + 1)])
+    for values in product(*grids):
+        yield dict(zip((c.name for c in fig.controls), values))
+
+
+def label_boxes(root):
+    return [(t.text, text_box(float(t.get("x")), float(t.get("y")), t.text, font_size(t.get("class", "")),
+                              t.get("text-anchor", "start")))
+            for t in root.iter(SVG + "text")]
+
+
+def vector_segments(root):
+    """The arrows (shaft and head) and the thick lines (the arm), in viewBox units."""
+    segments = []
+    for g in root.iter(SVG + "g"):
+        for line in g.iter(SVG + "line"):
+            segments.append(((float(line.get("x1")), float(line.get("y1"))), (float(line.get("x2")), float(line.get("y2")))))
+        for head in g.iter(SVG + "polygon"):
+            pts = [tuple(map(float, p.split(","))) for p in head.get("points").split()]
+            segments += list(zip(pts, pts[1:] + pts[:1]))
+    for line in root.iter(SVG + "polyline"):
+        if "wb-fig-thick" in line.get("class", "").split():
+            pts = [tuple(map(float, p.split(","))) for p in line.get("points").split()]
+            segments += list(zip(pts, pts[1:]))
+    return segments
+
+
+@pytest.mark.parametrize("name", sorted(LABEL_SWEEPS))
+def test_labels_never_overlap_each_other_or_the_vectors(name):
+    fig = figures.get(name)
+    count = 0
+    for params in sweep(fig, LABEL_SWEEPS[name]):
+        root = ET.fromstring(fig.render(params)["svg"])
+        _, _, width, height = map(float, root.get("viewBox").split())
+        boxes, segments = label_boxes(root), vector_segments(root)
+        assert len(boxes) >= 2 and segments
+        for i, (text, box) in enumerate(boxes):
+            assert 0 <= box[0] and box[2] <= width and 0 <= box[1] and box[3] <= height, \
+                f"{name} at {params}: {text!r} leaves the picture"
+            for other, other_box in boxes[i + 1:]:
+                assert not boxes_overlap(box, other_box), f"{name} at {params}: {text!r} overlaps {other!r}"
+            for p, q in segments:
+                assert not segment_hits_box(p, q, box), f"{name} at {params}: {text!r} lies on a vector"
+        count += 1
+    assert count > 1000

@@ -45,8 +45,10 @@ def draw(p: dict[str, float]) -> dict:
     for k in (0, 1):
         end = (tip[0] + SCALE * J[0][k], tip[1] + SCALE * J[1][k])
         c.arrow(tip, end, "wb-fig-c")
-        c.tag(end, f"col {k + 1}", "wb-fig-label wb-fig-small wb-fig-c")
+        # placed when the picture is done: clear of the arm, the arrows and each other
+        c.label(end, f"col {k + 1}", "wb-fig-label wb-fig-small wb-fig-c", toward=(J[0][k], J[1][k]))
     c.polyline([(0, 0), elbow, tip], "wb-fig-a wb-fig-thick")
+    c.keep_clear([(0, 0), elbow, tip])
     c.dot(elbow, 6, "wb-fig-a wb-fig-solid")
     c.dot((0, 0), 7, "wb-fig-muted wb-fig-solid")
     c.dot(tip, 4, "wb-fig-a wb-fig-solid")

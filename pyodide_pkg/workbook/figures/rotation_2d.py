@@ -25,12 +25,10 @@ def draw(p: dict[str, float]) -> dict:
     qx, qy = rotate_2d(px, py, theta)
     R = rot2(theta)
     c = Canvas(400, 400, (-2.3, 2.3), (-2.3, 2.3))
-    c.grid(1.0)
+    c.grid(1.0, labels=False)  # the axis names are placed labels (below), clear of the arrows
     # the rotated basis: the columns of R(θ)
     c.arrow((0, 0), (R[0][0], R[1][0]), "wb-fig-c wb-fig-thin")
     c.arrow((0, 0), (R[0][1], R[1][1]), "wb-fig-c wb-fig-thin")
-    c.text((R[0][0] * 1.12, R[1][0] * 1.12), "col 1", "wb-fig-label wb-fig-small wb-fig-c")
-    c.text((R[0][1] * 1.12, R[1][1] * 1.12), "col 2", "wb-fig-label wb-fig-small wb-fig-c")
     radius = math.hypot(px, py)
     if radius > 1e-9:
         start = math.atan2(py, px)
@@ -38,15 +36,24 @@ def draw(p: dict[str, float]) -> dict:
         if abs(theta) > 1e-9:
             pts = arc_points(radius * 0.45, start, theta)
             c.polyline(pts[:-1], "wb-fig-b wb-fig-thin")
+            c.keep_clear(pts[::6] + pts[-1:])  # the arc, coarsely: enough to keep labels off it
             c.arrow(pts[-4], pts[-1], "wb-fig-b wb-fig-thin", head=8)
-            mid = arc_points(radius * 0.45 + 0.25, start, theta / 2, n=2)[-1]
-            c.text(mid, "θ", "wb-fig-label wb-fig-b", dy=5)
+            arc_mid = arc_points(radius * 0.45, start, theta / 2, n=2)[-1]
     c.arrow((0, 0), (px, py), "wb-fig-a wb-fig-thick")
     c.arrow((0, 0), (qx, qy), "wb-fig-b wb-fig-thick")
     c.dot((px, py), 5, "wb-fig-a wb-fig-solid")
     c.dot((qx, qy), 5, "wb-fig-b wb-fig-solid")
-    c.tag((px, py), "p", "wb-fig-label wb-fig-a")
-    c.tag((qx, qy), "p′ = R(θ)p", "wb-fig-label wb-fig-b")
+    # Labels are placed last, clear of each other and of every arrow, in this
+    # order (the points first, the axes' names last); each prefers to sit beyond the tip of its vector.
+    c.label((px, py), "p", "wb-fig-label wb-fig-a", toward=(px, py))
+    c.label((qx, qy), "p′ = R(θ)p", "wb-fig-label wb-fig-b", toward=(qx, qy))
+    if radius > 1e-9 and abs(theta) > 1e-9:
+        c.label(arc_mid, "θ", "wb-fig-label wb-fig-b", toward=arc_mid)
+    for k in (0, 1):
+        col = (R[0][k], R[1][k])
+        c.label(col, f"col {k + 1}", "wb-fig-label wb-fig-small wb-fig-c", toward=col)
+    c.label((2.3, 0), "x", "wb-fig-label wb-fig-small", toward=(-1, -1))
+    c.label((0, 2.3), "y", "wb-fig-label wb-fig-small", toward=(1, -1))
     svg = c.svg(f"The point p = ({px:g}, {py:g}) turned by {p['theta']:g}° about the origin")
     return {"svg": svg, "readouts": {"R": matrix(R), "point": vec((px, py)), "image": vec((qx, qy))}}
 

@@ -1,0 +1,209 @@
+"""Code listings on a phone (a 360 px wide viewport).
+
+In Python the indentation is part of the program, so a listing must keep its
+columns: on every chapter page, for every Debug program, every Build exercise's
+plain code (shown before the editor is built) and every CodeMirror editor:
+
+- the first character of every line starts at the same x;
+- a line indented by N spaces has its first non-space character exactly N
+  character widths to the right of that (measured with a Range over the
+  character, not with the line's box);
+- every line stays on one visual line: a listing with a line longer than its
+  box scrolls sideways (scrollWidth > clientWidth), as one block, instead of
+  wrapping;
+
+and no page is wider than the viewport.
+"""
+
+from __future__ import annotations
+
+import pytest
+
+from helpers import CHAPTERS, open_editor, wait_runtime
+from workbook.contract import ATTR, KINDS, ROLE, role_attr
+
+WIDTH = 360
+TOL = 0.5  # px: Chromium places glyphs on a 1/64 px grid; a column off by one is ~9 px
+EDITOR_CHUNK = "**/assets/dist/chunks/editor-*.js"
+
+
+def kind(name: str) -> str:
+    assert name in KINDS
+    return f'[{ATTR.kind}="{name}"]'
+
+
+@pytest.fixture(scope="module")
+def browser_context_args(browser_context_args):
+    # No service worker: the test holds back the editor's chunk (below) to see the
+    # plain code first, and a service worker would answer that request itself.
+    return {**browser_context_args, "viewport": {"width": WIDTH, "height": 740}, "service_workers": "block"}
+
+
+# Measures the listings of one kind on the page. For each line: where its first
+# character starts (origin), where its first non-space character starts, where
+# its last character ends, the vertical extent of all its text (one line, or
+# more if it wrapped), and the height of one character. Each listing is
+# measured scrolled fully left and fully right.
+MEASURE = """async ({which, exercise, line, editor}) => {
+  await document.fonts.ready;
+  const at = (root, index) => {
+    const walk = document.createTreeWalker(root, NodeFilter.SHOW_TEXT);
+    for (let n = walk.nextNode(); n; n = walk.nextNode()) {
+      if (index < n.length) return [n, index];
+      index -= n.length;
+    }
+    throw new Error(`no character ${index} in ${root.textContent.length}`);
+  };
+  const range = (root, from, to) => {
+    const r = document.createRange();
+    const [a, ai] = at(root, from), [b, bi] = at(root, to - 1);
+    r.setStart(a, ai);
+    r.setEnd(b, bi + 1);
+    return r;
+  };
+  const lineAt = (root, start, text, box) => {
+    const row = { text, indent: text.length - text.trimStart().length };
+    if (!text.trim()) return row;
+    const first = range(root, start, start + 1).getBoundingClientRect();
+    const rects = [...range(root, start, start + text.length).getClientRects()].filter((r) => r.width || r.height);
+    Object.assign(row, {
+      origin: first.left,
+      charHeight: first.height,
+      textLeft: range(root, start + row.indent, start + row.indent + 1).getBoundingClientRect().left,
+      right: range(root, start + text.length - 1, start + text.length).getBoundingClientRect().right,
+      top: Math.min(...rects.map((r) => r.top)),
+      bottom: Math.max(...rects.map((r) => r.bottom)),
+    });
+    if (box) {
+      const b = box.getBoundingClientRect();
+      Object.assign(row, { boxLeft: b.left, boxHeight: b.height });
+    }
+    return row;
+  };
+  const listings = [];
+  for (const ex of document.querySelectorAll(exercise)) {
+    let scroller, lines;
+    if (which === "debug") {
+      const els = [...ex.querySelectorAll(line)];
+      if (!els.length) continue;
+      scroller = els[0].parentElement;
+      lines = () => els.map((el) => { const code = el.querySelector("code"); return lineAt(code, 0, code.textContent, code); });
+    } else if (which === "plain") {
+      const pre = ex.querySelector(`${editor} > pre`);
+      if (!pre) continue;
+      scroller = pre;
+      lines = () => {
+        const out = [];
+        let start = 0;
+        for (const text of pre.textContent.split("\\n")) {
+          out.push(lineAt(pre, start, text, null));
+          start += text.length + 1;
+        }
+        return out;
+      };
+    } else {
+      scroller = ex.querySelector(`${editor} .cm-scroller`);
+      if (!scroller) continue;
+      lines = () => [...scroller.querySelectorAll(".cm-line")].map((el) => lineAt(el, 0, el.textContent, el));
+    }
+    const box = scroller.getBoundingClientRect();
+    scroller.scrollLeft = 0;
+    const left = lines();
+    scroller.scrollLeft = scroller.scrollWidth;
+    const scrolledBy = scroller.scrollLeft;
+    const right = lines();
+    scroller.scrollLeft = 0;
+    listings.push({
+      id: ex.getAttribute("data-exercise-id"), which,
+      scrollWidth: scroller.scrollWidth, clientWidth: scroller.clientWidth,
+      visibleRight: box.left + scroller.clientLeft + scroller.clientWidth,
+      scrolledBy, lines: left, scrolled: right,
+    });
+  }
+  return listings;
+}"""
+
+PAGE_WIDTH = """() => ({
+  view: document.documentElement.clientWidth,
+  html: document.documentElement.scrollWidth,
+  body: document.body.scrollWidth,
+})"""
+
+
+def measure(page, which: str) -> list[dict]:
+    ex = f"[{ATTR.exercise}]" + kind("build" if which != "debug" else "debug")
+    return page.evaluate(MEASURE, {"which": which, "exercise": ex, "line": f"[{role_attr(ROLE.line)}]",
+                                   "editor": f"[{role_attr(ROLE.editor)}]"})
+
+
+def check_listing(where: str, listing: dict) -> bool:
+    """Assert the listing keeps its columns and does not wrap; return whether it has
+    a line longer than its box (so that it must scroll)."""
+    name = f"{where} {listing['id']} ({listing['which']})"
+    rows = [r for r in listing["lines"] if r["text"].strip()]
+    assert rows, f"{name}: no lines found"
+    for r in rows:
+        assert r["bottom"] - r["top"] < 1.5 * r["charHeight"], f"{name}: the line {r['text']!r} wraps"
+        if "boxHeight" in r:
+            assert r["boxHeight"] < 1.5 * r["charHeight"], f"{name}: the box of {r['text']!r} is taller than a line"
+    origins = [r["origin"] for r in rows]
+    assert max(origins) - min(origins) <= TOL, (
+        f"{name}: lines start at different x: " + ", ".join(f"{r['origin']:.1f} {r['text'][:20]!r}" for r in rows)
+    )
+    if "boxLeft" in rows[0]:
+        lefts = [r["boxLeft"] for r in rows]
+        assert max(lefts) - min(lefts) <= TOL, f"{name}: the lines' boxes start at different x: {lefts}"
+    longest = max(rows, key=lambda r: len(r["text"]))
+    char = (longest["right"] - longest["origin"]) / len(longest["text"])
+    assert char > 4, f"{name}: implausible character width {char:.2f} px"
+    for r in rows:
+        want = r["origin"] + r["indent"] * char
+        assert abs(r["textLeft"] - want) <= TOL, (
+            f"{name}: {r['text']!r} is indented by {r['indent']} spaces but starts "
+            f"{(r['textLeft'] - r['origin']) / char:.2f} character widths in"
+        )
+    # Scrolled fully right, every line has moved by the same amount: one block.
+    moved = [s["origin"] - r["origin"] for r, s in zip(listing["lines"], listing["scrolled"]) if r["text"].strip()]
+    assert max(moved) - min(moved) <= TOL, f"{name}: lines scroll separately: {moved}"
+    assert abs(moved[0] + listing["scrolledBy"]) <= TOL, f"{name}: scrolled {listing['scrolledBy']} px, lines moved {moved[0]}"
+    long = any(r["origin"] + len(r["text"]) * char > listing["visibleRight"] + TOL for r in rows)
+    if long:
+        assert listing["scrollWidth"] > listing["clientWidth"], f"{name}: a line is longer than the box but it does not scroll"
+    return long
+
+
+def test_listings_keep_their_columns_at_360_px(page, site_url):
+    held = []
+
+    def hold(route):  # keep the plain code on the page until it is measured
+        held.append(route)
+
+    page.route(EDITOR_CHUNK, hold)
+    seen = {"debug": 0, "plain": 0, "editor": 0}
+    long = {"debug": 0, "plain": 0, "editor": 0}
+    wide = {}
+    for n, path in CHAPTERS.items():
+        page.goto(site_url + path)
+        builds = page.locator(f"[{ATTR.exercise}]" + kind("build"))
+        for which in ("debug", "plain"):
+            for listing in measure(page, which):
+                seen[which] += 1
+                long[which] += check_listing(path, listing)
+        assert len(measure(page, "plain")) == builds.count(), f"{path}: a Build exercise's plain code is missing"
+        while held:
+            held.pop().continue_()
+        page.unroute(EDITOR_CHUNK, hold)
+        for i in range(builds.count()):
+            open_editor(builds.nth(i))
+        for listing in measure(page, "editor"):
+            seen["editor"] += 1
+            long["editor"] += check_listing(path, listing)
+        page.route(EDITOR_CHUNK, hold)
+        wait_runtime(page, timeout=120_000)  # the figures are drawn: the page is complete
+        size = page.evaluate(PAGE_WIDTH)
+        if max(size["html"], size["body"]) > size["view"]:
+            wide[path] = size
+    assert wide == {}, f"pages wider than the {WIDTH} px viewport: {wide}"
+    # The checks above ran on real listings, long ones included.
+    assert seen["debug"] >= 2 and seen["plain"] == seen["editor"] >= 4, seen
+    assert all(long.values()), f"no listing with a line longer than its box at {WIDTH} px: {long}"
