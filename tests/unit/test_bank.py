@@ -13,6 +13,7 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from pathlib import Path
 
 import pytest
@@ -29,6 +30,9 @@ from workbook.kinds.design import Design
 from workbook.kinds.trace import Trace
 
 from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "golden"))
+from transcript import SLIP_TEXTS  # noqa: E402  (each formula slip typed as a learner would)
 
 
 def check(ex, answer):
@@ -247,17 +251,6 @@ def _formula(ex, text):
     from workbook.formula import parse_formula
 
     return parse_formula(text, ex.variables)
-
-
-# Each slip of a formula exercise, typed as a learner would (the slip itself is a function).
-SLIP_TEXTS = {
-    "3.9": ("v*sin(theta)*dt", "-v*cos(theta)*dt", "-v*sin(theta)", "v*cos(theta)*dt"),
-    "4.8": ("-dy/(dx^2 + dy^2)", "dy/sqrt(dx^2 + dy^2)", "-dx/(dx^2 + dy^2)", "-dx/sqrt(dx^2 + dy^2)"),
-    "6.6": ("L1*cos(theta1) + L2*cos(theta2)", "L1*sin(theta1) + L2*sin(theta1 + theta2)",
-            "(L1 + L2)*cos(theta1 + theta2)"),
-    "7.7": ("L1*sin(theta1) + L2*sin(theta1 + theta2)", "-L1*sin(theta1)", "-L2*sin(theta1 + theta2)",
-            "L1*cos(theta1) + L2*cos(theta1 + theta2)"),
-}
 
 
 def slip_text(ex, slip) -> str:
