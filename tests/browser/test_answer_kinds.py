@@ -7,6 +7,8 @@ from numbers typed here.
 
 from __future__ import annotations
 
+import json
+
 from helpers import (
     check,
     entry,
@@ -21,6 +23,7 @@ from helpers import (
     reveal,
     role,
 )
+from playwright.sync_api import expect
 
 from workbook import bank
 from workbook.contract import ATTR, ROLE, STATE, TAG
@@ -173,3 +176,33 @@ def test_a_derivation_ends_with_the_answer_as_typed(page, site_url):
     assert worked.inner_text() == formula.answer_text
     el.locator(role("answer")).fill(worked.inner_text())
     assert check(el) == STATE.correct
+
+
+def test_a_matrix_answer_comes_back_after_a_reload_and_through_a_progress_file(page, site_url):
+    ex = bank.get("0.7")
+    key = grid_text(ex.cleaned)
+    open_chapter(page, site_url, 0)
+    el = exercise(page, ex.id)
+    fill_matrix(el, key)
+    assert check(el) == STATE.correct
+    page.reload()
+    el = exercise(page, ex.id)
+    assert el.get_attribute(ATTR.state) == STATE.correct
+    expect(entry(el, 2, 1)).to_have_value(key[1][0])  # put back once the grid's module has loaded
+    assert entry_values(el) == key
+
+    # A progress file holding the grid is accepted on import (a fresh browser, no progress yet).
+    page.evaluate("() => window.workbook.progress.reset()")
+    page.goto(site_url + "progress/")
+    record = {"format": "robotics-math-workbook-progress", "version": 1,
+              "exercises": {ex.id: {"solved": True, "attempts": 1, "last": key, "updated": 1}}}
+    message = page.locator("[data-wb-progress-message]")
+    with page.expect_file_chooser() as chooser:
+        page.get_by_role("button", name="Import progress…").click()
+    chooser.value.set_files({"name": "progress.json", "mimeType": "application/json",
+                             "buffer": json.dumps(record).encode()})
+    expect(message).to_contain_text("1 added")
+    open_chapter(page, site_url, 0)
+    el = exercise(page, ex.id)
+    assert el.get_attribute(ATTR.state) == STATE.correct
+    expect(entry(el, 2, 1)).to_have_value(key[1][0])
