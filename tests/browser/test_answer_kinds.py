@@ -136,6 +136,9 @@ def test_a_formula_is_read_back_typeset_and_an_equivalent_form_is_right(page, si
     el.scroll_into_view_if_needed()
     assert el.get_attribute(ATTR.answerKind) == "expression"
     assert el.get_attribute(ATTR.variables) == ",".join(ex.variables)
+    label = el.locator(f'label[for="{el.locator(role("answer")).get_attribute("id")}"]')
+    expect(label.locator(".katex")).to_have_count(len(ex.variables))  # each variable typeset, none in error
+    assert el.locator(".katex-error").count() == 0
     answer = el.locator(role("answer"))
     answer.click()
     page.keyboard.type("L₁ cos θ₁ + L2*(cos(θ1)*cos(θ2) - sin(θ1)*sin(θ2))")
