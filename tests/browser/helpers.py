@@ -109,6 +109,64 @@ def fill_matrix(ex: Locator, rows: list[list[str]]) -> None:
             ex.locator(f'[data-role="entry"][data-row="{i}"][data-col="{j}"]').fill(text)
 
 
+def entry(ex: Locator, row: int, col: int) -> Locator:
+    """The input of entry (row, col), 1-based, of a vector or matrix answer."""
+    return ex.locator(role("entry", f'[{ATTR.row}="{row}"][{ATTR.col}="{col}"]'))
+
+
+def entry_values(ex: Locator) -> list[list[str]]:
+    """What the grid's entries hold, row by row."""
+    cells = ex.locator(role("entry")).evaluate_all(
+        "(els, a) => els.map(e => [Number(e.getAttribute(a.row)), Number(e.getAttribute(a.col)), e.value])",
+        {"row": ATTR.row, "col": ATTR.col})
+    rows = max(r for r, _, _ in cells)
+    cols = max(c for _, c, _ in cells)
+    grid = [[""] * cols for _ in range(rows)]
+    for r, c, v in cells:
+        grid[r - 1][c - 1] = v
+    return grid
+
+
+def marked_entries(ex: Locator) -> set[tuple[int, int]]:
+    """The (row, col) of every entry marked aria-invalid="true"."""
+    cells = ex.locator(role("entry", '[aria-invalid="true"]')).evaluate_all(
+        "(els, a) => els.map(e => [Number(e.getAttribute(a.row)), Number(e.getAttribute(a.col))])",
+        {"row": ATTR.row, "col": ATTR.col})
+    return {(r, c) for r, c in cells}
+
+
+def focused_entry(page: Page) -> tuple[int, int] | None:
+    """(row, col) of the entry that has the keyboard focus, or None."""
+    got = page.evaluate(
+        "a => { const e = document.activeElement; return e && e.getAttribute(a.role) === a.entry"
+        " ? [Number(e.getAttribute(a.row)), Number(e.getAttribute(a.col))] : null; }",
+        {"role": ATTR.role, "entry": ROLE.entry, "row": ATTR.row, "col": ATTR.col})
+    return tuple(got) if got else None
+
+
+def paste(target: Locator, text: str) -> None:
+    """Paste ``text`` into an input as the clipboard would: a ClipboardEvent carrying a DataTransfer."""
+    target.focus()
+    target.evaluate(
+        "(el, text) => { const data = new DataTransfer(); data.setData('text/plain', text);"
+        " el.dispatchEvent(new ClipboardEvent('paste', {clipboardData: data, bubbles: true, cancelable: true})); }",
+        text)
+
+
+def formula_reading(ex: Locator) -> Locator:
+    """Where a formula answer shows how it was read: the first element the answer input is described by."""
+    first = ex.locator(role("answer")).get_attribute("aria-describedby").split()[0]
+    return ex.page.locator(f"#{first}")
+
+
+def reveal(ex: Locator) -> Locator:
+    """Open the derivation; return its panel."""
+    ex.locator(role("reveal")).click()
+    panel = ex.locator(role("solution-panel"))
+    panel.wait_for(state="visible")
+    return panel
+
+
 def solve(page: Page, ex) -> str:
     """Answer exercise ``ex`` (from the bank) correctly in the page; return the state it ends in."""
     el = exercise(page, ex.id)

@@ -109,7 +109,7 @@ def has_visible_focus(page: Page) -> bool:
     }""")
 
 
-def tab_to(page: Page, selector: str, limit: int = 60) -> None:
+def tab_to(page: Page, selector: str, limit: int = 150) -> None:
     """Press Tab until the focus is on an element matching `selector`."""
     for _ in range(limit):
         page.keyboard.press("Tab")

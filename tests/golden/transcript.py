@@ -76,6 +76,66 @@ def derive(ex) -> dict:
     return {name: {"answer": text, **attempt(ex, text)} for name, text in tries.items()}
 
 
+def _grid(rows) -> list[list[str]]:
+    return [[fmt(v, digits=4) for v in row] for row in rows]
+
+
+def shaped(ex) -> dict:
+    """A vector or matrix answer: grids of entry texts, and pasted strings."""
+    key = _grid(ex.cleaned)
+    tries = {"key grid": key, "worked text": ex.worked_text()}
+    tries["transposed"] = [list(col) for col in zip(*key)]
+    tries["negated"] = _grid([[-v for v in row] for row in ex.cleaned])
+    wrong = [row[:] for row in key]
+    wrong[-1][-1] = fmt(ex.cleaned[-1][-1] + 1)
+    tries["one entry wrong"] = wrong
+    empty = [row[:] for row in key]
+    empty[0][0] = ""
+    tries["an empty entry"] = empty
+    tries["pasted as [[...]]"] = "[" + ", ".join("[" + ", ".join(row) + "]" for row in key) + "]"
+    tries["pasted as a b; c d"] = "; ".join(" ".join(row) for row in key)
+    tries["pasted, wrong shape"] = "1 2 3 4 5 6 7 8 9 10 11 12 13"
+    for i, slip in enumerate(ex.slips, start=1):
+        tries[f"slip {i}"] = _grid(slip.value)
+    tries["not a grid"] = 5
+    return {name: {"answer": text, **attempt(ex, text), **_marked(ex, text)} for name, text in tries.items()}
+
+
+def _marked(ex, answer) -> dict:
+    try:
+        data = ex.check(answer).data
+    except GradingError:
+        return {}
+    return {k: data[k] for k in ("wrong", "invalid") if k in data}
+
+
+# Each formula exercise's slips typed as a learner would, in the order of ex.slips (the slip itself is a
+# function; tests/unit/test_bank.py checks that each text is its slip).
+SLIP_TEXTS = {
+    "3.9": ("v*sin(theta)*dt", "-v*cos(theta)*dt", "-v*sin(theta)", "v*cos(theta)*dt"),
+    "4.8": ("-dy/(dx^2 + dy^2)", "dy/sqrt(dx^2 + dy^2)", "-dx/(dx^2 + dy^2)", "-dx/sqrt(dx^2 + dy^2)"),
+    "6.6": ("L1*cos(theta1) + L2*cos(theta2)", "L1*sin(theta1) + L2*sin(theta1 + theta2)",
+            "(L1 + L2)*cos(theta1 + theta2)"),
+    "7.7": ("L1*sin(theta1) + L2*sin(theta1 + theta2)", "-L1*sin(theta1)", "-L2*sin(theta1 + theta2)",
+            "L1*cos(theta1) + L2*cos(theta1 + theta2)"),
+}
+
+
+FORMULA_WRONG = "1 + 0*pi"
+
+
+def formula(ex) -> dict:
+    """A formula answer: the worked formula, the slips, a wrong formula, an unknown name, empty."""
+    tries = {"answer text": ex.answer_text}
+    for i, text in enumerate(SLIP_TEXTS[ex.id], start=1):
+        tries[f"slip {i}"] = text
+    tries["a wrong formula"] = FORMULA_WRONG
+    tries["an unknown name"] = ex.answer_text + " + q7"
+    tries["empty"] = ""
+    tries["unbalanced"] = "(" + ex.answer_text
+    return {name: {"answer": text, **attempt(ex, text)} for name, text in tries.items()}
+
+
 def build(ex) -> dict:
     programs = {"starter": ex.starter, "solution": ex.solution}
     programs.update({name: code.format(fn=ex.function) for name, code in BROKEN.items()})
@@ -95,7 +155,10 @@ def choices(ex) -> dict:
 def transcript() -> dict:
     out = {}
     for ex in bank.all_exercises():
-        replay = derive if ex.kind == "derive" else build if ex.kind == "build" else choices
+        if ex.kind == "derive":
+            replay = {"matrix": shaped, "expression": formula}.get(ex.answer_kind, derive)
+        else:
+            replay = build if ex.kind == "build" else choices
         out[ex.id] = {"kind": ex.kind, "title": ex.title, "said": replay(ex)}
     return out
 

@@ -13,11 +13,15 @@ from __future__ import annotations
 
 import math
 import re
+import sys
 from pathlib import Path
 
 import pytest
 
 from workbook import bank
+from workbook.answer_kinds.expression import FormulaDerive
+from workbook.answer_kinds.matrix import MatrixDerive
+from workbook.formula import equivalent
 from workbook.contract import KINDS
 from workbook.kinds.build import Build
 from workbook.kinds.debug import Debug
@@ -26,6 +30,9 @@ from workbook.kinds.design import Design
 from workbook.kinds.trace import Trace
 
 from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "golden"))
+from transcript import SLIP_TEXTS  # noqa: E402  (each formula slip typed as a learner would)
 
 
 def check(ex, answer):
@@ -38,6 +45,7 @@ ROOT = Path(__file__).resolve().parents[2]
 PAGES = sorted((ROOT / "docs" / "chapters").glob("*.md"))
 ALL = bank.all_exercises()
 BY_KIND = {k: [e for e in ALL if e.kind == k] for k in KINDS}
+BY_ANSWER = {a: [e for e in BY_KIND["derive"] if e.answer_kind == a] for a in ("number", "matrix", "expression")}
 
 
 def page_blocks():
@@ -109,7 +117,7 @@ def printed_answer(ex: Derive) -> str:
     return numbers[-1].replace("−", "-")
 
 
-@pytest.mark.parametrize("ex", BY_KIND["derive"], ids=lambda e: e.id)
+@pytest.mark.parametrize("ex", BY_ANSWER["number"], ids=lambda e: e.id)
 def test_derive_key_matches_the_printed_derivation(ex: Derive):
     shown = printed_answer(ex)
     decimals = len(shown.split(".")[1]) if "." in shown else 0
@@ -121,12 +129,138 @@ def test_derive_key_matches_the_printed_derivation(ex: Derive):
     assert check(ex, repr(ex.key)).status == "correct"
 
 
-@pytest.mark.parametrize("ex", BY_KIND["derive"], ids=lambda e: e.id)
+@pytest.mark.parametrize("ex", BY_ANSWER["number"], ids=lambda e: e.id)
 def test_derive_slips_are_reachable(ex: Derive):
     for slip in ex.slips:
         assert not math.isclose(slip.value, ex.key, abs_tol=1e-9), f"{ex.id}: a slip equals the key"
         result = check(ex, repr(slip.value))
         assert (result.status, result.tag, result.message) == ("incorrect", "slip", slip.message)
+
+
+def test_every_derive_answer_kind_is_walked():
+    assert sum(map(len, BY_ANSWER.values())) == len(BY_KIND["derive"])
+
+
+# ---------------------------------------------------------------- vector and matrix answers
+
+BMATRIX = re.compile(r"\\begin\{bmatrix\}(.*?)\\end\{bmatrix\}", re.S)
+
+
+def printed_matrix(ex: MatrixDerive) -> list[list[str]]:
+    """The entries of the last bmatrix on the ``**Answer:**`` line, as printed, row by row."""
+    lines = [l for l in BLOCKS[ex.id]["solution"].splitlines() if l.strip().startswith("**Answer:**")]
+    assert len(lines) == 1, f"{ex.id}: the derivation needs exactly one '**Answer:**' line"
+    found = BMATRIX.findall(lines[0])
+    assert found, f"{ex.id}: the answer line has no bmatrix: {lines[0]!r}"
+    rows = [r.split("&") for r in found[-1].split(r"\\")]
+    return [[cell.strip() for cell in row] for row in rows]
+
+
+def as_text(grid) -> list[list[str]]:
+    return [[repr(float(v)) for v in row] for row in grid]
+
+
+@pytest.mark.parametrize("ex", BY_ANSWER["matrix"], ids=lambda e: e.id)
+def test_matrix_key_matches_the_printed_derivation(ex: MatrixDerive):
+    shown = printed_matrix(ex)
+    assert [len(row) for row in shown] == [len(row) for row in ex.key], f"{ex.id}: printed shape differs from the key"
+    for i, (row, key_row) in enumerate(zip(shown, ex.key), 1):
+        for j, (text, want) in enumerate(zip(row, key_row), 1):
+            assert NUMBER.fullmatch(text), f"{ex.id} ({i},{j}): print a plain number, not {text!r}"
+            value = float(text.replace("−", "-"))
+            decimals = len(text.split(".")[1]) if "." in text else 0
+            assert abs(value - want) <= 0.5 * 10 ** -decimals + 1e-12, f"{ex.id} ({i},{j}): prints {text}, key {want!r}"
+    assert check(ex, shown).status == "correct", f"{ex.id}: the printed answer is not accepted"
+    assert check(ex, ex.worked_text()).status == "correct", f"{ex.id}: the worked text {ex.worked_text()!r}"
+    assert check(ex, as_text(ex.key)).status == "correct"
+
+
+@pytest.mark.parametrize("ex", BY_ANSWER["matrix"], ids=lambda e: e.id)
+def test_matrix_slips_are_reachable(ex: MatrixDerive):
+    assert ex.slips, f"{ex.id}: name at least one slip of its own"
+    for slip in ex.slips:
+        assert [len(r) for r in slip.value] == [len(r) for r in ex.key], f"{ex.id}: a slip of another shape"
+        assert check(ex, as_text(slip.value)).status != "correct", f"{ex.id}: a slip equals the key"
+        result = check(ex, as_text(slip.value))
+        assert (result.status, result.tag, result.message) == ("incorrect", "slip", slip.message), ex.id
+        assert result.data["wrong"], f"{ex.id}: a slip marks no entry wrong"
+
+
+@pytest.mark.parametrize("ex", BY_ANSWER["matrix"], ids=lambda e: e.id)
+def test_matrix_transpose_is_named_or_refused(ex: MatrixDerive):
+    t = [list(col) for col in zip(*ex.cleaned)]
+    result = check(ex, as_text(t))
+    if len(t) != len(ex.key):  # a vector or a non-square matrix: the transpose has the wrong shape
+        assert result.status == "invalid" and "×" in result.message, (ex.id, result)
+    elif result.status != "correct":  # a symmetric key is its own transpose
+        assert result.status == "incorrect" and result.tag, (ex.id, result)
+        assert result.data["wrong"]
+
+
+def test_a_quaternion_and_its_negative_are_both_right():
+    ex = bank.get("2.7")
+    negated = [[repr(-v) for v in row] for row in ex.cleaned]
+    result = check(ex, negated)
+    assert result.status == "correct" and "same rotation" in result.message
+
+
+# ---------------------------------------------------------------- formula answers
+
+# A rewriting of each formula by hand: expanded, reordered, or through an identity.
+EQUIVALENT_FORMS = {
+    "3.9": "-dt*v*cos(θ - pi/2)",
+    "4.8": "1/(dy + dx^2/dy)",
+    "6.6": "L1*cos(theta1) + L2*(cos(theta1)*cos(theta2) - sin(theta1)*sin(theta2))",
+    "7.7": "-(L₁*sin(θ₁) + L2*(sin(θ1)*cos(θ2) + cos(θ1)*sin(θ2)))",
+}
+
+
+def test_every_formula_exercise_has_a_hand_written_equivalent():
+    assert sorted(EQUIVALENT_FORMS) == sorted(e.id for e in BY_ANSWER["expression"])
+
+
+@pytest.mark.parametrize("ex", BY_ANSWER["expression"], ids=lambda e: e.id)
+def test_formula_answer_and_equivalent_are_right(ex: FormulaDerive):
+    lines = [l for l in BLOCKS[ex.id]["solution"].splitlines() if l.strip().startswith("**Answer:**")]
+    assert len(lines) == 1, f"{ex.id}: the derivation needs exactly one '**Answer:**' line"
+    assert ex.worked_text() == ex.answer_text
+    for text in (ex.answer_text, EQUIVALENT_FORMS[ex.id]):
+        result = check(ex, text)
+        assert result.status == "correct", (ex.id, text, result.message)
+        assert result.data["latex"]
+
+
+@pytest.mark.parametrize("ex", BY_ANSWER["expression"], ids=lambda e: e.id)
+def test_formula_slips_are_reachable(ex: FormulaDerive):
+    assert ex.slips
+    for slip in ex.slips:
+        result = check(ex, slip_text(ex, slip))
+        assert (result.status, result.tag, result.message) == ("incorrect", "slip", slip.message), (ex.id, slip.message)
+        assert not equivalent(_formula(ex, slip_text(ex, slip)), ex.key, ex.domain)
+
+
+@pytest.mark.parametrize("ex", BY_ANSWER["expression"], ids=lambda e: e.id)
+def test_formula_with_an_unknown_name_is_invalid_and_lists_the_names(ex: FormulaDerive):
+    result = check(ex, ex.answer_text + " + q7")
+    assert result.status == "invalid"
+    assert all(name in result.message for name in ex.variables), result.message
+    assert "q7" in result.message
+
+
+def _formula(ex, text):
+    from workbook.formula import parse_formula
+
+    return parse_formula(text, ex.variables)
+
+
+def slip_text(ex, slip) -> str:
+    text = SLIP_TEXTS[ex.id][ex.slips.index(slip)]
+    assert equivalent(_formula(ex, text), slip.value, ex.domain), f"{ex.id}: {text!r} is not the slip it stands for"
+    return text
+
+
+def test_every_formula_slip_has_a_typed_form():
+    assert {e.id: len(e.slips) for e in BY_ANSWER["expression"]} == {k: len(v) for k, v in SLIP_TEXTS.items()}
 
 
 @pytest.mark.parametrize("ex", BY_KIND["build"], ids=lambda e: e.id)

@@ -34,13 +34,16 @@ const MIGRATIONS = {
 const DAY_MS = 86_400_000;
 const isBool = (v) => typeof v === "boolean";
 const isKeyList = (v) => Array.isArray(v) && v.length <= 50 && v.every((k) => typeof k === "string" && k.length <= 200);
+// A vector or matrix answer is saved as its grid of entry texts, row by row.
+const isGrid = (v) => Array.isArray(v) && v.length >= 1 && v.length <= 12
+  && v.every((row) => Array.isArray(row) && row.length <= 12 && row.every((s) => typeof s === "string" && s.length <= 200));
 const FIELDS = {
   solved: [isBool, "true or false"],
   revealed: [isBool, "true or false"],
   solvedAfterReveal: [isBool, "true or false"],
   hinted: [isBool, "true or false"],
   attempts: [(v) => Number.isSafeInteger(v) && v >= 0 && v <= 1_000_000, "a whole number from 0 to 1,000,000"],
-  last: [(v) => (typeof v === "string" && v.length <= 2000) || Number.isFinite(v) || isKeyList(v), "a short answer (text, number or list of step keys)"],
+  last: [(v) => (typeof v === "string" && v.length <= 2000) || Number.isFinite(v) || isKeyList(v) || isGrid(v), "a short answer (text, number, list of step keys or grid of entries)"],
   draftOrder: [isKeyList, "a list of step keys"],
   code: [(v) => typeof v === "string" && v.length <= 100_000, "text of at most 100,000 characters"],
   updated: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS, "a time (milliseconds since 1970) not in the future"],

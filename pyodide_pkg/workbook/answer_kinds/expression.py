@@ -94,10 +94,11 @@ class FormulaDerive(Derive):
                 f"{escape(self.answer_text)}</code></p>")
 
     def widget(self, base: str, page: Page) -> str:
-        names = ", ".join(f"\\({variable_latex(v)}\\)" for v in self.variables)
+        # one math span per name: the page typesets a span whose whole text is a single inline formula
+        names = ", ".join(f'<span class="arithmatex">\\({variable_latex(v)}\\)</span>' for v in self.variables)
         return form(self.kind, (
             f'<label class="wb-label" for="{base}-answer">{escape(self.label)}: a formula in '
-            f'<span class="arithmatex">{names}</span></label>'
+            f"{names}</label>"
             f'<span class="wb-answer-row"><input id="{base}-answer" class="wb-answer wb-formula" '
             f'{role_attr(ROLE.answer)} type="text" inputmode="text" autocomplete="off" autocapitalize="off" '
             f'spellcheck="false" placeholder="e.g. L1*cos(theta1)" aria-describedby="{base}-reading {base}-feedback">'

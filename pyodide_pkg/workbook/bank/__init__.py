@@ -36,6 +36,24 @@ def chapter(n: int) -> tuple[Exercise, ...]:
     return exercises
 
 
+def grid(matrix) -> tuple[tuple[float, ...], ...]:
+    """A matrix from the reference code (a list of rows) as a MatrixDerive key or slip.
+
+    >>> grid([[0, -1], [1, 0]])
+    ((0, -1), (1, 0))
+    """
+    return tuple(tuple(row) for row in matrix)
+
+
+def column(vector) -> tuple[tuple[float], ...]:
+    """A vector as a column: one-entry rows.
+
+    >>> column((1.0, 2.0))
+    ((1.0,), (2.0,))
+    """
+    return tuple((v,) for v in vector)
+
+
 def chapters() -> list[int]:
     return list(_chapter_modules())
 

@@ -2,10 +2,15 @@
 
 import math
 
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
-from ..reference.rotation2d import compose, det_rot2, rotate_2d
+from ..reference.linalg import add
+from ..reference.rotation2d import compose, det_rot2, rot2, rotate_2d
+from . import grid
+
+_R30, _R60 = rot2(math.radians(30)), rot2(math.radians(60))
 
 EXERCISES = (
     Derive(
@@ -77,5 +82,20 @@ EXERCISES = (
         key=det_rot2(math.radians(37)),
         label="det R(37°)",
         slips=(Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ."),),
+    ),
+    MatrixDerive(
+        id="0.7",
+        title="The whole product R(30°)·R(60°)",
+        key=grid(compose(math.radians(30), math.radians(60))),
+        label="R(30°)·R(60°)",
+        rotation_angle=math.radians(90),
+        slips=(
+            Slip(grid([[a * b for a, b in zip(ra, rb)] for ra, rb in zip(_R30, _R60)]),
+                 "You multiplied entry by entry. A matrix product takes row i of the left matrix against "
+                 "column j of the right one: (1,1) is cos30°·cos60° − sin30°·sin60°."),
+            Slip(grid(add(_R30, _R60)),
+                 "That is the sum R(30°) + R(60°). Composing rotations multiplies the matrices; the angles add, "
+                 "not the matrices."),
+        ),
     ),
 )

@@ -2,13 +2,24 @@
 
 import math
 
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.derive import Derive, Slip
 from ..kinds.design import Design, Step
 from ..kinds.trace import Option, Trace
-from ..reference.transform2d import apply, chain, transform2d
+from ..reference.linalg import matvec, transpose
+from ..reference.transform2d import apply, chain, inverse_transform, transform2d
+from . import grid
 
 _T_WORLD_BASE = transform2d(0, 1, 0)
 _T_BASE_TOOL = transform2d(2, 0, math.pi / 2)
+_T12 = transform2d(2, 1, math.pi / 2)  # exercise 1.2's robot pose
+_RT = transpose([row[:2] for row in _T12[:2]])
+_RT_t = matvec(_RT, [_T12[0][2], _T12[1][2]])
+
+
+def _with(rot, t):
+    """[[rot, t], [0, 1]] as a 3×3 key."""
+    return grid([[*rot[0], t[0]], [*rot[1], t[1]], [0.0, 0.0, 1.0]])
 
 EXERCISES = (
     Derive(
@@ -73,5 +84,23 @@ EXERCISES = (
             Step("out", "The pedestrian in the world (GPS) frame, ${}^{\\text{world}}p$"),
         ),
         shown=("world", "out", "lidar", "car"),
+    ),
+    MatrixDerive(
+        id="1.6",
+        title="The inverse transform, whole",
+        key=grid(inverse_transform(_T12)),
+        label="T⁻¹",
+        slips=(
+            Slip(_with(_RT, [-_T12[0][2], -_T12[1][2]]),
+                 "The rotation block is right, but the translation is −t, the robot's position negated in world "
+                 "axes. T⁻¹ needs it in the robot's own axes: −Rᵀt."),
+            Slip(_with(_RT, _RT_t),
+                 "The translation has the wrong sign: it is −Rᵀt. Check with the robot's own position: "
+                 "T⁻¹ must send (2, 1) to the origin."),
+            Slip(_with([row[:2] for row in _T12[:2]], [-_T12[0][2], -_T12[1][2]]),
+                 "Negating the translation is not enough: the turn must be undone too, so the rotation block is "
+                 "Rᵀ, and the translation becomes −Rᵀt."),
+            Slip(grid(_T12), "That is T itself, the robot's pose. The question asks for the transform that undoes it."),
+        ),
     ),
 )

@@ -2,10 +2,15 @@
 
 import math
 
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
 from ..reference.linalg import matvec
 from ..reference.rotation3d import quat_from_axis_angle, quat_norm, rz
+from . import column
+
+_V = (2, 1, 3)
+_Q90Z = quat_from_axis_angle((0, 0, 1), math.pi / 2)  # (w, x, y, z)
 
 EXERCISES = (
     Derive(
@@ -66,6 +71,37 @@ EXERCISES = (
         label="‖q‖",
         slips=(
             Slip(2.0, "That is the sum of the components. The norm squares them first: √(4 · 0.5²)."),
+        ),
+    ),
+    MatrixDerive(
+        id="2.6",
+        title="Yaw a whole vector",
+        key=column(matvec(rz(math.pi / 2), list(_V))),
+        label="Rz(90°)·(2, 1, 3)ᵀ",
+        slips=(
+            Slip(column(matvec(rz(-math.pi / 2), list(_V))),
+                 "That is Rz(−90°)·v, a clockwise yaw (the same as multiplying by the transpose of Rz(90°)). "
+                 "A positive yaw turns x towards y."),
+            Slip(column((_V[1], _V[0], _V[2])),
+                 "You swapped x and y but lost a sign. A quarter turn about z sends (x, y) to (−y, x)."),
+        ),
+    ),
+    MatrixDerive(
+        id="2.7",
+        title="The whole quaternion for 90° about z",
+        key=column(_Q90Z),
+        label="q = (w, x, y, z)ᵀ",
+        either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
+        slips=(
+            Slip(column(quat_from_axis_angle((0, 0, 1), math.pi)),
+                 "That is the quaternion of a 180° turn: you used the full angle. A quaternion holds half of it: "
+                 "w = cos(θ/2), (x, y, z) = sin(θ/2)·n."),
+            Slip(column(_Q90Z[1:] + _Q90Z[:1]),
+                 "Those are the right numbers in the order (x, y, z, w), scalar last, as some libraries store "
+                 "them. This answer asks for (w, x, y, z)."),
+            Slip(column(quat_from_axis_angle((0, 0, 1), -math.pi / 2)),
+                 "That is the conjugate, a turn of −90° (clockwise seen from above). For +90° about +z, "
+                 "the z part is +sin 45°."),
         ),
     ),
 )

@@ -2,14 +2,21 @@
 
 import math
 
+from ..answer_kinds.expression import FormulaDerive
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.debug import Debug
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
 from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
+from ..reference.linalg import add, matmul, sub, identity, transpose
+from . import grid
 
 _P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]
 _Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
 _P_PRED = ekf_predict((0, 0, 0), _P, 1, 0, 1, _Q)[1]
+_F0 = motion_jacobian((0, 0, 0), 1, 0, 1)  # exercise 3.4's F
+_ZERO = [[0.0] * 3 for _ in range(3)]
+_F_NORTH = motion_jacobian((0, 0, math.pi / 2), 2, 0, 0.5)  # exercise 3.7
 
 
 def _predict_pose(x, y, theta, v, omega, dt):
@@ -103,6 +110,59 @@ EXERCISES = (
             Option("d", "Because dt is small, so the nonlinear terms round to zero",
                    "Nothing is rounded: the ones are exact for any dt. The dt-dependent terms sit off the diagonal, "
                    "in the θ column."),
+        ),
+    ),
+    MatrixDerive(
+        id="3.7",
+        title="The whole Jacobian F facing north",
+        key=grid(_F_NORTH),
+        label="F",
+        slips=(
+            Slip(grid(motion_jacobian((0, 0, 0), 2, 0, 0.5)),
+                 "That is F at θ = 0 (or sin and cos swapped). Facing north, sin θ = 1 and cos θ = 0: the "
+                 "heading column is (−v·dt, 0, 1)."),
+            Slip(grid(motion_jacobian((0, 0, math.pi / 2), 2, 0, 1)),
+                 "You left out dt: F(1,3) = −v·sin θ·dt = −2 · 1 · 0.5."),
+            Slip(grid(sub(_F_NORTH, identity(3))),
+                 "That is the derivative of the displacement alone. x′ = x + v cos θ dt also contains x itself, "
+                 "so F carries the identity on its diagonal."),
+            Slip(grid(motion_jacobian((0, 0, -math.pi / 2), 2, 0, 0.5)),
+                 "The sign of F(1,3) is flipped: the derivative of cos θ is −sin θ, so F(1,3) = −v sin θ dt."),
+        ),
+    ),
+    MatrixDerive(
+        id="3.8",
+        title="The whole predicted covariance",
+        key=grid(_P_PRED),
+        label="P⁻ = F P Fᵀ + Q",
+        slips=(
+            Slip(grid(ekf_predict((0, 0, 0), _P, 1, 0, 1, _ZERO)[1]),
+                 "That is F P Fᵀ without the process noise. Add Q: the motion itself is uncertain."),
+            Slip(grid(add(_P, _Q)),
+                 "That is P + Q: you left F out. F passes the heading uncertainty into y, which is where the "
+                 "off-diagonal terms come from."),
+            Slip(grid(add(matmul(matmul(transpose(_F0), _P), _F0), _Q)),
+                 "That is Fᵀ P F + Q, the product in the wrong order. The covariance is pushed forward as "
+                 "F P Fᵀ."),
+        ),
+    ),
+    FormulaDerive(
+        id="3.9",
+        title="F(1,3) as a formula",
+        key=lambda v, theta, dt: motion_jacobian((0.0, 0.0, theta), v, 0.0, dt)[0][2],
+        variables=("v", "theta", "dt"),
+        domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},
+        answer_text="-v*sin(theta)*dt",
+        label="F(1,3)",
+        slips=(
+            Slip(lambda v, theta, dt: v * math.sin(theta) * dt,
+                 "The sign is flipped: the derivative of cos θ is −sin θ."),
+            Slip(lambda v, theta, dt: -v * math.cos(theta) * dt,
+                 "That differentiates to cos θ. x′ contains v cos θ dt, whose derivative by θ is −v sin θ dt."),
+            Slip(lambda v, theta, dt: -v * math.sin(theta),
+                 "You left out dt: the robot drives for dt seconds, so every displacement carries a factor dt."),
+            Slip(lambda v, theta, dt: v * math.cos(theta) * dt,
+                 "That is F(2,3), the derivative of y′. F(1,3) is the derivative of x′ = x + v cos θ dt."),
         ),
     ),
 )

@@ -2,15 +2,21 @@
 
 import math
 
+from ..answer_kinds.expression import FormulaDerive
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
 from ..reference.ekf import ekf_update, measurement_jacobian, range_bearing
+from . import grid
 
 _POSE = (0, 0, 0)
 _LANDMARK = (3, 4)
 _H_PRED = range_bearing(_POSE, _LANDMARK)
 _Z = (4.8, 0.95)
+_H = measurement_jacobian(_POSE, _LANDMARK)
+_DX, _DY = _LANDMARK[0] - _POSE[0], _LANDMARK[1] - _POSE[1]
+_SQ = _DX * _DX + _DY * _DY
 
 EXERCISES = (
     Derive(
@@ -95,6 +101,45 @@ EXERCISES = (
                    "is perfect."),
             Option("d", "$K$ grows without bound",
                    "$K = P/(P+R)$ never exceeds 1 while $P, R \\ge 0$; at $R = 0$ it is exactly 1."),
+        ),
+    ),
+    MatrixDerive(
+        id="4.7",
+        title="The whole measurement Jacobian H",
+        key=grid(_H),
+        label="H",
+        slips=(
+            Slip(grid([[h / _SQ ** 0.5 for h in _H[0]], _H[1]]),
+                 "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
+                 "the range row divides by √q = 5 (only the bearing row divides by q)."),
+            Slip(grid([_H[0], [_DY / _SQ ** 0.5, -_DX / _SQ ** 0.5, -1.0]]),
+                 "The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = 25."),
+            Slip(grid([_H[0], [_H[1][0], _H[1][1], 0.0]]),
+                 "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
+                 "it by −δθ."),
+            Slip(grid([[-h for h in _H[0]], [-_H[1][0], -_H[1][1], _H[1][2]]]),
+                 "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
+                 "dx = lx − x, so moving the robot by +δx shrinks dx."),
+        ),
+    ),
+    FormulaDerive(
+        id="4.8",
+        title="H(2,1) as a formula",
+        key=lambda dx, dy: measurement_jacobian((0.0, 0.0, 0.0), (dx, dy))[1][0],
+        variables=("dx", "dy"),
+        domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)},
+        answer_text="dy/(dx^2 + dy^2)",
+        label="H(2,1) = ∂φ/∂x",
+        slips=(
+            Slip(lambda dx, dy: -dy / (dx * dx + dy * dy),
+                 "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1, and that minus cancels the one in "
+                 "∂atan2(dy, dx)/∂dx = −dy/q."),
+            Slip(lambda dx, dy: dy / (dx * dx + dy * dy) ** 0.5,
+                 "That divides by √q, as the range row does. The derivative of atan2 divides by q = dx² + dy²."),
+            Slip(lambda dx, dy: -dx / (dx * dx + dy * dy),
+                 "That is H(2,2) = ∂φ/∂y. The x-derivative has dy on top."),
+            Slip(lambda dx, dy: -dx / (dx * dx + dy * dy) ** 0.5,
+                 "That is H(1,1) = ∂r/∂x, from the range row. The bearing row is the second one."),
         ),
     ),
 )

@@ -1,18 +1,31 @@
 """Chapter 5 · Pose-graph SLAM."""
 
+import math
+
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
+from ..reference.linalg import det2
 from ..reference.pose_graph import (
+    edge_error_relative,
     edge_error_simple,
     gauss_newton_size,
     information_matrix,
     pose_graph_variables,
+    relative_pose,
 )
+from . import column, grid
 
 _X1 = (0.0, 0.0, 0.0)
 _X2 = (1.1, 0.05, 0.02)
 _Z12 = (1.0, 0.0, 0.0)
 _SIGMA = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
+# Exercise 5.6: the same motion as 5.2, seen from a pose at (2, 1) facing north.
+_XI = (2.0, 1.0, math.pi / 2)
+_XJ = (1.95, 2.1, math.pi / 2 + 0.02)
+# Exercise 5.7: a scan match whose x and y errors are correlated.
+_SIGMA_C = [[0.02, 0.01, 0], [0.01, 0.02, 0], [0, 0, 0.001]]
+_DET_XY = det2([row[:2] for row in _SIGMA_C[:2]])
 
 EXERCISES = (
     Derive(
@@ -82,6 +95,41 @@ EXERCISES = (
             Slip(gauss_newton_size(1000, 6, 500, 3) ** 2,
                  "That is the number of entries of H. The question asks for its side: one row per unknown."),
             Slip(1500, "That counts the landmarks only. Add the 1000 poses, 6 numbers each."),
+        ),
+    ),
+    MatrixDerive(
+        id="5.6",
+        title="Edge error from a turned pose",
+        key=column(edge_error_relative(_XI, _XJ, _Z12)),
+        label="e₁₂ = (eₓ, e_y, e_θ)ᵀ",
+        slips=(
+            Slip(column(edge_error_simple(_XI, _XJ, _Z12)),
+                 "You subtracted the poses in world axes. Odometry measures the motion in pose 1's frame, and "
+                 "pose 1 faces north: turn x₂ − x₁ into that frame first (its forward axis is the world's +y)."),
+            Slip(column([-v for v in edge_error_relative(_XI, _XJ, _Z12)]),
+                 "The sign is flipped: that is prediction minus measurement. The error is z₁₂ − h, measured "
+                 "minus predicted."),
+            Slip(column(relative_pose(_XI, _XJ)),
+                 "That is h, the motion the poses imply, seen from pose 1. The error subtracts it from the "
+                 "odometry reading z₁₂."),
+        ),
+    ),
+    MatrixDerive(
+        id="5.7",
+        title="Information from a correlated covariance",
+        key=grid(information_matrix(_SIGMA_C)),
+        label="Ω = Σ⁻¹",
+        slips=(
+            Slip(grid([[1 / _SIGMA_C[i][i] if i == j else 0.0 for j in range(3)] for i in range(3)]),
+                 "You inverted the diagonal alone. With the correlation 0.01 between x and y, the 2×2 block has "
+                 "to be inverted as a whole: 1/det times [[d, −b], [−c, a]]."),
+            Slip(grid([[1 / v if v else 0.0 for v in row] for row in _SIGMA_C]),
+                 "You took the reciprocal of each entry. The inverse of a matrix is not entry by entry: invert "
+                 "the x–y block as a whole, then the θ entry on its own."),
+            Slip(grid([[v / _DET_XY if i < 2 and j < 2 else (1 / v if i == j else 0.0)
+                        for j, v in enumerate(row)] for i, row in enumerate(_SIGMA_C)]),
+                 "The off-diagonal entries have the wrong sign. The inverse of [[a, b], [c, d]] is "
+                 "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal."),
         ),
     ),
 )

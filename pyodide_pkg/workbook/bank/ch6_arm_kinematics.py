@@ -2,6 +2,7 @@
 
 import math
 
+from ..answer_kinds.expression import FormulaDerive
 from ..kinds.build import Build
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
@@ -100,5 +101,23 @@ EXERCISES = (
         examples=((1, 1, 0.0, 0.0), (1, 1, _T1, _T2), (1, 1, 0.0, math.pi / 2), (2, 1, math.pi / 2, math.pi)),
         random_args=lambda rng: (rng.uniform(0.1, 3), rng.uniform(0.1, 3),
                                  rng.uniform(-math.pi, math.pi), rng.uniform(-math.pi, math.pi)),
+    ),
+    FormulaDerive(
+        id="6.6",
+        title="FK as a formula",
+        key=lambda theta1, theta2, L1, L2: forward_kinematics_2link(L1, L2, theta1, theta2)[0],
+        variables=("theta1", "theta2", "L1", "L2"),
+        domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
+        answer_text="L1*cos(theta1) + L2*cos(theta1 + theta2)",
+        label="x(θ1, θ2)",
+        slips=(
+            Slip(lambda theta1, theta2, L1, L2: L1 * math.cos(theta1) + L2 * math.cos(theta2),
+                 "Link 2 points at θ1 + θ2, not θ2: θ2 is measured from link 1, so the angles add up along "
+                 "the chain."),
+            Slip(lambda theta1, theta2, L1, L2: forward_kinematics_2link(L1, L2, theta1, theta2)[1],
+                 "That is y(θ1, θ2), with sines. The x-coordinate uses cosines."),
+            Slip(lambda theta1, theta2, L1, L2: (L1 + L2) * math.cos(theta1 + theta2),
+                 "That puts both links at θ1 + θ2. Link 1 points at θ1 alone."),
+        ),
     ),
 )

@@ -2,6 +2,8 @@
 
 import math
 
+from ..answer_kinds.expression import FormulaDerive
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.debug import Debug
 from ..kinds.derive import Derive, Slip
 from ..reference.arm import (
@@ -10,6 +12,7 @@ from ..reference.arm import (
     jacobian_det,
     most_manipulable_theta2,
 )
+from . import grid
 
 _J = jacobian_2link(1, 1, 0, math.pi / 2)
 
@@ -92,5 +95,41 @@ EXERCISES = (
         function="jacobian_2link",
         reference=jacobian_2link,
         cases=((1, 1, 0.0, math.pi / 2), (2, 1, 0.3, 0.4), (1, 1, 0.5, -1.2)),
+    ),
+    MatrixDerive(
+        id="7.6",
+        title="The whole Jacobian at θ = (0, 90°)",
+        key=grid(_J),
+        label="J",
+        slips=(
+            Slip(grid([_J[0], [_J[1][0], 1 * math.sin(0 + math.pi / 2)]]),
+                 "J(2,2) uses sin(θ1 + θ2): that is the bug of exercise 7.5. ∂/∂θ2 of L2 sin(θ1 + θ2) is "
+                 "L2 cos(θ1 + θ2) = cos 90° = 0."),
+            Slip(grid(jacobian_2link(1, 1, math.pi / 2, 0)),
+                 "That is J at θ = (90°, 0): the two joint angles are swapped. Here θ1 = 0 and θ2 = 90°."),
+            Slip(grid(jacobian_2link(1, 1, 0, 0)),
+                 "That is J of the straight arm, θ2 = 0. Put θ2 = 90° into sin(θ1 + θ2) and cos(θ1 + θ2)."),
+        ),
+    ),
+    FormulaDerive(
+        id="7.7",
+        title="J(1,1) as a formula",
+        key=lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[0][0],
+        variables=("theta1", "theta2", "L1", "L2"),
+        domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
+        answer_text="-L1*sin(theta1) - L2*sin(theta1 + theta2)",
+        label="J(1,1) = ∂x/∂θ1",
+        slips=(
+            Slip(lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][0],
+                 "The sign is flipped: the derivative of cos is −sin."),
+            Slip(lambda theta1, theta2, L1, L2: -L1 * math.sin(theta1),
+                 "Link 2 moves with θ1 too: its term L2 cos(θ1 + θ2) also depends on θ1, and contributes "
+                 "−L2 sin(θ1 + θ2)."),
+            Slip(lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[0][1],
+                 "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, which "
+                 "moves both links."),
+            Slip(lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[1][0],
+                 "That is J(2,1) = ∂y/∂θ1, from the sines of y. J(1,1) differentiates x, the cosines."),
+        ),
     ),
 )

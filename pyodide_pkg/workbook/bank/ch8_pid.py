@@ -1,9 +1,11 @@
 """Chapter 8 · PID control."""
 
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
-from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step
+from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step, pid_terms
+from . import column
 
 _GAINS = dict(Kp=1, Ki=0.1, Kd=0.5, dt=1)
 _ERRORS = [5, 3, 1]
@@ -112,6 +114,21 @@ EXERCISES = (
             Slip(-d_term(2, 5, 1, 0.1), "Sign flipped: the D term uses e[k] − e[k−1] = 2 − 5 = −3. A falling error gives a negative D."),
             Slip(1 * (2 - 5), "You forgot to divide by dt = 0.1."),
             Slip(1 * (2 - 5) * 0.1, "Divide by dt, don't multiply: the derivative is a change per second."),
+        ),
+    ),
+    MatrixDerive(
+        id="8.7",
+        title="The three terms, one by one",
+        key=column(pid_terms(_ERRORS, **_GAINS)),
+        label="(P, I, D)ᵀ at step 2",
+        slips=(
+            Slip(column((_P2, _GAINS["Ki"] * _ERRORS[2] * _GAINS["dt"], _D2)),
+                 "The I term integrates every error so far, 5 + 3 + 1, not only the current one."),
+            Slip(column((_P2, _I2, -_D2)),
+                 "The D term has the wrong sign: it is Kd·(e[2] − e[1])/dt, new minus old, and the error is "
+                 "shrinking."),
+            Slip(column((_P2, i_term(_ERRORS[:2], _GAINS["Ki"], _GAINS["dt"]), _D2)),
+                 "The I term stops one step short: the integral includes the current error e[2] = 1."),
         ),
     ),
 )

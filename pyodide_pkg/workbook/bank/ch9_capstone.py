@@ -6,10 +6,12 @@ full precision (the page prints them to four decimals, well within tolerance).
 
 import math
 
+from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.derive import Derive, Slip
 from ..kinds.design import Design, Step
 from ..reference.ekf import ekf_update, motion_jacobian, motion_model, range_bearing
 from ..reference.pid import p_term
+from . import column
 
 _START = (5.0, 3.0, math.pi / 6)
 _V, _OMEGA, _DT = 1.0, 0.1, 1.0
@@ -102,6 +104,23 @@ EXERCISES = (
         slips=(
             Slip(_F[0][2], "That is F(1,3) = −v sin θ dt, in row 1. Row 2 is the derivative of y′."),
             Slip(_V * math.sin(_START[2]) * _DT, "∂(v sin θ dt)/∂θ = v cos θ dt, not v sin θ dt."),
+        ),
+    ),
+    MatrixDerive(
+        id="9.8",
+        title="The whole predicted state",
+        key=column(_PRED),
+        label="x′ = (x′, y′, θ′)ᵀ",
+        slips=(
+            Slip(column(motion_model((_START[0], _START[1], _START[2] + _OMEGA * _DT), _V, _OMEGA, _DT)[:2]
+                        + (_PRED[2],)),
+                 "You turned first and then drove. The velocity model moves along the heading at the start "
+                 "of the step, θ = π/6; the turn takes effect from the next step."),
+            Slip(column((_START[0] + _V * math.sin(_START[2]) * _DT, _START[1] + _V * math.cos(_START[2]) * _DT,
+                         _PRED[2])),
+                 "sin and cos are swapped: x moves by v cos θ dt and y by v sin θ dt."),
+            Slip(column(_PRED[:2] + (_START[2],)),
+                 "The heading did not change: θ′ = θ + ω dt, and ω = 0.1 rad/s."),
         ),
     ),
 )

@@ -69,6 +69,24 @@ def pid_step(e: float, e_prev: float, integral: float, Kp: float, Ki: float, Kd:
     return u, new_integral
 
 
+def pid_terms(errors: Sequence[float], Kp: float, Ki: float, Kd: float, dt: float,
+              e_prev: float = 0.0) -> tuple[float, float, float]:
+    """The three terms (P, I, D) of the output at the last of ``errors``; they add up to u.
+
+    ``e_prev`` is the error before the first step, e[−1].
+
+    Exercise 8.7 (8.2's third step): errors 5, 3, 1 with Kp = 1, Ki = 0.1, Kd = 0.5, dt = 1.
+
+    >>> [round(t, 12) for t in pid_terms([5, 3, 1], 1, 0.1, 0.5, 1)]
+    [1, 0.9, -1.0]
+    >>> round(sum(pid_terms([5, 3, 1], 1, 0.1, 0.5, 1)), 12) == round(pid_sequence([5, 3, 1], 1, 0.1, 0.5, 1)[-1], 12)
+    True
+    """
+    _check_dt(dt)
+    before = errors[-2] if len(errors) > 1 else e_prev
+    return p_term(errors[-1], Kp), i_term(errors, Ki, dt), d_term(errors[-1], before, Kd, dt)
+
+
 def pid_sequence(errors: Sequence[float], Kp: float, Ki: float, Kd: float, dt: float,
                  e_prev: float = 0.0) -> list[float]:
     """Run :func:`pid_step` over a list of errors, starting from an empty integral.

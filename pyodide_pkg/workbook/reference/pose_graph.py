@@ -99,6 +99,27 @@ def edge_error_simple(xi: Pose, xj: Pose, z: Pose) -> list[float]:
     return [zk - (bj - ai) for zk, ai, bj in zip(z, xi, xj)]
 
 
+def edge_error_relative(xi: Pose, xj: Pose, z: Pose) -> list[float]:
+    """e = z − (xi⁻¹ ⊕ xj): the measured motion minus the motion the poses
+    imply, both in the frame of pose i, angle wrapped.
+
+    The subtraction form of :func:`edge_error` for a pose i anywhere in the
+    plane: x and y are first turned into pose i's frame (exercise 5.6). With
+    pose i at the origin facing east it is :func:`edge_error_simple`.
+
+    Exercise 5.6: pose 1 at (2, 1) facing north; pose 2 is 1.1 m ahead of it
+    and 0.05 m to its left (at (1.95, 2.1) in the world), turned 0.02 rad more;
+    odometry said (1, 0, 0).
+
+    >>> [round(v, 4) + 0.0 for v in edge_error_relative((2, 1, math.pi / 2), (1.95, 2.1, math.pi / 2 + 0.02), (1, 0, 0))]
+    [-0.1, -0.05, -0.02]
+    >>> edge_error_relative((0, 0, 0), (1.1, 0.05, 0.02), (1, 0, 0)) == edge_error_simple((0, 0, 0), (1.1, 0.05, 0.02), (1, 0, 0))
+    True
+    """
+    h = relative_pose(xi, xj)
+    return [z[0] - h[0], z[1] - h[1], wrap_angle(z[2] - h[2])]
+
+
 def edge_error(xi: Pose, xj: Pose, z: Pose) -> list[float]:
     """The relative-pose edge error e = z ⊖ (xi⁻¹ ⊕ xj), angle wrapped.
 
