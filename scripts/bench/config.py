@@ -22,7 +22,8 @@ CACHE_CONTROL = "max-age=600"
 
 CH0, CH1, CH3 = "chapters/00-rotations-2d/", "chapters/01-transforms/", "chapters/03-ekf-predict/"
 # One exercise of each checked kind: (page, id).
-GRADED = {"derive": (CH0, "0.1"), "trace": (CH0, "0.3"), "debug": (CH3, "3.5"), "design": (CH1, "1.5")}
+GRADED = {"derive": (CH0, "0.1"), "trace": (CH0, "0.3"), "debug": (CH3, "3.5"), "design": (CH1, "1.5"),
+          "matrix": (CH3, "3.8"), "formula": (CH3, "3.9")}  # a 3x3 P⁻; F(1,3) as a formula in v, θ, dt
 DERIVE_INPUT = "sqrt(2)/2"  # an expression (exercises the parser), graded incorrect
 
 BUILD_ID = "0.5"

@@ -138,6 +138,8 @@ TABLE = [
     ("Grade round trip Debug p95", "grade_debug_p95_ms", "ms"),
     ("Grade round trip Design p50", "grade_design_p50_ms", "ms"),
     ("Grade round trip Design p95", "grade_design_p95_ms", "ms"),
+    ("Grade round trip 3×3 matrix p50", "grade_matrix_p50_ms", "ms"),
+    ("Grade round trip formula p50", "grade_formula_p50_ms", "ms"),
     ("First grade on a fresh page (Derive)", "grade_derive_first_ms", "ms"),
     ("Build 0.5 run, no numpy, first", "build_plain_first_ms", "ms"),
     ("Build 0.5 run, no numpy, repeat", "build_plain_ms", "ms"),
