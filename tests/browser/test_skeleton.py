@@ -191,3 +191,20 @@ def test_opened_from_a_file_explains_how_to_serve(browser):
     text = exercise(page, "0.1").locator(role("feedback")).inner_text()
     assert "python3 -m http.server" in text
     page.close()
+
+
+def test_a_check_pressed_before_the_widget_is_ready_is_held_not_lost(page, site_url):
+    """Enter in an answer field before the exercise's script has loaded: no reload, and the answer is checked."""
+    held = []
+    page.route("**/chunks/derive-*.js", lambda route: held.append(route))
+    page.goto(site_url + "chapters/00-rotations-2d/")
+    ex = exercise(page, "0.1")
+    ex.locator(role("answer")).fill("3")
+    ex.locator(role("answer")).press("Enter")
+    page.wait_for_function("() => true")  # the page is still the same document
+    assert "?" not in page.url
+    assert held, "the Derive widget's script was not held back"
+    for route in held:
+        route.continue_()
+    page.unroute("**/chunks/derive-*.js")
+    page.wait_for_function("el => el.dataset.state === 'correct'", arg=ex.element_handle(), timeout=120_000)

@@ -68,6 +68,20 @@ function initHelp(ctx) {
   }
 }
 
+// The page's head holds back a Check pressed before the widget was ready
+// (docs/overrides/main.html); now that it is, check that answer.
+function replayEarlySubmit(el) {
+  const form = el.querySelector("form");
+  if (!form) return;
+  form.dataset.wbReady = "true";
+  const early = window.__workbookSubmits || [];
+  const at = early.indexOf(form);
+  if (at >= 0) {
+    early.splice(at, 1);
+    form.requestSubmit();
+  }
+}
+
 /** Start one exercise element once (pages come back with instant navigation). */
 export function initExercise(el, shared) {
   if (el.dataset.wbReady) return;
@@ -83,6 +97,7 @@ export function initExercise(el, shared) {
   const kind = el.getAttribute(ATTR.kind);
   import(`./kinds/${kind}.js`)
     .then((module) => module.init(ctx))
+    .then(() => replayEarlySubmit(el))
     .catch((err) => {
       el.setAttribute(ATTR.state, STATE.error);
       showMessage(el, `This exercise could not start: ${err.message}`);
