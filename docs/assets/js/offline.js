@@ -13,7 +13,7 @@
 // persistent), a learner with solved exercises is reminded, at most once a week,
 // to export their progress.
 
-import { OFFLINE, setRootState } from "./contract.js";
+import { ATTR, OFFLINE, RUNTIME, setRootState } from "./contract.js";
 
 const UPDATE_CHECK_MS = 30 * 60_000;
 const REMIND_EVERY_MS = 7 * 86_400_000;
@@ -78,19 +78,52 @@ function showUpdate(registration) {
 }
 
 // ---- What is stored, and how much -------------------------------------------------
-/** The version the active service worker serves, or null. */
-function activeVersion(registration) {
-  const worker = registration.active;
-  if (!worker) return Promise.resolve(null);
+/** Send `message` to the service worker `worker`; resolves with its first reply of one of `types`. */
+function ask(worker, message, types) {
+  const sw = navigator.serviceWorker;
   return new Promise((resolve) => {
     const onMessage = (event) => {
-      if (event.data?.type !== "version") return;
-      navigator.serviceWorker.removeEventListener("message", onMessage);
-      resolve(event.data.version);
+      if (!types.includes(event.data?.type)) return;
+      sw.removeEventListener("message", onMessage);
+      resolve(event.data);
     };
-    navigator.serviceWorker.addEventListener("message", onMessage);
-    worker.postMessage({ type: "version" });
+    sw.addEventListener("message", onMessage);
+    worker.postMessage(message);
   });
+}
+
+/** The version the active service worker serves, or null. */
+async function activeVersion(registration) {
+  const worker = registration.active;
+  return worker ? (await ask(worker, { type: "version" }, ["version"])).version : null;
+}
+
+// The offline copy waits until the runtime has started (ready, or failed) and
+// the browser is idle: storing it earlier competed with the start for the link.
+function runtimeSettled() {
+  const root = document.documentElement;
+  const settled = () => [RUNTIME.ready, RUNTIME.failed].includes(root.getAttribute(ATTR.runtime));
+  return new Promise((resolve) => {
+    if (settled()) return resolve();
+    const observer = new MutationObserver(() => {
+      if (!settled()) return;
+      observer.disconnect();
+      resolve();
+    });
+    observer.observe(root, { attributes: true, attributeFilter: [ATTR.runtime] });
+  });
+}
+const idle = () => new Promise((resolve) => (window.requestIdleCallback ? requestIdleCallback(() => resolve(), { timeout: 2000 }) : setTimeout(resolve, 0)));
+
+/** Resolves once the active service worker has stored every file; rejects if it could not. */
+async function stored(registration) {
+  const first = await ask(registration.active, { type: "stored?" }, ["stored"]);
+  if (first.complete) return;
+  await runtimeSettled();
+  await idle();
+  const worker = registration.active; // still the same unless an update took over meanwhile
+  const done = await ask(worker, { type: "store" }, ["stored", "store-failed"]);
+  if (done.type !== "stored") throw new Error(done.message);
 }
 
 /** Bytes of the stored copy: the sum of the cached responses' bodies. */
@@ -210,7 +243,7 @@ export function registerOffline(siteRoot, progress = null) {
     return;
   }
   let controlled = Boolean(sw.controller);
-  // A controlling worker installed only once every file was stored.
+  // A worker controls pages only once every file of its version is stored.
   setOffline(controlled ? OFFLINE.ready : OFFLINE.caching);
   sw.addEventListener("controllerchange", () => {
     // A new version took over: reload rather than mix this page with its files.
@@ -237,7 +270,8 @@ export function registerOffline(siteRoot, progress = null) {
       });
       return sw.ready;
     })
-    .then((registration) => {
+    .then(async (registration) => {
+      await stored(registration);
       setOffline(OFFLINE.ready);
       whenStored(registration).catch(() => {});
     })

@@ -5,10 +5,16 @@
 // URL relative to the site root and its sha256, as a fetch `integrity`, or "" for
 // no check) filled in.
 //
-// - install: fetch every file, each checked against its hash, into one cache
-//   named after VERSION (the memory snapshot is stored inflated, see INFLATE).
-//   Only a complete cache lets the worker install, so a new version is never
-//   served half-downloaded.
+// - install, first visit (no earlier version active): store nothing yet, so the
+//   service worker does not compete with the page's own start for the link.
+//   The page sends "store" once its runtime is ready and the browser is idle;
+//   the files are then fetched through the HTTP cache, which already holds what
+//   the page and its worker fetched, so nothing is downloaded twice. Each file
+//   is checked against its hash (a stale copy in the HTTP cache is fetched again
+//   from the network). The worker takes control of pages only once every file is
+//   stored.
+// - install, update (an earlier version is active): fetch every file into the
+//   new version's cache, so a new version is never served half-downloaded.
 // - the new version waits until the page asks it to take over (the learner
 //   presses "Reload" in the update banner); activation deletes older caches.
 // - fetch: files of the version are served from its cache (one version for
@@ -41,26 +47,47 @@ function inflated(response) {
   return new Response(body, { headers: { "Content-Type": "application/octet-stream" } });
 }
 
+/** Store every file not stored yet (a previous, interrupted run may have stored some). */
 async function precache() {
   const cache = await caches.open(CACHE);
-  // A previous, interrupted install of this same version already fetched some files.
   const have = new Set((await cache.keys()).map((request) => request.url));
   const todo = FILES.filter(([path]) => !have.has(new URL(path, SCOPE).href));
   let next = 0;
+  async function get(url, integrity, mode) {
+    const response = await fetch(new Request(url, { cache: mode, integrity, credentials: "same-origin" }));
+    if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+    return response;
+  }
   async function lane() {
     while (next < todo.length) {
       const [path, integrity] = todo[next++];
       const url = new URL(path, SCOPE).href;
-      const response = await fetch(new Request(url, { cache: "no-cache", integrity, credentials: "same-origin" }));
-      if (!response.ok) throw new Error(`${path}: HTTP ${response.status}`);
+      // The HTTP cache first (bytes the page already fetched), the network if that copy is stale.
+      const response = await get(url, integrity, "default").catch(() => get(url, integrity, "no-cache"));
       await cache.put(url, INFLATE.test(path) ? inflated(response) : response);
     }
   }
   await Promise.all(Array.from({ length: 6 }, lane));
 }
 
+/** Whether every file of this version is stored. */
+async function complete() {
+  const cache = await caches.open(CACHE);
+  const have = new Set((await cache.keys()).map((request) => request.url));
+  return FILES.every(([path]) => have.has(new URL(path, SCOPE).href));
+}
+
+let storing = null; // the store in progress, shared by every page that asks
+function store() {
+  storing ||= precache().finally(() => {
+    storing = null;
+  });
+  return storing;
+}
+
 self.addEventListener("install", (event) => {
-  event.waitUntil(precache());
+  if (self.registration.active) event.waitUntil(precache()); // an update: whole, or not at all
+  else self.skipWaiting(); // the first: nothing to wait for, the page asks for the files later
 });
 
 self.addEventListener("activate", (event) => {
@@ -69,15 +96,26 @@ self.addEventListener("activate", (event) => {
       for (const name of await caches.keys()) {
         if (name.startsWith(PREFIX) && name !== CACHE) await caches.delete(name);
       }
-      await self.clients.claim();
+      if (await complete()) await self.clients.claim();
     })(),
   );
 });
 
 self.addEventListener("message", (event) => {
+  const reply = (message) => event.source?.postMessage({ ...message, version: VERSION });
   if (event.data?.type === "activate-update") self.skipWaiting();
   // offline.js asks which version (so which cache) serves the page, to show the stored size.
-  else if (event.data?.type === "version") event.source?.postMessage({ type: "version", version: VERSION });
+  else if (event.data?.type === "version") reply({ type: "version" });
+  // offline.js asks whether the site is stored, and later asks to store it ("store").
+  else if (event.data?.type === "stored?") event.waitUntil(complete().then((done) => reply({ type: "stored", complete: done })));
+  else if (event.data?.type === "store") {
+    event.waitUntil(
+      store()
+        .then(() => self.clients.claim())
+        .then(() => reply({ type: "stored", complete: true }))
+        .catch((err) => reply({ type: "store-failed", message: String(err?.message || err) })),
+    );
+  }
 });
 
 function isolate(response) {

@@ -31,10 +31,58 @@ async function cached(url) {
   }
 }
 
-async function fetchSnapshot() {
-  const response = (await cached(indexURL + "workbook.snapshot.gz")) || (await networkFetch(indexURL + "workbook.snapshot.gz"));
-  if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
-  let bytes = new Uint8Array(await response.arrayBuffer());
+const SNAPSHOT = indexURL + "workbook.snapshot.gz";
+
+// On a first visit the snapshot is a 4.8 MB download that a plain start does
+// not need: on a slow link (3.9 s at 10 Mbps, 24 s at 1.6 Mbps) it costs far
+// more than booting Python and installing the wheel (under a second). From the
+// cache (a revisit) it is always used. Otherwise its download waits until
+// Pyodide asks for it (after loading pyodide.asm.js, which comes with the
+// WebAssembly on the same link): if the link carried pyodide.asm.js fast
+// enough to bring the snapshot in under BOOT_COST_MS (about 26 Mbps), it is fetched and used;
+// if not, Pyodide boots plainly and the service worker stores the snapshot
+// after the start, for the next visit.
+const BOOT_COST_MS = 1500; // a plain start costs under a second; the margin keeps a loaded machine on localhost on the snapshot
+const SNAPSHOT_BYTES = 4.9e6; // about; the file is 4.6-4.9 MB
+
+/** Bytes per ms the link brought pyodide.asm.js's body at (Resource Timing), or null. */
+function linkSpeed() {
+  const entry = performance.getEntriesByName?.(indexURL + "pyodide.asm.js")?.[0];
+  const size = entry?.encodedBodySize;
+  const ms = entry ? entry.responseEnd - entry.responseStart : 0;
+  if (!(size > 100_000)) return null;
+  stages.link = ms > 0 ? Math.round(size / ms) : "instant"; // bytes per ms, for the benchmark
+  return ms > 0 ? size / ms : null;
+}
+
+function snapshotDownload() {
+  const stored = cached(SNAPSHOT);
+  let fromCache = null;
+  stored.then((hit) => (fromCache = Boolean(hit)));
+  let decide;
+  const decided = new Promise((resolve) => (decide = resolve)); // the network's response, or null: skipped
+  const bytes = (async () => {
+    const response = (await stored) || (await decided);
+    if (!response) throw new Error("the snapshot was skipped");
+    if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
+    return new Uint8Array(await response.arrayBuffer());
+  })();
+  let use = null;
+  return {
+    bytes,
+    /** Whether to use the snapshot (asked when Pyodide wants it; decided once). */
+    worthIt() {
+      if (use !== null) return use;
+      const speed = fromCache ? null : linkSpeed();
+      use = speed === null || SNAPSHOT_BYTES / speed < BOOT_COST_MS;
+      decide(use && !fromCache ? networkFetch(SNAPSHOT) : null);
+      return use;
+    },
+  };
+}
+
+async function readSnapshot(download) {
+  let bytes = await download.bytes;
   if (bytes[0] === 0x1f && bytes[1] === 0x8b) {
     // Still gzipped (a first visit); the service worker stores it inflated, and some servers inflate it.
     const inflated = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
@@ -126,22 +174,57 @@ const mark = (name) => {
 };
 
 async function start() {
-  const snapshot = fetchSnapshot(); // rejects without DecompressionStream where the file is still gzipped
+  const download = snapshotDownload();
+  const snapshot = readSnapshot(download); // rejects without DecompressionStream where the file is still gzipped
   snapshot.then(() => mark("snapshot"), () => {}); // handled below
   const unpatch = precompileWasm(indexURL + "pyodide.asm.wasm");
   importScripts(indexURL + "pyodide.js");
   mark("pyodide.js");
+  // Pyodide reads this option after loading pyodide.asm.js: the moment to decide
+  // (not enumerable, so that loadPyodide's copy of its options does not read it earlier).
+  const options = { indexURL };
+  let skipped = false;
+  Object.defineProperty(options, "_loadSnapshot", {
+    enumerable: false,
+    get() {
+      if (download.worthIt()) return snapshot;
+      skipped = true;
+      stages.snapshot = "skipped: a slow link";
+      return undefined;
+    },
+  });
   try {
-    const py = await loadPyodide({ indexURL, _loadSnapshot: snapshot });
+    const py = await loadPyodide(options);
+    if (skipped) {
+      await py.loadPackage("robotics-workbook", { messageCallback: () => {} });
+      mark("installed");
+      return { py, from: "boot" };
+    }
     mark("restored");
     py.runPython("import random; random.seed()"); // the snapshot's generator state is everyone's
     return { py, from: "snapshot" };
   } catch (err) {
+    if (skipped) throw err;
     unpatch();
     const py = await loadPyodide({ indexURL, packages: ["robotics-workbook"] });
     return { py, from: "boot", why: String((err && err.message) || err) };
   }
 }
+
+// The first grade after a start used to take 30-130 ms instead of 2: the
+// browser compiles WebAssembly functions lazily, on their first call, and the
+// first grade called many for the first time. One grade of each checked kind
+// (not Build: it runs code) before "ready" pays that here instead.
+const WARM_UP = `
+import json
+from workbook import api, bank
+_seen = set()
+for _ex in bank.all_exercises():
+    if _ex.op != "run" and _ex.kind not in _seen:
+        _seen.add(_ex.kind)
+        api.handle(json.dumps({"op": _ex.op, "exercise": _ex.id, "answer": "1"}))
+del _seen, _ex
+`;
 
 // ---- Requests ------------------------------------------------------------------
 const ready = (async () => {
@@ -149,6 +232,8 @@ const ready = (async () => {
   const started = await start();
   pyodide = started.py;
   handle = pyodide.pyimport("workbook.api").handle;
+  mark("handle");
+  pyodide.runPython(WARM_UP);
   mark("ready");
   stages.timeOrigin = performance.timeOrigin; // to line the stages up with the page's clock
   self.postMessage({ type: "ready", ms: performance.now() - t0, from: started.from, why: started.why, stages });
