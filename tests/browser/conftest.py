@@ -10,7 +10,6 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
-from urllib.parse import urlsplit
 
 import pytest
 
@@ -18,7 +17,8 @@ ROOT = Path(__file__).resolve().parents[2]
 SITE = ROOT / "site"
 sys.path.insert(0, str(ROOT / "scripts"))
 
-from find_browser import find_browser  # noqa: E402
+from find_browser import find_browser
+from helpers import keep_to_origin  # noqa: E402
 from site_server import SUBPATH, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 
 
@@ -46,18 +46,7 @@ def browser_type_launch_args(browser_type_launch_args):
 @pytest.fixture
 def external_requests(context, site_url):
     """Abort (and record) every request that leaves the site's origin."""
-    origin = "{0.scheme}://{0.netloc}".format(urlsplit(site_url))
-    blocked: list[str] = []
-
-    def guard(route):
-        url = route.request.url
-        if url.startswith(origin) or url.startswith(("data:", "blob:")):
-            route.continue_()
-        else:
-            blocked.append(url)
-            route.abort()
-
-    context.route("**/*", guard)
+    blocked = keep_to_origin(context, site_url)
     yield blocked
     assert blocked == [], f"requests left the site's origin: {blocked}"
 

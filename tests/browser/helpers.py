@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from urllib.parse import urlsplit
+
 from playwright.sync_api import Locator, Page
 
 from workbook.contract import ATTR, ROLE
@@ -185,3 +187,19 @@ def solve(page: Page, ex) -> str:
         return check(el)
     set_editor(page, el, ex.solution)
     return run_build(el)
+
+
+def keep_to_origin(context, url: str) -> list[str]:
+    """Abort every request of ``context`` that leaves ``url``'s origin; the list records them."""
+    origin = "{0.scheme}://{0.netloc}".format(urlsplit(url))
+    blocked: list[str] = []
+
+    def guard(route):
+        if route.request.url.startswith((origin, "data:", "blob:")):
+            route.continue_()
+        else:
+            blocked.append(route.request.url)
+            route.abort()
+
+    context.route("**/*", guard)
+    return blocked

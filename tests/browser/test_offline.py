@@ -15,12 +15,11 @@ import re
 import shutil
 import time
 from pathlib import Path
-from urllib.parse import urlsplit
 
 import pytest
 from conftest import SITE
 from site_server import SiteServer
-from helpers import role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
+from helpers import keep_to_origin, role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page, expect
 
 ROTATE_NUMPY = (
@@ -184,18 +183,8 @@ def publish_new_version(root: Path) -> None:
 
 def test_a_new_version_is_announced_and_replaces_the_old_cache(browser, deploy):
     root, url = deploy
-    origin = "{0.scheme}://{0.netloc}".format(urlsplit(url))
     context = browser.new_context()
-    blocked: list[str] = []
-
-    def guard(route):
-        if route.request.url.startswith((origin, "data:", "blob:")):
-            route.continue_()
-        else:
-            blocked.append(route.request.url)
-            route.abort()
-
-    context.route("**/*", guard)
+    blocked = keep_to_origin(context, url)
     page = context.new_page()
     errors: list[str] = []
     page.on("pageerror", lambda err: errors.append(str(err)))

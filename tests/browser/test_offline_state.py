@@ -21,6 +21,7 @@ from urllib.parse import urlsplit
 
 import pytest
 from conftest import ROOT, SITE
+from helpers import keep_to_origin
 from playwright.sync_api import expect
 
 from workbook.contract import ATTR, DATA
@@ -159,18 +160,8 @@ def test_the_footer_shows_the_stored_size_and_persistence_is_asked_once(recorded
 
 
 def test_webkit_reminds_a_learner_to_export_at_most_once_a_week(browser, site_url):
-    origin = "{0.scheme}://{0.netloc}".format(urlsplit(site_url))
     context = browser.new_context(user_agent=SAFARI)
-    blocked: list[str] = []
-
-    def guard(route):
-        if route.request.url.startswith((origin, "data:", "blob:")):
-            route.continue_()
-        else:
-            blocked.append(route.request.url)
-            route.abort()
-
-    context.route("**/*", guard)
+    blocked = keep_to_origin(context, site_url)
     context.add_init_script(STUB_PERSIST)
     try:
         page = context.new_page()
