@@ -29,6 +29,7 @@ from typing import Any, Callable, ClassVar, Mapping
 from ..answers import InvalidAnswer
 from ..contract import ATTR, ROLE
 from ..formula import equivalent, parse_formula, variable_latex
+from ..tolerance import agrees, clean
 from ..kinds.base import Page, check_button, escape, form, role_attr
 from ..kinds.derive import Derive
 from ..verdict import Verdict
@@ -75,7 +76,7 @@ class FormulaDerive(Derive):
                 want, got = float(self.key(**env)), formula.evaluate(env)
             except (ValueError, ArithmeticError, TypeError):
                 continue
-            if math.isfinite(want) and math.isfinite(got) and abs(got - want) > 1e-3 * max(abs(want), 1e-9):
+            if math.isfinite(want) and math.isfinite(got) and not agrees(got, clean(want)):
                 where = ", ".join(f"{n} = {env[n]:.3g}" for n in self.variables)
                 return f"Not the same formula: at {where} yours gives {got:.4g}, the answer {want:.4g}."
         return "Not the same formula. Check each term against the derivation."
