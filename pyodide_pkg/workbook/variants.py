@@ -1,0 +1,155 @@
+"""Variants: a Derive exercise as a generator of fresh numbers.
+
+An exercise with ``vary=Vary(make, Param(...), ...)`` draws its parameters from
+grids chosen to stay teachable (angles in steps of 5°, lengths in steps of
+0.1 m, ...). ``make(p)`` turns one draw into the exercise's fields (``key``,
+``slips``, and optionally ``title``, ``label``, ...) computed with the reference
+code, plus ``values``: the strings that fill the ``{{name}}`` placeholders of the
+exercise's statement, hint and derivation in the chapter's Markdown.
+
+Variant 0 is the workbook's own numbers (every parameter at its ``default``);
+variant ``n > 0`` is a deterministic draw seeded by the exercise id and ``n``,
+so a link with ``n`` in it opens the same numbers in any browser.
+
+>>> p = Param("x", 3, lo=-5, hi=5, step=1)
+>>> p.grid()[:3], p.describe()
+([-5, -4, -3], 'x from -5 to 5 in steps of 1')
+>>> fill("<p>({{x}}, 0)</p> {{m}}", {"x": "-2", "m": "a & b"})
+'<p>(-2, 0)</p> a &amp; b'
+"""
+
+from __future__ import annotations
+
+import math
+import random
+import re
+from dataclasses import dataclass, field
+from html import escape
+from typing import Any, Callable, Iterator, Mapping
+
+PLACEHOLDER = re.compile(r"\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}")
+MAX_SEED = 999_999
+TRIES = 400
+
+
+class VariantError(Exception):
+    """A template names a value the generator does not give, or no draw is well posed."""
+
+
+def placeholders(template: str) -> list[str]:
+    """The names a template asks for, in order of first use."""
+    return list(dict.fromkeys(PLACEHOLDER.findall(template)))
+
+
+def fill(template: str, values: Mapping[str, str]) -> str:
+    """Put each value into the HTML template (escaped: values are text or TeX)."""
+
+    def one(match: re.Match) -> str:
+        name = match.group(1)
+        if name not in values:
+            raise VariantError(f"the template asks for {{{{{name}}}}}, which the generator does not give")
+        return escape(str(values[name]), quote=False)
+
+    return PLACEHOLDER.sub(one, template)
+
+
+def _trim(x: float) -> float | int:
+    """A grid value without float noise (0.30000000000000004 -> 0.3, 3.0 -> 3)."""
+    x = round(x, 10)
+    return int(x) if x == int(x) else x
+
+
+@dataclass(frozen=True)
+class Param:
+    """A number drawn from ``lo, lo+step, ..., hi``; ``default`` is variant 0's.
+
+    ``unit`` only serves the description (e.g. ``"°"``, ``" m"``); ``avoid``
+    lists values never drawn (e.g. 0 where it would make the question trivial).
+    """
+
+    name: str
+    default: float
+    lo: float
+    hi: float
+    step: float
+    unit: str = ""
+    avoid: tuple[float, ...] = ()
+
+    def grid(self) -> list[float]:
+        n = int(round((self.hi - self.lo) / self.step))
+        values = [_trim(self.lo + k * self.step) for k in range(n + 1)]
+        return [v for v in values if not any(math.isclose(v, a, abs_tol=1e-9) for a in self.avoid)]
+
+    def pick(self, rng: random.Random) -> float:
+        return rng.choice(self.grid())
+
+    def describe(self) -> str:
+        u = self.unit
+        return f"{self.name} from {_trim(self.lo)}{u} to {_trim(self.hi)}{u} in steps of {_trim(self.step)}{u}" + (
+            f" (never {', '.join(f'{_trim(a)}{u}' for a in self.avoid)})" if self.avoid else "")
+
+
+@dataclass(frozen=True)
+class Choice:
+    """One of a few named cases (e.g. which entry is asked); ``default`` is variant 0's."""
+
+    name: str
+    default: Any
+    options: tuple[Any, ...]
+
+    def grid(self) -> list[Any]:
+        return list(self.options)
+
+    def pick(self, rng: random.Random) -> Any:
+        return rng.choice(self.options)
+
+    def describe(self) -> str:
+        return f"{self.name} one of {', '.join(map(str, self.options))}"
+
+
+@dataclass(frozen=True)
+class Vary:
+    """How an exercise varies: ``make(p) -> {field: value, ..., "values": {...}}``.
+
+    ``valid(p)`` rejects draws that are not well posed (an unreachable target,
+    an accidental singularity, a question that became trivial). Draws equal to
+    variant 0's parameters are never used for ``n > 0``.
+    """
+
+    make: Callable[[dict[str, Any]], dict[str, Any]]
+    params: tuple[Param | Choice, ...] = ()
+    valid: Callable[[dict[str, Any]], bool] = field(default=lambda p: True)
+
+    def __init__(self, make, *params, valid=None):
+        object.__setattr__(self, "make", make)
+        object.__setattr__(self, "params", tuple(params))
+        object.__setattr__(self, "valid", valid or (lambda p: True))
+
+    @property
+    def defaults(self) -> dict[str, Any]:
+        return {q.name: q.default for q in self.params}
+
+    def candidates(self, exercise_id: str, seed: int) -> Iterator[dict[str, Any]]:
+        """Variant 0's parameters; or, for ``seed > 0``, valid draws in a fixed order."""
+        if seed == 0:
+            yield self.defaults
+            return
+        rng = random.Random(f"{exercise_id}/{seed}")
+        defaults = self.defaults
+        for _ in range(TRIES):
+            p = {q.name: q.pick(rng) for q in self.params}
+            if p != defaults and self.valid(p):
+                yield p
+
+    def describe(self) -> str:
+        return "; ".join(q.describe() for q in self.params)
+
+
+def check_seed(seed: object) -> int:
+    """A variant number from a request or a link: a whole number 0..MAX_SEED."""
+    if isinstance(seed, bool) or not isinstance(seed, (int, str)):
+        raise ValueError("a variant is a whole number")
+    n = int(seed) if isinstance(seed, int) or str(seed).isdigit() else -1
+    if not 0 <= n <= MAX_SEED:
+        raise ValueError(f"a variant is a whole number from 0 to {MAX_SEED}")
+    return n
