@@ -11,7 +11,12 @@ Requests (``contract.json`` → ``ops``):
 * ``{"op": "split", "exercise": "0.7", "text": "[[0, -1], [1, 0]]"}``: a pasted
   vector or matrix split into the exercise's entries (Derive, shaped answers);
 * ``{"op": "read", "exercise": "6.6", "answer": "L1 cos θ1"}``: how an answer is
-  read (a formula's typeset form), before it is checked (Derive).
+  read (a formula's typeset form), before it is checked (Derive);
+* ``{"op": "draw", "exercise": "0.1", "variant": 17, "texts": {...}}``: variant
+  17's statement, hint, derivation and label, filled into the exercise's
+  templates (Derive).
+
+``grade``, ``split`` and ``read`` take an optional ``"variant"`` (default 0).
 
 Every reply is an envelope: ``{"ok": true, "value": VERDICT_OR_FRAME}`` or
 ``{"ok": false, "error": {"kind": ..., "message": ...}}``.
@@ -30,12 +35,17 @@ from typing import Any
 
 from . import bank
 from .contract import OPS
+from .variants import VariantError, check_seed, fill
 from .verdict import GradingError, fail, ok
 
 
 def _exercise(request: dict[str, Any], kind: str | None = None):
     try:
-        ex = bank.get(str(request.get("exercise")))
+        seed = check_seed(request.get("variant", 0))
+    except ValueError as err:
+        raise GradingError("bad-request", f"This page asked for variant {request.get('variant')!r}: {err}.") from None
+    try:
+        ex = bank.variant(str(request.get("exercise")), seed)
     except KeyError:
         raise GradingError("unknown-exercise", f"This page asked about exercise {request.get('exercise')!r}, "
                            "which the grader does not know.") from None
@@ -73,7 +83,22 @@ def _read(request: dict[str, Any]) -> dict[str, Any]:
     return _exercise(request, "derive").read(request.get("answer"))
 
 
-HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read}
+def _draw(request: dict[str, Any]) -> dict[str, Any]:
+    ex = _exercise(request, "derive")
+    texts = request.get("texts")
+    if not isinstance(texts, dict) or not all(isinstance(texts.get(k, ""), str) for k in TEXTS):
+        raise GradingError("bad-request", "A draw needs the exercise's texts (title, prompt, hint, solution).")
+    try:
+        out = {k: fill(texts.get(k, ""), ex.values) for k in TEXTS}
+    except VariantError as err:
+        raise GradingError("bad-request", f"Exercise {ex.id}'s page and grader disagree: {err}.") from None
+    if out["solution"]:
+        out["solution"] += ex.worked_html()
+    return {**out, "variant": ex.seed, "label": ex.label_html(), "params": ex.params}
+
+
+TEXTS = ("title", "prompt", "hint", "solution")
+HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read, "draw": _draw}
 assert set(HANDLERS) == set(OPS), "every op in contract.json has one handler"
 
 

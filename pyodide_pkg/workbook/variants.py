@@ -41,14 +41,15 @@ def placeholders(template: str) -> list[str]:
     return list(dict.fromkeys(PLACEHOLDER.findall(template)))
 
 
-def fill(template: str, values: Mapping[str, str]) -> str:
-    """Put each value into the HTML template (escaped: values are text or TeX)."""
+def fill(template: str, values: Mapping[str, str], *, html: bool = True) -> str:
+    """Put each value into the template: HTML (values escaped: they are text or
+    TeX) or, with ``html=False``, the chapter's Markdown as written."""
 
     def one(match: re.Match) -> str:
         name = match.group(1)
         if name not in values:
             raise VariantError(f"the template asks for {{{{{name}}}}}, which the generator does not give")
-        return escape(str(values[name]), quote=False)
+        return escape(str(values[name]), quote=False) if html else str(values[name])
 
     return PLACEHOLDER.sub(one, template)
 
@@ -153,3 +154,31 @@ def check_seed(seed: object) -> int:
     if not 0 <= n <= MAX_SEED:
         raise ValueError(f"a variant is a whole number from 0 to {MAX_SEED}")
     return n
+
+
+# ---- Formatting helpers for ``values`` ----------------------------------------
+def num(x: float) -> str:
+    """A number as the workbook prints it (``kinds.derive.fmt``): ``num(0.5) == "0.5"``."""
+    from .kinds.derive import fmt
+
+    return fmt(x)
+
+
+def paren(x: float) -> str:
+    """A number for a product in TeX: negative ones in parentheses.
+
+    >>> paren(-2), paren(3)
+    ('(-2)', '3')
+    """
+    s = num(x)
+    return f"({s})" if s.startswith("-") else s
+
+
+def signed(x: float) -> str:
+    """A number as a following term: ``+ 2`` or ``- 2`` (TeX minus).
+
+    >>> signed(-2), signed(0.5)
+    ('- 2', '+ 0.5')
+    """
+    s = num(x)
+    return f"- {s[1:]}" if s.startswith("-") else f"+ {s}"

@@ -28,6 +28,7 @@ from workbook.kinds.debug import Debug
 from workbook.kinds.derive import Derive
 from workbook.kinds.design import Design
 from workbook.kinds.trace import Trace
+from workbook.variants import fill
 
 from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
 
@@ -54,7 +55,9 @@ def page_blocks():
         for block in parse(page.read_text(), page.name):
             if isinstance(block, ExerciseBlock):
                 assert block.id not in blocks, f"{block.id} placed twice"
-                blocks[block.id] = {"page": page.name, "title": block.title, **{k: block.text(k) for k in block.parts}}
+                values = getattr(bank.get(block.id), "values", {})  # variant 0's numbers in the {{name}} places
+                blocks[block.id] = {"page": page.name, "title": fill(block.title, values, html=False),
+                                    **{k: fill(block.text(k), values, html=False) for k in block.parts}}
     return blocks
 
 

@@ -94,12 +94,28 @@ class FormulaDerive(Derive):
         return (f'<p class="wb-worked">Type it as: <code {role_attr(ROLE.worked_answer)}>'
                 f"{escape(self.answer_text)}</code></p>")
 
-    def widget(self, base: str, page: Page) -> str:
+    def label_html(self) -> str:
         # one math span per name: the page typesets a span whose whole text is a single inline formula
         names = ", ".join(f'<span class="arithmatex">\\({variable_latex(v)}\\)</span>' for v in self.variables)
+        return f"{escape(self.label)}: a formula in {names}"
+
+    def typed(self, value: Any) -> str:
+        return self.answer_text if value is self.key else ""
+
+    def degenerate(self) -> str | None:
+        """The worked formula must be accepted, and no slip may agree with the key."""
+        verdict = self.check(self.answer_text)
+        if verdict.status != "correct":
+            return f"its worked answer {self.answer_text!r} is graded {verdict.status}"
+        formula = parse_formula(self.answer_text, self.variables)
+        for slip in self.slips:
+            if equivalent(formula, slip.value, self.domain) is not False:
+                return f"the slip {slip.message[:40]!r} agrees with the key"
+        return None
+
+    def widget(self, base: str, page: Page) -> str:
         return form(self.kind, (
-            f'<label class="wb-label" for="{base}-answer">{escape(self.label)}: a formula in '
-            f"{names}</label>"
+            f'<label class="wb-label" for="{base}-answer">{self.label_html()}</label>'
             f'<span class="wb-answer-row"><input id="{base}-answer" class="wb-answer wb-formula" '
             f'{role_attr(ROLE.answer)} type="text" inputmode="text" autocomplete="off" autocapitalize="off" '
             f'spellcheck="false" placeholder="e.g. L1*cos(theta1)" aria-describedby="{base}-reading {base}-feedback">'

@@ -112,9 +112,16 @@ class MatrixDerive(Derive):
         return (f'<p class="wb-worked">Type it as:</p><div class="wb-worked-grid" {role_attr(ROLE.worked_answer)} '
                 f'style="grid-template-columns: repeat({c}, auto)" aria-label="{r} by {c}">{cells}</div>')
 
-    def widget(self, base: str, page: Page) -> str:
+    def typed(self, value: Rows) -> list[list[str]]:
+        return [[fmt(clean(v), digits=6) for v in row] for row in value]
+
+    def label_html(self) -> str:
         r, c = self.shape
         what = "column vector" if c == 1 else "matrix"
+        return f"{escape(self.label)} ({r}×{c} {what}; paste a whole {what} into any entry)"
+
+    def widget(self, base: str, page: Page) -> str:
+        r, c = self.shape
         cells = "".join(
             f'<input {role_attr(ROLE.entry)} {ATTR.row}="{i}" {ATTR.col}="{j}" type="text" inputmode="text" '
             f'autocomplete="off" autocapitalize="off" spellcheck="false" aria-label="row {i}, column {j}"'
@@ -122,8 +129,7 @@ class MatrixDerive(Derive):
             for i in range(1, r + 1) for j in range(1, c + 1)
         )
         return form(self.kind, (
-            f'<label class="wb-label" for="{base}-answer">{escape(self.label)} ({r}×{c} {what}; '
-            f"paste a whole {what} into any entry)</label>"
+            f'<label class="wb-label" for="{base}-answer">{self.label_html()}</label>'
             f'<span class="wb-grid-row"><span class="wb-grid" role="group" aria-describedby="{base}-feedback" '
             f'style="grid-template-columns: repeat({c}, auto)">{cells}</span>{check_button()}</span>'
         ))

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import importlib
 import pkgutil
-from functools import cache
+from functools import cache, lru_cache
 
 from ..kinds.base import Exercise
 
@@ -67,6 +67,13 @@ def get(exercise_id: str) -> Exercise:
         if ex.id == exercise_id:
             return ex
     raise KeyError(f"no exercise {exercise_id}")
+
+
+@lru_cache(maxsize=512)
+def variant(exercise_id: str, seed: int = 0) -> Exercise:
+    """Exercise ``exercise_id`` with variant ``seed``'s numbers (kinds without variants: itself)."""
+    ex = get(exercise_id)
+    return ex.variant(seed) if hasattr(ex, "variant") else ex
 
 
 def all_exercises() -> list[Exercise]:

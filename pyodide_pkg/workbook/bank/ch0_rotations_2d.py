@@ -8,17 +8,29 @@ from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
 from ..reference.linalg import add
 from ..reference.rotation2d import compose, det_rot2, rot2, rotate_2d
+from ..variants import Param, Vary, num, paren
 from . import grid
 
 _R30, _R60 = rot2(math.radians(30)), rot2(math.radians(60))
+
+
+def _quarter_turn(p):
+    """0.1: the point (x, y) turned by +90°; asked: its y-coordinate."""
+    x, y = p["x"], p["y"]
+    xr, yr = rotate_2d(x, y, math.pi / 2)
+    return {
+        "key": yr,
+        "slips": (Slip(rotate_2d(x, y, -math.pi / 2)[1],
+                       "That is a clockwise turn. R(θ) with θ > 0 turns counter-clockwise."),),
+        "values": {"px": paren(x), "py": paren(y), "xr": num(xr), "yr": num(yr)},
+    }
 
 EXERCISES = (
     Derive(
         id="0.1",
         title="Rotate a point by 90°",
-        key=rotate_2d(3, 0, math.pi / 2)[1],
         label="y-coordinate of the rotated point",
-        slips=(Slip(rotate_2d(3, 0, -math.pi / 2)[1], "That is a clockwise turn. R(θ) with θ > 0 turns counter-clockwise."),),
+        vary=Vary(_quarter_turn, Param("x", 3, -5, 5, 1, avoid=(0,)), Param("y", 0, -5, 5, 1)),
     ),
     Derive(
         id="0.2",

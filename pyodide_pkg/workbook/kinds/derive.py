@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
-from typing import ClassVar
+from dataclasses import dataclass, field, replace
+from typing import Any, ClassVar, Mapping
 
 from ..answers import InvalidAnswer, parse_answer, parse_quantity
 from ..contract import ATTR, TAG
 from ..tolerance import agrees, clean, is_close_miss, is_sign_slip
+from ..variants import Vary, VariantError, check_seed
 from ..verdict import GradingError, Verdict
 from .base import ROLE, Exercise, Page, check_button, escape, form, role_attr
 
@@ -57,9 +58,54 @@ class Derive(Exercise):
     periodic: bool = False
     either_sign: str = ""  # why the negated key is right too (e.g. −q is the same rotation as q)
     slips: tuple[Slip, ...] = ()
+    vary: Vary | None = field(default=None, compare=False, repr=False)
+    seed: int = 0  # the variant: 0 is the workbook's numbers
+    values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)  # the template's fill
+    params: Mapping[str, Any] = field(default_factory=dict, compare=False, repr=False)  # this variant's draw
     kind: ClassVar[str] = "derive"
     answer_kind: ClassVar[str] = "number"
     reveal_label: ClassVar[str] = "Show derivation"
+
+    # ---- variants (workbook/variants.py) --------------------------------------
+    def __post_init__(self) -> None:
+        if self.vary is None:
+            return
+        for p in self.vary.candidates(self.id, self.seed):
+            fields = dict(self.vary.make(p))
+            values = {name: fmt(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else str(v)
+                      for name, v in p.items()}
+            values.update(fields.pop("values", {}))
+            for name, value in {**fields, "values": values, "params": dict(p)}.items():
+                object.__setattr__(self, name, value)
+            problem = self.degenerate()
+            if problem is None:
+                return
+            if self.seed == 0:
+                raise VariantError(f"exercise {self.id}: the workbook's own numbers are degenerate: {problem}")
+        raise VariantError(f"exercise {self.id}: no well-posed draw for variant {self.seed}")
+
+    def variant(self, seed: object) -> "Derive":
+        """This exercise with variant ``seed``'s numbers (0: the workbook's own)."""
+        seed = check_seed(seed)
+        if self.vary is None or seed == self.seed:
+            return self
+        return replace(self, seed=seed)
+
+    def typed(self, value: Any) -> Any:
+        """A value (the key or a slip) as a learner would type it."""
+        return fmt(clean(value), digits=6) + ("°" if self.angle == "deg" else "")
+
+    def degenerate(self) -> str | None:
+        """Why this variant is not well posed, or None: its worked answer must be
+        accepted and each slip must be told apart from the key and from each other."""
+        verdict = self.check(self.worked_text())
+        if verdict.status != "correct":
+            return f"its worked answer {self.worked_text()!r} is graded {verdict.status}"
+        for slip in self.slips:
+            said = self.check(self.typed(slip.value))
+            if said.message != slip.message:
+                return f"the slip {self.typed(slip.value)!r} is graded {said.status}: {said.message!r}"
+        return None
 
     def attributes(self) -> dict[str, str]:
         return {ATTR.answerKind: self.answer_kind}
@@ -134,11 +180,15 @@ class Derive(Exercise):
         Only shaped answers have entries."""
         raise GradingError("wrong-op", f"Exercise {self.id} takes one value, not a vector or matrix.")
 
+    def label_html(self) -> str:
+        """The answer's label (it may change with the variant)."""
+        named = " (degrees)" if self.unit == "°" else (f" ({escape(self.unit)})" if self.unit else "")
+        return f"{escape(self.label)}{named}"
+
     def widget(self, base: str, page: Page) -> str:
         unit = f'<span class="wb-unit" aria-hidden="true">{escape(self.unit)}</span>' if self.unit else ""
-        named = " (degrees)" if self.unit == "°" else (f" ({escape(self.unit)})" if self.unit else "")
         return form(self.kind, (
-            f'<label class="wb-label" for="{base}-answer">{escape(self.label)}{named}</label>'
+            f'<label class="wb-label" for="{base}-answer">{self.label_html()}</label>'
             f'<span class="wb-answer-row"><input id="{base}-answer" class="wb-answer" {role_attr(ROLE.answer)} '
             f'type="text" inputmode="text" autocomplete="off" autocapitalize="off" spellcheck="false" '
             f'placeholder="e.g. 0.5, sqrt(2)/2, pi/4" aria-describedby="{base}-feedback">{unit}'
