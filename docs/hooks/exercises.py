@@ -7,8 +7,11 @@ prompt, hint and solution with the site's own Markdown extensions, and
 fails on an unknown, duplicate or missing exercise id, an unknown kind (one not
 in the contract, or without its page module ``docs/assets/js/kinds/K.js``), an
 answer kind without its module (``workbook/answer_kinds/A.py`` and
-``docs/assets/js/answer-kinds/A.js``), and an unknown figure. It also writes ``assets/exercises.json`` (the chapters and the
-ids on each, for the progress pages) and exposes the contract to the theme
+``docs/assets/js/answer-kinds/A.js``), an unknown figure, and a ``{{name}}``
+placeholder that the exercise's generator does not fill (``exercise_text.py``).
+It also writes ``assets/exercises.json`` (the chapters and the ids on each, each
+exercise's kind and title, and which ones draw variants: for the progress pages
+and the review queue) and exposes the contract to the theme
 templates as ``config.extra.contract``.
 """
 
@@ -23,11 +26,13 @@ import markdown
 from mkdocs.exceptions import PluginError
 
 from blocks import BlockError, ExerciseBlock, FigureBlock, parse
+from exercise_text import text_of
 from render_exercise import PageTools, dom_id, exercise_html
 from render_figure import figure_html
 from workbook import bank, figures
 from workbook.answer_kinds import classes as answer_classes
 from workbook.contract import ANSWER_KINDS, DATA, KINDS
+from workbook.variants import VariantError, fill
 
 SLOT = '<div data-wb-slot="{id}"></div>'
 MANIFEST = "assets/exercises.json"
@@ -85,10 +90,22 @@ def _exercise(state: BuildState, block: ExerciseBlock, path: str) -> tuple[str, 
     if block.id in state.placed:
         raise PluginError(f"{path}: exercise {block.id} is placed twice (also in {state.placed[block.id]})")
     state.placed[block.id] = path
-    widget = exercise_html(ex, state.convert(block.text("prompt")), state.convert(block.text("hint")),
-                           state.convert(block.text("solution")), PageTools(inline=state.inline))
+    try:
+        text = text_of(block, block.title, state.convert)
+    except ValueError as err:
+        raise PluginError(f"{path}: {err}") from None
+    values = getattr(ex, "values", {})
+    try:
+        shown = text.filled(values)  # variant 0: the workbook's own numbers
+        title = fill(block.title, values, html=False) or ex.title
+    except VariantError as err:
+        raise PluginError(f"{path}: exercise {block.id}: {err}") from None
+    templates = text.as_dict() if getattr(ex, "vary", None) is not None else None
+    if templates is None and text.names():
+        raise PluginError(f"{path}: exercise {block.id} has placeholders {text.names()} but no generator (vary=...)")
+    widget = exercise_html(ex, shown.prompt, shown.hint, shown.solution, PageTools(inline=state.inline), templates)
     slot = SLOT.format(id=block.id)
-    return f"### {block.id} · {block.title or ex.title} {{ #{dom_id(block.id)}-title }}\n\n{slot}\n", widget
+    return f"### {block.id} · {title} {{ #{dom_id(block.id)}-title }}\n\n{slot}\n", widget
 
 
 def _figure(block: FigureBlock, path: str, seen: set[str]) -> tuple[str, str]:
@@ -154,4 +171,8 @@ def on_post_build(config, **kwargs):
     ]
     out = Path(config.site_dir) / MANIFEST
     out.parent.mkdir(parents=True, exist_ok=True)
-    out.write_text(json.dumps({"version": 1, "chapters": chapters}, ensure_ascii=False, separators=(",", ":")))
+    kinds = {ex.id: ex.kind for ex in bank.all_exercises()}
+    variants = [ex.id for ex in bank.all_exercises() if getattr(ex, "vary", None) is not None]
+    titles = {ex.id: ex.title for ex in bank.all_exercises()}
+    out.write_text(json.dumps({"version": 2, "chapters": chapters, "kinds": kinds, "variants": variants,
+                               "titles": titles}, ensure_ascii=False, separators=(",", ":")))

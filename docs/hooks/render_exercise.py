@@ -10,6 +10,7 @@ asks for it (a reader of the page's code can still decode it; the README says so
 from __future__ import annotations
 
 import base64
+import json
 from dataclasses import dataclass
 from html import escape
 from typing import Callable
@@ -57,15 +58,36 @@ def _help(ex: Exercise, base: str, hint_html: str, solution_html: str) -> tuple[
     return "".join(buttons), "".join(panels)
 
 
+def _variant_controls(base: str) -> str:
+    """New numbers, back to the workbook's, and a link to the numbers on screen (exercise.js drives them)."""
+    return (f'<div class="wb-variant" aria-label="Numbers" role="group">'
+            f'<button type="button" class="md-button wb-help-button" {role_attr(ROLE.new_variant)}>New numbers</button>'
+            f'<button type="button" class="md-button wb-help-button" {role_attr(ROLE.original_variant)} hidden>'
+            f"Back to the workbook's numbers</button>"
+            f'<span class="wb-variant-label" {role_attr(ROLE.variant_label)} aria-live="polite">'
+            f"The workbook's numbers</span>"
+            f'<a class="wb-variant-link" {role_attr(ROLE.variant_link)} href="#{base}" hidden>Link to these numbers</a>'
+            f"</div>")
+
+
 def exercise_html(ex: Exercise, prompt_html: str, hint_html: str, solution_html: str,
-                  tools: PageTools | None = None) -> str:
-    """The whole exercise element (CONTRACT.md lists its attributes and roles)."""
+                  tools: PageTools | None = None, templates: dict[str, str] | None = None) -> str:
+    """The whole exercise element (CONTRACT.md lists its attributes and roles).
+
+    ``templates`` (an exercise that draws variants): the title, prompt, hint and
+    derivation with their ``{{name}}`` placeholders, for the worker's ``draw``.
+    """
     tools = tools or PageTools()
     base = dom_id(ex.id)
     if solution_html:
         solution_html += ex.worked_html()
     buttons, panels = _help(ex, base, hint_html, solution_html)
-    extra = "".join(f' {name}="{escape(value)}"' for name, value in ex.attributes().items())
+    attributes = dict(ex.attributes())
+    if templates is not None:
+        attributes[ATTR.variant] = "0"
+        attributes[ATTR.templates] = base64.b64encode(json.dumps(templates, ensure_ascii=False).encode()).decode()
+        buttons += _variant_controls(base)
+    extra = "".join(f' {name}="{escape(value)}"' for name, value in attributes.items())
     return (
         f'<div class="wb-exercise" id="{base}" {ATTR.exercise}="{escape(ex.id)}" {ATTR.kind}="{ex.kind}" '
         f'{ATTR.state}="{STATE.unanswered}"{extra} aria-labelledby="{base}-title">'

@@ -4,6 +4,7 @@
 
 import { ATTR, ROLE, STATE, findRole } from "./contract.js";
 import { setPending, showMessage, showReply } from "./feedback.js";
+import { afterGrade, afterReveal } from "./review.js";
 
 function decodeBase64(text) {
   const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
@@ -12,14 +13,17 @@ function decodeBase64(text) {
 
 // A graded attempt (not an invalid input or an error) counts; the first correct
 // one marks the exercise solved, noting whether the solution was revealed first.
-function recordAttempt({ id, progress }, reply, extra = {}) {
+// What it means per variant, and for the review queue, is review.js's rule.
+function recordAttempt(ctx, reply, extra = {}) {
+  const { id, progress } = ctx;
   const status = reply.ok ? reply.value.status : null;
   if (status !== STATE.correct && status !== STATE.incorrect) return;
   const before = progress.get(id);
-  const patch = { ...extra, attempts: (before.attempts || 0) + 1 };
+  const variant = ctx.variant ?? 0;
+  const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed }) };
   if (status === STATE.correct && !before.solved) {
     patch.solved = true;
-    patch.solvedAfterReveal = Boolean(before.revealed);
+    patch.solvedAfterReveal = Boolean(before.revealedIn?.includes(variant) ?? before.revealed);
   }
   progress.update(id, patch);
 }
@@ -61,8 +65,10 @@ function initHelp(ctx) {
         panel.dataset.rendered = "true";
         ctx.renderMath?.(panel);
       }
-      if (toggle(revealButton, panel, showLabel, hideLabel) && !progress.get(id).revealed) {
-        progress.update(id, { revealed: true });
+      if (toggle(revealButton, panel, showLabel, hideLabel)) {
+        const record = progress.get(id);
+        const variant = ctx.variant ?? 0;
+        if (!record.revealedIn?.includes(variant)) progress.update(id, afterReveal(record, variant, { schedule: ctx.reviewed }));
       }
     });
   }
@@ -86,10 +92,12 @@ function replayEarlySubmit(el) {
 export function initExercise(el, shared) {
   if (el.dataset.wbReady) return;
   el.dataset.wbReady = "true";
-  const ctx = { ...shared, el, id: el.getAttribute(ATTR.exercise) };
-  ctx.submit = (op, payload, options) => submit(ctx, op, payload, options);
+  const ctx = { ...shared, el, id: el.getAttribute(ATTR.exercise), variant: 0 };
+  ctx.reviewed = el.hasAttribute(ATTR.variant); // exercises that draw variants join the review queue
+  ctx.submit = (op, payload, options) => submit(ctx, op, { ...payload, variant: ctx.variant }, options);
   const saved = ctx.progress.get(ctx.id);
-  if (saved.solved) {
+  const onScreen = shared.start ?? saved.variant ?? 0;
+  if (onScreen === 0 && (saved.done ? saved.done.includes(0) : saved.solved)) {
     el.setAttribute(ATTR.state, STATE.correct);
     showMessage(el, saved.solvedAfterReveal ? "Solved earlier (after revealing the solution)." : "Solved earlier.");
   }

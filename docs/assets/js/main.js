@@ -8,6 +8,7 @@ import { Progress } from "./progress.js";
 import { Runtime } from "./runtime.js";
 import { initFigures } from "./figures.js";
 import { initProgressPage } from "./progress-ui.js";
+import { initPractise } from "./practise.js";
 import { registerOffline } from "./offline.js";
 import { initScrollRegions } from "./a11y.js";
 
@@ -83,6 +84,7 @@ function initPage() {
   else if (runtime.failure) showRuntimeProblem(runtime.failure);
   if (progress.notice) showNotice(progress.notice);
   initProgressPage(progress, siteRoot);
+  initPractise(shared, siteRoot);
 }
 
 function showNotice(text) {

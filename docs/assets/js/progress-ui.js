@@ -6,12 +6,13 @@
 // (the first and each instant navigation) and is idempotent.
 
 import { MAX_IMPORT_BYTES, parseImport } from "./progress.js";
+import { MASTERED, dueIds, isMastered, isSolved, isSolvedAfterReveal, nextDue } from "./review.js";
 
 let manifestPromise = null;
 let listening = false;
 let current = { progress: null, siteRoot: null };
 
-function loadManifest(siteRoot) {
+export function loadManifest(siteRoot) {
   manifestPromise ??= fetch(new URL("assets/exercises.json", siteRoot))
     .then((r) => (r.ok ? r.json() : null))
     .catch(() => null)
@@ -22,19 +23,31 @@ function loadManifest(siteRoot) {
   return manifestPromise;
 }
 
+// Solved: one variant answered before its derivation was opened. Mastered (the
+// exercises that draw variants): MASTERED different variants solved so.
+let variantIds = new Set();
+
 function tally(progress, ids) {
   let solved = 0;
   let afterReveal = 0;
+  let mastered = 0;
+  let masterable = 0;
   for (const id of ids) {
     const r = progress.get(id);
-    if (r.solved) r.solvedAfterReveal ? afterReveal++ : solved++;
+    if (isSolved(r)) solved++;
+    else if (isSolvedAfterReveal(r)) afterReveal++;
+    if (variantIds.has(id)) {
+      masterable++;
+      if (isMastered(r)) mastered++;
+    }
   }
-  return { solved, afterReveal, total: ids.length, done: ids.length > 0 && solved + afterReveal === ids.length };
+  return { solved, afterReveal, mastered, masterable, total: ids.length, done: ids.length > 0 && solved + afterReveal === ids.length };
 }
 
-function phrase({ solved, afterReveal, total }, noun = "exercises") {
+function phrase({ solved, afterReveal, total, mastered, masterable }, noun = "exercises") {
   const extra = afterReveal ? ` (and ${afterReveal} more after revealing the solution)` : "";
-  return `${solved} of ${total} ${noun} solved${extra}`;
+  const master = masterable ? `; ${mastered} of ${masterable} mastered` : "";
+  return `${solved} of ${total} ${noun} solved${extra}${master}`;
 }
 
 function el(tag, props = {}, ...children) {
@@ -63,7 +76,11 @@ function markNavigation(manifest, progress, siteRoot) {
 }
 
 function meter(count, label) {
-  return el("progress", { max: count.total, value: count.solved + count.afterReveal, ariaLabel: label });
+  const solved = el("progress", { max: count.total, value: count.solved + count.afterReveal, ariaLabel: `${label}: solved` });
+  if (!count.masterable) return solved;
+  const mastered = el("progress", { className: "wb-mastered", max: count.masterable, value: count.mastered,
+    ariaLabel: `${label}: mastered (${MASTERED} different variants solved)` });
+  return el("span", { className: "wb-meters" }, solved, mastered);
 }
 
 function chapterSummary(manifest, progress, siteRoot) {
@@ -118,11 +135,12 @@ function table(manifest, progress, siteRoot) {
       el("td", {}, el("a", { href: new URL(c.url, siteRoot).href, textContent: c.title })),
       el("td", { textContent: `${count.solved} / ${count.total}` }),
       el("td", { textContent: String(count.afterReveal) }),
+      el("td", { textContent: `${count.mastered} / ${count.masterable}` }),
       el("td", { textContent: count.done ? "✓ finished" : "" }));
   });
   return el("table", { className: "wb-progress-table" },
     el("caption", { className: "wb-sr-only", textContent: "Exercises solved per chapter" }),
-    el("thead", {}, el("tr", {}, ...["Chapter", "Solved", "After reveal", "Status"].map((t) => el("th", { scope: "col", textContent: t })))),
+    el("thead", {}, el("tr", {}, ...["Chapter", "Solved", "After reveal", "Mastered", "Status"].map((t) => el("th", { scope: "col", textContent: t })))),
     el("tbody", {}, ...rows));
 }
 
@@ -240,10 +258,41 @@ function progressPanel(manifest, progress, siteRoot) {
   }
 }
 
+// ---- Review: how many exercises are due (the home page, the Practise link) ------
+function when(ms) {
+  const minutes = Math.round((ms - Date.now()) / 60_000);
+  if (minutes < 60) return `in ${Math.max(1, minutes)} minute${minutes === 1 ? "" : "s"}`;
+  const hours = Math.round(minutes / 60);
+  if (hours < 36) return `in ${hours} hour${hours === 1 ? "" : "s"}`;
+  const days = Math.round(hours / 24);
+  return `in ${days} days`;
+}
+
+export function dueLine(manifest, progress) {
+  const ids = manifest.variants || [];
+  const due = dueIds(progress, ids).length;
+  const next = nextDue(progress, ids);
+  if (due) return { due, text: `${due} exercise${due === 1 ? " is" : "s are"} due for review.` };
+  if (next !== null) return { due, text: `Nothing is due for review; the next exercise comes back ${when(next)}.` };
+  return { due, text: "Your review queue is empty: exercises join it when you answer them in the chapters." };
+}
+
+function dueSummary(manifest, progress, siteRoot) {
+  for (const slot of document.querySelectorAll("[data-wb-due]")) {
+    const { due, text } = dueLine(manifest, progress);
+    slot.classList.add("wb-due");
+    slot.classList.toggle("is-due", due > 0);
+    slot.replaceChildren(el("span", { textContent: `${text} ` }),
+      el("a", { href: new URL("practise/", siteRoot).href, textContent: due ? "Practise now" : "Open the Practise page" }));
+  }
+}
+
 async function refresh() {
   const { progress, siteRoot } = current;
   const manifest = await loadManifest(siteRoot);
   if (!manifest) return;
+  variantIds = new Set(manifest.variants || []);
+  dueSummary(manifest, progress, siteRoot);
   markNavigation(manifest, progress, siteRoot);
   chapterSummary(manifest, progress, siteRoot);
   overallSummary(manifest, progress, siteRoot);

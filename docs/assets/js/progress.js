@@ -1,7 +1,10 @@
 // Learner progress in localStorage: namespaced per site, versioned, never lost.
 //
 // One record per exercise: {solved, revealed, solvedAfterReveal, hinted,
-// attempts, last, code, draftOrder, updated}. A value that cannot be read is set
+// attempts, last, code, draftOrder, updated} and, since version 2, the variant
+// on screen and what was done with each variant, with the review schedule:
+// {variant, done, clean, missed, revealedIn, box, due, reviewed} (review.js
+// says what they mean). Version-1 records are migrated on load and on import. A value that cannot be read is set
 // aside under a backup key, never silently wiped; a full quota is reported, not
 // swallowed (the record stays in memory and can still be exported).
 //
@@ -10,7 +13,9 @@
 // merged per exercise, the newer `updated` winning; anything unexpected refuses
 // the whole file and changes nothing.
 
-export const SCHEMA_VERSION = 1;
+import { migrateRecord, TOP_BOX } from "./review.js";
+
+export const SCHEMA_VERSION = 2;
 export const EXPORT_FORMAT = "robotics-math-workbook-progress";
 export const MAX_IMPORT_BYTES = 1_000_000;
 
@@ -26,8 +31,10 @@ function storage() {
   }
 }
 
+const mapRecords = (exercises, fn) => Object.fromEntries(Object.entries(exercises).map(([id, r]) => [id, fn(r)]));
 const MIGRATIONS = {
-  // 0 -> 1 would go here: (data) => ({ ...data, version: 1 })
+  // 1 -> 2: variants and the review queue; a solved mark becomes variant 0 solved.
+  1: (data) => ({ ...data, version: 2, exercises: mapRecords(data.exercises, (r) => migrateRecord(r)) }),
 };
 
 // ---- The record schema (used to validate imports) ---------------------------
@@ -37,6 +44,10 @@ const isKeyList = (v) => Array.isArray(v) && v.length <= 50 && v.every((k) => ty
 // A vector or matrix answer is saved as its grid of entry texts, row by row.
 const isGrid = (v) => Array.isArray(v) && v.length >= 1 && v.length <= 12
   && v.every((row) => Array.isArray(row) && row.length <= 12 && row.every((s) => typeof s === "string" && s.length <= 200));
+const MAX_VARIANT = 999_999;
+const isVariant = (v) => Number.isSafeInteger(v) && v >= 0 && v <= MAX_VARIANT;
+const isVariantList = (v) => Array.isArray(v) && v.length <= 100 && v.every(isVariant);
+const VARIANTS = [isVariantList, "a list of at most 100 variant numbers (0 to 999,999)"];
 const FIELDS = {
   solved: [isBool, "true or false"],
   revealed: [isBool, "true or false"],
@@ -47,6 +58,14 @@ const FIELDS = {
   draftOrder: [isKeyList, "a list of step keys"],
   code: [(v) => typeof v === "string" && v.length <= 100_000, "text of at most 100,000 characters"],
   updated: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS, "a time (milliseconds since 1970) not in the future"],
+  variant: [isVariant, "a variant number from 0 to 999,999"],
+  done: VARIANTS,
+  clean: VARIANTS,
+  missed: VARIANTS,
+  revealedIn: VARIANTS,
+  box: [(v) => Number.isInteger(v) && v >= 1 && v <= TOP_BOX, `a review box from 1 to ${TOP_BOX}`],
+  due: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + 366 * DAY_MS, "a time (milliseconds since 1970) within a year"],
+  reviewed: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS, "a time (milliseconds since 1970) not in the future"],
 };
 const FORBIDDEN_KEYS = new Set(["__proto__", "constructor", "prototype"]);
 const isObject = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
@@ -100,7 +119,8 @@ export function parseImport(text, knownIds) {
     const exercises = {};
     for (const [id, raw] of Object.entries(data.exercises)) {
       if (knownIds && !knownIds.has(id)) throw new ImportError(`The file mentions exercise “${id.slice(0, 20)}”, which this workbook does not have.`);
-      exercises[id] = cleanRecord(id, raw);
+      const record = cleanRecord(id, raw);
+      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load
     }
     return { ok: true, exercises };
   } catch (err) {

@@ -24,7 +24,7 @@ export function init(ctx) {
     timer = setTimeout(async () => {
       if (!input.value.trim()) return show();
       const mine = ++asked;
-      const reply = await ctx.runtime.request({ op: "read", exercise: ctx.id, answer: input.value });
+      const reply = await ctx.runtime.request({ op: "read", exercise: ctx.id, variant: ctx.variant, answer: input.value });
       if (mine === asked && reply.ok) show(reply.value.latex, reply.value.message);
     }, PAUSE_MS);
   });
@@ -32,6 +32,10 @@ export function init(ctx) {
     value: () => input.value,
     restore(last) {
       if (typeof last === "string") input.value = last;
+    },
+    clear() {
+      input.value = "";
+      show();
     },
     show(reply) {
       if (reply.ok && reply.value.data?.latex) show(reply.value.data.latex);

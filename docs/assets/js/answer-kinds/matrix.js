@@ -32,7 +32,7 @@ export function init(ctx) {
       const text = event.clipboardData?.getData("text") ?? "";
       if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim())) return; // one value: paste as usual
       event.preventDefault();
-      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, text });
+      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, text });
       if (reply.ok && reply.value.entries) fill(reply.value.entries);
       else showMessage(ctx.el, reply.ok ? reply.value.message : reply.error.message);
     });
@@ -41,6 +41,12 @@ export function init(ctx) {
     value: () => Array.from({ length: rows }, (_, i) => Array.from({ length: cols }, (_, j) => at(i + 1, j + 1)?.value ?? "")),
     restore(last) {
       if (Array.isArray(last)) fill(last);
+    },
+    clear() {
+      for (const input of entries) {
+        input.value = "";
+        input.removeAttribute("aria-invalid");
+      }
     },
     show(reply) {
       const data = (reply.ok && reply.value.data) || {};

@@ -8,5 +8,8 @@ export function init(ctx) {
     restore(last) {
       if (typeof last === "string") input.value = last;
     },
+    clear() {
+      input.value = "";
+    },
   };
 }

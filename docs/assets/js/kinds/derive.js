@@ -1,13 +1,17 @@
 // Derive: the answer area comes from the exercise's answer kind (a number, a
-// matrix, a formula: docs/assets/js/answer-kinds/<kind>.js); this module submits it.
+// matrix, a formula: docs/assets/js/answer-kinds/<kind>.js); the numbers come
+// from the variant on screen (variants.js); this module submits the answer.
 import { ATTR } from "../contract.js";
+import { initVariants } from "../variants.js";
 
 export async function init(ctx) {
   const answerKind = ctx.el.getAttribute(ATTR.answerKind);
   const { init: initAnswer } = await import(`../answer-kinds/${answerKind}.js`);
   const field = initAnswer(ctx);
+  ctx.field = field;
+  if (ctx.el.hasAttribute(ATTR.templates)) await initVariants(ctx, { start: ctx.start ?? null });
   const saved = ctx.progress.get(ctx.id);
-  if (saved.last !== undefined) field.restore(saved.last);
+  if (saved.last !== undefined && ctx.start == null && ctx.variant === (saved.variant ?? 0)) field.restore(saved.last);
   ctx.el.querySelector("form").addEventListener("submit", async (event) => {
     event.preventDefault();
     const answer = field.value();

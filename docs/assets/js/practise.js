@@ -1,0 +1,100 @@
+// The Practise page: the review queue (review.js), one exercise at a time, each
+// with fresh numbers. The exercise itself is taken from its chapter page (the
+// service worker has it offline), so it is the very element the chapter shows,
+// graded and recorded the same way.
+
+import { ATTR } from "./contract.js";
+import { initExercise } from "./exercise.js";
+import { dueLine, loadManifest } from "./progress-ui.js";
+import { dueIds, inQueue } from "./review.js";
+import { freshVariant } from "./variants.js";
+
+const pages = new Map(); // chapter address -> Promise<Document>
+
+function el(tag, props = {}, ...children) {
+  const node = Object.assign(document.createElement(tag), props);
+  node.append(...children);
+  return node;
+}
+
+function chapterPage(href) {
+  if (!pages.has(href)) {
+    const loading = fetch(href)
+      .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`the page answered ${r.status}`))))
+      .then((text) => new DOMParser().parseFromString(text, "text/html"));
+    loading.catch(() => pages.delete(href));
+    pages.set(href, loading);
+  }
+  return pages.get(href);
+}
+
+async function exerciseFrom(manifest, id, siteRoot) {
+  const chapter = manifest.chapters.find((c) => c.ids.includes(id));
+  const href = new URL(chapter.url, siteRoot).href;
+  const doc = await chapterPage(href);
+  const found = doc.querySelector(`[${ATTR.exercise}="${CSS.escape(id)}"]`);
+  if (!found) throw new Error(`exercise ${id} is not on its chapter page`);
+  return { node: document.importNode(found, true), chapter, href };
+}
+
+/** The next exercise to serve: the longest overdue, else (`anyway`) the next to fall due or any. */
+function pick(manifest, progress, skip, anyway) {
+  const ids = manifest.variants || [];
+  const due = dueIds(progress, ids).filter((id) => id !== skip);
+  if (due.length || !anyway) return due[0] ?? null;
+  const queued = ids.filter((id) => id !== skip && inQueue(progress.get(id)))
+    .sort((a, b) => (progress.get(a).due ?? 0) - (progress.get(b).due ?? 0));
+  const fresh = ids.filter((id) => id !== skip && !inQueue(progress.get(id)));
+  return queued[0] ?? fresh[Math.floor(Math.random() * fresh.length)] ?? null;
+}
+
+export async function initPractise(shared, siteRoot) {
+  const root = document.querySelector("[data-wb-practise]");
+  if (!root || root.dataset.wbBuilt) return;
+  root.dataset.wbBuilt = "true";
+  const { progress } = shared;
+  const manifest = await loadManifest(siteRoot);
+  if (!manifest) {
+    root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
+    return;
+  }
+  const status = el("p", { className: "wb-practise-status", role: "status" });
+  const next = el("button", { type: "button", className: "md-button md-button--primary", textContent: "Next exercise" });
+  next.dataset.wbAction = "next";
+  const card = el("div", { className: "wb-practise-card" });
+  root.replaceChildren(status, card, el("div", { className: "wb-practise-controls" }, next));
+  let current = null;
+
+  const say = () => {
+    const { due, text } = dueLine(manifest, progress);
+    status.textContent = current ? `${text} Now: exercise ${current}.` : text;
+    next.textContent = due && due > (current && dueIds(progress, [current]).length ? 1 : 0) ? "Next due exercise" : "Practise another";
+  };
+
+  async function serve(id) {
+    current = id;
+    if (!id) {
+      card.replaceChildren(el("p", { textContent: "There is nothing to practise yet." }));
+      return say();
+    }
+    card.replaceChildren(el("p", { className: "wb-practise-loading", textContent: `Loading exercise ${id}…` }));
+    try {
+      const { node, chapter, href } = await exerciseFrom(manifest, id, siteRoot);
+      const heading = el("h2", { id: `${node.id}-title`, textContent: `${id} · ${manifest.titles?.[id] ?? ""}` });
+      const from = el("p", { className: "wb-practise-from" }, "From ",
+        el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }), ", with new numbers.");
+      card.replaceChildren(heading, from, node);
+      initExercise(node, { ...shared, start: freshVariant() });
+    } catch (err) {
+      card.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Try the next one, or reload when you are online.` }));
+    }
+    say();
+  }
+
+  next.addEventListener("click", () => serve(pick(manifest, progress, current, true)));
+  progress.onChange(() => root.isConnected && say());
+  await serve(pick(manifest, progress, null, false));
+  if (!current) {
+    card.replaceChildren(el("p", { textContent: "Press “Practise another” to start with an exercise of your choosing: the one due soonest, or a new one." }));
+  }
+}

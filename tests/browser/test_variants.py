@@ -1,0 +1,132 @@
+"""Variants in the page: draw, solve, go back, reload, link; and the review queue.
+
+Each drawn variant is cross-checked against the grading package natively: the
+page's numbers and worked answer must be the ones ``bank.get(id).variant(n)``
+gives.
+"""
+
+from __future__ import annotations
+
+import re
+
+from playwright.sync_api import expect
+
+from helpers import CHAPTERS, exercise, open_chapter, reveal, role, settle, solve, wait_runtime
+from workbook import bank
+from workbook.contract import ATTR
+
+EX = "0.1"
+
+
+def variant_of(el) -> int:
+    return int(el.get_attribute(ATTR.variant))
+
+
+def draw(el) -> int:
+    """Press New numbers; wait until the new variant is on screen; return its number."""
+    before = el.get_attribute(ATTR.variant)
+    el.locator(role("new-variant")).click()
+    el.page.wait_for_function("([el, a, v]) => el.getAttribute(a) !== v",
+                              arg=[el.element_handle(), ATTR.variant, before])
+    return variant_of(el)
+
+
+def shows(el, n: int) -> None:
+    """The statement on screen is variant ``n``'s, as the package draws it."""
+    v = bank.get(EX).variant(n)
+    tex = el.locator(".wb-prompt annotation").all_text_contents()  # KaTeX keeps each formula's TeX source
+    assert f"({v.values['x']}, {v.values['y']})" in tex, (n, tex)
+
+
+def test_a_drawn_variant_is_solved_with_its_own_worked_answer(page, site_url):
+    open_chapter(page, site_url, 0)
+    el = exercise(page, EX)
+    assert variant_of(el) == 0
+    n = draw(el)
+    assert n != 0
+    shows(el, n)
+    worked = reveal(el).locator(role("worked-answer")).inner_text()
+    assert worked == bank.get(EX).variant(n).worked_text()
+    el.locator(role("answer")).fill(worked)
+    el.locator(role("check")).click()
+    assert settle(el) == "correct"
+    assert el.locator(role("original-variant")).is_visible()
+    assert page.js_errors == []
+
+
+def test_back_to_the_workbooks_numbers(page, site_url):
+    open_chapter(page, site_url, 0)
+    el = exercise(page, EX)
+    original = el.locator(".wb-prompt").inner_html()
+    draw(el)
+    assert el.locator(".wb-prompt").inner_html() != original
+    el.locator(role("original-variant")).click()
+    page.wait_for_function("([el, a]) => el.getAttribute(a) === '0'", arg=[el.element_handle(), ATTR.variant])
+    expect(el.locator(role("original-variant"))).to_be_hidden()
+    shows(el, 0)
+    assert "?variant" not in page.url
+    assert solve(page, bank.get(EX)) == "correct"
+
+
+def test_a_reload_keeps_the_variant_and_a_link_opens_it(page, site_url, context):
+    open_chapter(page, site_url, 0)
+    el = exercise(page, EX)
+    n = draw(el)
+    assert re.search(rf"[?&]variant={re.escape(EX)}-{n}\b", page.url), page.url
+    link = el.locator(role("variant-link")).get_attribute("href")
+    page.reload()
+    wait_runtime(page)
+    el = exercise(page, EX)
+    page.wait_for_function("([el, a, v]) => el.getAttribute(a) === v", arg=[el.element_handle(), ATTR.variant, str(n)])
+    shows(el, n)
+
+    other = context.new_page()  # a fresh page, as a shared link would be opened
+    other.goto(site_url + CHAPTERS[0] + "?variant=0.1-4242#ex-0-1")
+    wait_runtime(other)
+    el = exercise(other, EX)
+    other.wait_for_function("([el, a]) => el.getAttribute(a) === '4242'", arg=[el.element_handle(), ATTR.variant])
+    shows(el, 4242)
+    assert link.endswith(f"variant={EX}-{n}#ex-0-1")
+
+
+def test_a_bad_variant_in_a_link_is_ignored(page, site_url):
+    page.goto(site_url + CHAPTERS[0] + "?variant=0.1-abc&variant=0.4-99999999")
+    wait_runtime(page)
+    assert variant_of(exercise(page, EX)) == 0
+    assert page.js_errors == []
+
+
+def record(page, ex_id: str) -> dict:
+    return page.evaluate("id => window.workbook.progress.get(id)", ex_id)
+
+
+def test_the_review_queue_after_a_miss_and_after_a_solve(page, site_url):
+    open_chapter(page, site_url, 0)
+    el = exercise(page, EX)
+    el.locator(role("answer")).fill("12345")
+    el.locator(role("check")).click()
+    assert settle(el) == "incorrect"
+    r = record(page, EX)
+    assert r["box"] == 1 and r["missed"] == [0]
+
+    page.goto(site_url + "practise/")
+    status = page.locator(".wb-practise-status")
+    expect(status).to_contain_text("comes back in 10 minutes")
+    # Ten minutes pass: the miss is due.
+    page.evaluate("id => window.workbook.progress.update(id, {due: Date.now() - 1})", EX)
+    page.reload()
+    wait_runtime(page)
+    expect(page.locator(".wb-practise-status")).to_contain_text("1 exercise is due")
+    el = exercise(page, EX)
+    page.wait_for_function("([el, a]) => Number(el.getAttribute(a)) > 0", arg=[el.element_handle(), ATTR.variant])
+    n = variant_of(el)
+    el.locator(role("answer")).fill(bank.get(EX).variant(n).worked_text())
+    el.locator(role("check")).click()
+    assert settle(el) == "correct"
+    r = record(page, EX)
+    assert r["box"] == 2 and n in r["clean"] and n in r["done"]
+    expect(page.locator(".wb-practise-status")).to_contain_text("comes back in 24 hours")
+    assert "variant" not in page.url  # the Practise page does not change the chapter's numbers
+    page.goto(site_url)
+    expect(page.locator("[data-wb-due]")).to_contain_text("Nothing is due")
+    assert page.js_errors == []
