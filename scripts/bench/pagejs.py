@@ -15,7 +15,8 @@ from workbook.contract import ATTR, ROLE, STATE, role_attr
 JS_DIR = Path(__file__).with_name("js")
 
 # The roles the bench's scripts touch.
-_ROLES = (ROLE.answer, ROLE.choice, ROLE.line, ROLE.check, ROLE.run, ROLE.editor, ROLE.feedback, ROLE.test_result)
+_ROLES = (ROLE.answer, ROLE.choice, ROLE.line, ROLE.check, ROLE.run, ROLE.editor, ROLE.feedback, ROLE.test_result,
+          ROLE.new_variant)
 
 
 def role(name: str) -> str:
@@ -32,7 +33,7 @@ def contract() -> dict:
     """``C``: the names the page scripts need, from the contract."""
     return {
         "attr": {"exercise": ATTR.exercise, "state": ATTR.state, "runtime": ATTR.runtime, "passed": ATTR.passed,
-                 "offline": ATTR.offline},
+                 "offline": ATTR.offline, "variant": ATTR.variant},
         "sel": {name: role(name) for name in _ROLES},
         "state": {"pending": STATE.pending, "unanswered": STATE.unanswered},
     }

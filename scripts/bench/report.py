@@ -51,6 +51,8 @@ def collect(runs: list[dict]) -> dict:
         "baseline_longtasks_cold_total_ms": pick("baseline_cold", "long_tasks", "total_ms"),
         "baseline_longtasks_cold_max_ms": pick("baseline_cold", "long_tasks", "max_ms"),
     }
+    m["draw_p50_ms"] = pick("draw", "p50_ms")
+    m["draw_p95_ms"] = pick("draw", "p95_ms")
     for kind in GRADED:
         m[f"grade_{kind}_p50_ms"] = pick("grading", kind, "p50_ms")
         m[f"grade_{kind}_p95_ms"] = pick("grading", kind, "p95_ms")
@@ -82,6 +84,9 @@ def evaluate_targets(m: dict, runs: list[dict]) -> list[dict]:
     add("grading round trip p50 <= 5 ms (every kind)", worst, 5.0,
         None if worst is None or None in p50s.values() else worst <= 5.0,
         "per kind: " + ", ".join(f"{k} {v:.1f} ms" for k, v in p50s.items() if v is not None))
+    d = med("draw_p50_ms")
+    add("New numbers (draw) p50 <= 30 ms", d, 30.0, None if d is None else d <= 30.0,
+        "worker draw + DOM + KaTeX, every Derive exercise of chapter 0 (issue 13)")
     b = med("build_plain_ms")
     add("Build run without numpy <= 50 ms", b, 50.0, None if b is None else b <= 50.0,
         "median of the repeat runs; the first run: "
@@ -141,6 +146,8 @@ TABLE = [
     ("Grade round trip 3×3 matrix p50", "grade_matrix_p50_ms", "ms"),
     ("Grade round trip formula p50", "grade_formula_p50_ms", "ms"),
     ("First grade on a fresh page (Derive)", "grade_derive_first_ms", "ms"),
+    ("New numbers (draw, DOM, KaTeX) p50", "draw_p50_ms", "ms"),
+    ("New numbers (draw, DOM, KaTeX) p95", "draw_p95_ms", "ms"),
     ("Build 0.5 run, no numpy, first", "build_plain_first_ms", "ms"),
     ("Build 0.5 run, no numpy, repeat", "build_plain_ms", "ms"),
     ("Build 0.5 run, numpy, first (loads numpy)", "build_numpy_first_ms", "ms"),
