@@ -84,8 +84,9 @@ def test_progress_survives_reload_and_instant_navigation(page, site_url):
     page.wait_for_url(re.compile(r"/workbook/$"))
     total, chapters = len(bank.all_exercises()), len(bank.chapters())
     solved = 1 + len(bank.chapter(1))
-    expect(page.locator("[data-wb-overall-progress]")).to_contain_text(
-        f"{solved} of {total} exercises solved; 1 of {chapters} chapters finished")
+    overall = page.locator("[data-wb-overall-progress]")
+    expect(overall).to_contain_text(f"{solved} of {total} exercises solved; ")
+    expect(overall).to_contain_text(f" mastered; 1 of {chapters} chapters finished")
     badges = page.locator(".md-content .wb-badge")
     expect(badges).to_have_count(chapters)
     expect(badges.nth(0)).to_have_text(f"1/{len(bank.chapter(0))}")
@@ -142,7 +143,7 @@ def test_export_reset_import_restores_exactly(page, site_url):
         page.get_by_role("button", name="Export progress").click()
     exported = json.loads(open(download.value.path(), encoding="utf-8").read())
     assert download.value.suggested_filename.endswith(".json")
-    assert exported["format"] == "robotics-math-workbook-progress" and exported["version"] == 1
+    assert exported["format"] == "robotics-math-workbook-progress" and exported["version"] == 2
     assert exported["exercises"] == before
 
     # Reset asks first; cancelling changes nothing.
@@ -255,3 +256,27 @@ def test_full_storage_shows_a_message_and_keeps_the_answer(page, site_url):
     expect(page.locator(".wb-notice")).to_contain_text("storage is full")
     assert records(page)["0.1"]["solved"] is True  # kept in memory: it can still be exported
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
+
+
+def test_version_1_records_are_migrated_on_load_and_on_import(page, site_url):
+    """Progress saved before variants (schema 1) keeps every field and gains variant 0's marks and a review box."""
+    page.goto(site_url)
+    key = page.evaluate("workbook.progress.key")
+    old = {"version": 1, "exercises": {
+        "0.1": {"solved": True, "solvedAfterReveal": False, "attempts": 1, "last": "3", "updated": 1_700_000_000_000},
+        "0.2": {"solved": True, "solvedAfterReveal": True, "revealed": True, "attempts": 2, "updated": 1_700_000_000_000},
+        "0.4": {"attempts": 3, "last": "1", "updated": 1_700_000_000_000}}}
+    page.evaluate("([k, v]) => localStorage.setItem(k, v)", [key, json.dumps(old)])
+    open_ready(page, site_url, 0)
+    got = records(page)
+    assert got["0.1"]["last"] == "3" and got["0.1"]["attempts"] == 1  # nothing lost
+    assert got["0.1"]["clean"] == [0] and got["0.1"]["done"] == [0] and got["0.1"]["box"] == 2
+    assert "clean" not in got["0.2"] and got["0.2"]["done"] == [0] and got["0.2"]["revealedIn"] == [0]
+    assert got["0.4"]["missed"] == [0] and got["0.4"]["box"] == 1 and "done" not in got["0.4"]
+    assert exercise(page, "0.1").get_attribute("data-state") == "correct"
+    expect(page.locator(".wb-chapter-progress")).to_contain_text("1 of")
+    # A version-1 export imports the same way.
+    open_progress_page(page, site_url)
+    page.evaluate("workbook.progress.reset()")
+    assert "3 added" in import_file(page, json.dumps({"format": "robotics-math-workbook-progress", **old}))
+    assert records(page)["0.1"]["clean"] == [0] and records(page)["0.4"]["box"] == 1
