@@ -2,28 +2,289 @@
 
 The keys chain: each step starts from the previous step's computed value, at
 full precision (the page prints them to four decimals, well within tolerance).
+
+Every Derive exercise draws variants. 9.2, 9.7 and 9.8 draw the predict step's
+own inputs (pose, v, ω, dt); 9.3, 9.4 and 9.6 keep the value carried in from
+the step before (the workbook's chain) and draw the inputs they bring in (the
+landmark; P, z and R; the waypoint and Kp); 9.5 draws P and K. A sentence that
+names an earlier exercise ("from exercise 9.4") is only printed when the
+numbers are that exercise's own.
 """
 
 import math
+from fractions import Fraction
 
 from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.derive import Derive, Slip
 from ..kinds.design import Design, Step
 from ..reference.ekf import ekf_update, motion_jacobian, motion_model, range_bearing
 from ..reference.pid import p_term
+from ..variants import Choice, Param, Vary, num
 from . import column
 
 _START = (5.0, 3.0, math.pi / 6)
 _V, _OMEGA, _DT = 1.0, 0.1, 1.0
 _PRED = motion_model(_START, _V, _OMEGA, _DT)          # (5.8660, 3.5, 0.6236)
-_LANDMARK = (10.0, 7.0)
-_RANGE = range_bearing(_PRED, _LANDMARK)[0]            # 5.4166
+_LANDMARK = (10.0, 7.0)                                # range 5.4166 from _PRED
 _P, _Z, _R = 0.5, 5.7, 0.2
 _X_UPD, _P_UPD = ekf_update(_PRED[0], _P, _Z, _R)      # 5.7474, 0.1429
 _K = 1 - _P_UPD / _P                                   # K = P/(P+R), read back from (1−K)P
-_TARGET, _KP = 10.0, 0.5
-_U = p_term(_TARGET - _X_UPD, _KP)                     # 2.1263
-_F = motion_jacobian(_START, _V, _OMEGA, _DT)
+_TARGET, _KP = 10.0, 0.5                               # command 2.1263 m/s from _X_UPD
+
+# ---- Formatting and checks shared by the generators ---------------------------
+APART = 3e-3  # a slip must differ from the key (and from the other slips) by more than this, relatively
+
+
+def _exact4(x: float) -> bool:
+    """The number has at most 4 decimals (up to float noise)."""
+    return abs(x - round(x, 4)) < 1e-9
+
+
+def dec(x: float) -> str:
+    """A derivation's number: as typed when it has at most 4 decimals, else to 4 decimals.
+
+    >>> dec(3.5), dec(5.8660254), dec(-0.166025), dec(0.7142857)
+    ('3.5', '5.8660', '-0.1660', '0.7143')
+    """
+    if _exact4(x):
+        return num(x)
+    s = f"{x:.4f}"
+    return "0.0000" if s == "-0.0000" else s
+
+
+def pi_frac(degrees: int, tex: bool = True) -> str:
+    """An angle of whole degrees as a fraction of π: TeX (``\\pi/6``) or text (``π/6``).
+
+    >>> pi_frac(30), pi_frac(25), pi_frac(75, tex=False), pi_frac(90)
+    ('\\\\pi/6', '5\\\\pi/36', '5π/12', '\\\\pi/2')
+    """
+    f = Fraction(int(degrees), 180)
+    pi = r"\pi" if tex else "π"
+    top = pi if f.numerator == 1 else f"{f.numerator}{pi}"
+    return top if f.denominator == 1 else f"{top}/{f.denominator}"
+
+
+def approx(x: float) -> str:
+    """``= 0.5`` when the number is exact at 4 decimals, else ``\\approx 0.9063`` (TeX).
+
+    >>> approx(0.5000000000000001), approx(math.cos(math.radians(25)))
+    ('= 0.5', '\\\\approx 0.9063')
+    """
+    return f"= {num(x)}" if _exact4(x) else f"\\approx {dec(x)}"
+
+
+def dec_paren(x: float) -> str:
+    """A derivation's number as a factor: ``(-0.1660)``, or ``0.1340`` when positive."""
+    s = dec(x)
+    return f"({s})" if s.startswith("-") else s
+
+
+def dec_signed(x: float) -> str:
+    """A derivation's number as a following term: ``- 0.1186`` or ``+ 0.0950``."""
+    s = dec(x)
+    return f"- {s[1:]}" if s.startswith("-") else f"+ {s}"
+
+
+def apart(*values: float) -> bool:
+    """Every pair of numbers is more than APART (relatively) from each other."""
+    return all(abs(a - b) > APART * max(abs(a), abs(b), 1e-9)
+               for i, a in enumerate(values) for b in values[i + 1:])
+
+
+def _slips_apart(made: dict) -> bool:
+    """The key and every slip of a scalar exercise are told apart."""
+    return apart(made["key"], *(s.value for s in made["slips"]))
+
+
+# ---- The predict step: 9.2, 9.7, 9.8 ------------------------------------------
+_DEGREES = {pi_frac(d): d for d in range(5, 90, 5) if d != 45}  # 45° would make cos θ = sin θ
+_HEADING = ("theta", pi_frac(30), tuple(_DEGREES))
+_NINE_TWO = {"x": _START[0], "y": _START[1], "theta": pi_frac(30), "v": _V, "omega": _OMEGA, "dt": _DT}  # 9.2's own
+
+
+def _heading(p) -> tuple[int, float]:
+    """The drawn heading: whole degrees and radians."""
+    deg = _DEGREES[p["theta"]]
+    return deg, math.radians(deg)
+
+
+def _predicted_pose(p):
+    """The predict step (velocity model) from the drawn pose, with its intermediate numbers."""
+    deg, th = _heading(p)
+    x, y, v, omega, dt = p["x"], p["y"], p["v"], p["omega"], p["dt"]
+    pred = motion_model((x, y, th), v, omega, dt)
+    turned = motion_model((x, y, th + omega * dt), v, omega, dt)  # the slip: turn first, then drive
+    swapped = (x + v * math.sin(th) * dt, y + v * math.cos(th) * dt)  # the slip: sin and cos swapped
+    moved_x, moved_y = pred[0] - x, pred[1] - y
+    values = {
+        "deg": num(deg),
+        "cos": f"= \\sqrt3/2 \\approx {dec(math.cos(th))}" if deg == 30 else approx(math.cos(th)),
+        "dx": dec(moved_x), "dy": dec(moved_y),
+        "xp": dec(pred[0]), "yp": dec(pred[1]),
+        "th": dec(th), "omdt": dec(omega * dt), "thp": dec(pred[2]),
+        "thp_deg2": f"{math.degrees(pred[2]):.2f}", "thp_deg1": f"{math.degrees(pred[2]):.1f}",
+        "omdt_deg": f"{math.degrees(omega * dt):.1f}",
+        "most": "x" if moved_x > moved_y else "y", "cmp": ">" if moved_x > moved_y else "<",
+        "as92": " as in exercise 9.2" if p == _NINE_TWO else "",
+        "used92": ("Exercise 9.2 used only the first entry." if p == _NINE_TWO
+                   else "Exercise 9.2 asks for the first entry alone."),
+    }
+    return pred, turned, swapped, values
+
+
+def _turned_first(p) -> str:
+    """The message for driving along the new heading."""
+    return ("You turned first and then drove. The velocity model moves along the heading at the start "
+            f"of the step, θ = {pi_frac(_heading(p)[0], tex=False)}; the turn takes effect from the next step.")
+
+
+def _new_x(p):
+    """9.2: x′ after one predict step of the velocity model."""
+    pred, turned, swapped, values = _predicted_pose(p)
+    return {
+        "key": pred[0],
+        "slips": (
+            Slip(turned[0], _turned_first(p)),
+            Slip(swapped[0], "You used sin θ. The x-displacement is v·cos θ·dt."),
+            Slip(pred[1], "That is y′. The question asks for x′."),
+        ),
+        "values": values,
+    }
+
+
+def _new_state(p):
+    """9.8: the whole predicted state (x′, y′, θ′) of the velocity model."""
+    pred, turned, swapped, values = _predicted_pose(p)
+    return {
+        "key": column(pred),
+        "slips": (
+            Slip(column(turned[:2] + (pred[2],)), _turned_first(p)),
+            Slip(column(swapped + (pred[2],)), "sin and cos are swapped: x moves by v cos θ dt and y by v sin θ dt."),
+            Slip(column(pred[:2] + (_heading(p)[1],)),
+                 f"The heading did not change: θ′ = θ + ω dt, and ω = {num(p['omega'])} rad/s."),
+        ),
+        "values": values,
+    }
+
+
+def _states_apart(p) -> bool:
+    """9.8: each slip differs from the key, and from the others, in some entry."""
+    made = _new_state(p)
+    rows = [made["key"], *(s.value for s in made["slips"])]
+    return all(any(apart(a[0], b[0]) for a, b in zip(r, s)) for i, r in enumerate(rows) for s in rows[i + 1:])
+
+
+def _jacobian_entry(p):
+    """9.7: F(2,3) = v cos θ dt of the motion Jacobian (and F(1,3) beside it)."""
+    deg, th = _heading(p)
+    F = motion_jacobian((0.0, 0.0, th), p["v"], 0.0, p["dt"])
+    f23 = (f"= \\frac{{\\sqrt3}}{{2}} \\approx {dec(F[1][2])}" if deg == 30 and p["v"] * p["dt"] == 1
+           else approx(F[1][2]))  # the exact form only where it is cos 30° itself
+    return {
+        "key": F[1][2],
+        "slips": (
+            Slip(F[0][2], "That is F(1,3) = −v sin θ dt, in row 1. Row 2 is the derivative of y′."),
+            Slip(-F[0][2], "∂(v sin θ dt)/∂θ = v cos θ dt, not v sin θ dt."),
+        ),
+        "values": {
+            "of92": " of exercise 9.2" if (p["theta"], p["v"], p["dt"]) == (pi_frac(30), _V, _DT) else "",
+            "f23_tex": f23, "f13": dec(F[0][2]), "f23": dec(F[1][2]),
+        },
+    }
+
+
+# ---- Sensing, fusing, steering: 9.3 to 9.6 ---------------------------------------
+def _predicted_range(p):
+    """9.3: the range from 9.2's predicted pose to the drawn landmark."""
+    landmark = (p["lx"], p["ly"])
+    r = range_bearing(_PRED, landmark)[0]
+    dx, dy = landmark[0] - _PRED[0], landmark[1] - _PRED[1]
+    reading = round(r - 0.1, 1)  # a LiDAR reading a little short of the prediction
+    return {
+        "key": r,
+        "slips": (
+            Slip(r ** 2, "That is r², the sum of squares. Take its square root."),
+            Slip(math.hypot(*landmark),
+                 "That is the landmark's distance from the origin. Measure from the robot's predicted position."),
+        ),
+        "values": {
+            "dx": dec(dx), "dy": dec(dy), "dx2": dec(dx * dx), "dy2": dec(dy * dy), "q": dec(dx * dx + dy * dy),
+            "r": dec(r), "reading": num(reading), "innovation": f"{reading - r:.2f}",
+        },
+    }
+
+
+def _range_well_posed(p) -> bool:
+    """9.3: the landmark is at least 2 m away, and neither slip is the range."""
+    made = _predicted_range(p)
+    return made["key"] >= 2 and _slips_apart(made)
+
+
+def _fused(p):
+    """9.4: the scalar Kalman update of 9.2's predicted x with the drawn P, z and R."""
+    P, z, R = p["P"], p["z"], p["R"]
+    x = _PRED[0]
+    x_upd, _ = ekf_update(x, P, z, R)
+    K = P / (P + R)
+    return {
+        "key": x_upd,
+        "slips": (
+            Slip(ekf_update(x, R, z, P)[0],
+                 f"You swapped P and R: K = P/(P + R) = {num(P)}/{num(P + R)}, "
+                 "the share of trust given to the measurement."),
+            Slip(x_upd - x, "That is the correction K(z − x). Add it to the prediction."),
+        ),
+        "values": {
+            "S": num(P + R), "K": dec(K), "innov": dec(z - x), "innov_p": dec_paren(z - x),
+            "corr": dec_signed(K * (z - x)), "xu": dec(x_upd), "pct": f"{round(100 * K)}",
+        },
+    }
+
+
+def _fused_well_posed(p) -> bool:
+    """9.4: the sensor is the less noisy (R < P, as the text says), and the slips are apart."""
+    return p["R"] < p["P"] and _slips_apart(_fused(p))
+
+
+def _updated_variance(p):
+    """9.5: P⁺ = (1 − K)·P, with the sensor's R that gives this K."""
+    P, K = p["P"], p["K"]
+    R = P * (1 - K) / K  # K = P/(P + R)
+    _, P_upd = ekf_update(0.0, P, 0.0, R)
+    return {
+        "key": P_upd,
+        "slips": (
+            Slip(K * P, "That is K·P, the variance removed. What is left is (1 − K)·P."),
+            Slip(1 - K, f"That is 1 − K. Multiply it by P = {num(P)}."),
+        ),
+        "values": {
+            "from94": "from exercise 9.4" if (P, K) == (_P, _K) else "from a scalar Kalman update",
+            "one_minus_k": dec(1 - K), "Pu": dec(P_upd), "R": dec(R),
+        },
+    }
+
+
+def _command(p):
+    """9.6: the P controller's speed command from 9.4's updated x to the drawn waypoint."""
+    target, Kp = p["target"], p["Kp"]
+    e = target - _X_UPD
+    u = p_term(e, Kp)
+    return {
+        "key": u,
+        "slips": (
+            Slip(e, f"That is the position error. The command multiplies it by Kp = {num(Kp)}."),
+            Slip(-u, "Sign: the error is target − position, positive here, so the robot drives forward."),
+        ),
+        "values": {"e": dec(e), "u": dec(u)},
+    }
+
+
+def _pose_params():
+    """9.2 and 9.8 draw the same predict step: start pose, speed, turn rate, time step."""
+    return (Param("x", _START[0], 0, 9, 1), Param("y", _START[1], 0, 9, 1), Choice(*_HEADING),
+            Param("v", _V, 0.5, 2, 0.1, unit=" m/s"), Param("omega", _OMEGA, 0.05, 0.3, 0.05, unit=" rad/s"),
+            Param("dt", _DT, 0.5, 2, 0.5, unit=" s"))
+
 
 EXERCISES = (
     Design(
@@ -41,86 +302,51 @@ EXERCISES = (
     Derive(
         id="9.2",
         title="The full predict step",
-        key=_PRED[0],
         label="x′ after one step",
         unit="m",
-        slips=(
-            Slip(motion_model((5.0, 3.0, math.pi / 6 + _OMEGA * _DT), _V, _OMEGA, _DT)[0],
-                 "You turned first and then drove. The velocity model moves along the heading at the start "
-                 "of the step, θ = π/6; the turn takes effect from the next step."),
-            Slip(_START[0] + _V * math.sin(_START[2]) * _DT, "You used sin θ. The x-displacement is v·cos θ·dt."),
-            Slip(_PRED[1], "That is y′. The question asks for x′."),
-        ),
+        vary=Vary(_new_x, *_pose_params(), valid=lambda p: _slips_apart(_new_x(p))),
     ),
     Derive(
         id="9.3",
         title="Predicted range to a landmark",
-        key=_RANGE,
         label="predicted range r",
         unit="m",
-        slips=(
-            Slip(_RANGE ** 2, "That is r², the sum of squares. Take its square root."),
-            Slip(math.hypot(*_LANDMARK), "That is the landmark's distance from the origin. Measure from the robot's predicted position."),
-        ),
+        vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1), valid=_range_well_posed),
     ),
     Derive(
         id="9.4",
         title="Fuse the measurement",
-        key=_X_UPD,
         label="updated x⁺",
         unit="m",
-        slips=(
-            Slip(ekf_update(_PRED[0], _R, _Z, _P)[0],
-                 "You swapped P and R: K = P/(P + R) = 0.5/0.7, the share of trust given to the measurement."),
-            Slip(_X_UPD - _PRED[0], "That is the correction K(z − x). Add it to the prediction."),
-        ),
+        vary=Vary(_fused, Param("P", _P, 0.2, 1, 0.1), Param("z", _Z, 4.8, 6.9, 0.1, unit=" m"),
+                  Param("R", _R, 0.1, 0.9, 0.1), valid=_fused_well_posed),
     ),
     Derive(
         id="9.5",
         title="Updated covariance",
-        key=_P_UPD,
         label="P⁺ = (1 − K)·P",
-        slips=(
-            Slip(_K * _P, "That is K·P, the variance removed. What is left is (1 − K)·P."),
-            Slip(1 - _K, "That is 1 − K. Multiply it by P = 0.5."),
-        ),
+        vary=Vary(_updated_variance, Param("P", _P, 0.1, 0.9, 0.1), Param("K", _K, 0.1, 0.9, 0.05, avoid=(0.5,)),
+                  valid=lambda p: _slips_apart(_updated_variance(p))),
     ),
     Derive(
         id="9.6",
         title="Velocity command",
-        key=_U,
         label="commanded speed u",
         unit="m/s",
-        slips=(
-            Slip(_TARGET - _X_UPD, "That is the position error. The command multiplies it by Kp = 0.5."),
-            Slip(-_U, "Sign: the error is target − position, positive here, so the robot drives forward."),
-        ),
+        vary=Vary(_command, Param("target", _TARGET, 6, 15, 1, unit=" m"), Param("Kp", _KP, 0.1, 1.5, 0.1, avoid=(1,)),
+                  valid=lambda p: _slips_apart(_command(p))),
     ),
     Derive(
         id="9.7",
         title="An entry of the Jacobian F",
-        key=_F[1][2],
         label="F(2,3)",
-        slips=(
-            Slip(_F[0][2], "That is F(1,3) = −v sin θ dt, in row 1. Row 2 is the derivative of y′."),
-            Slip(_V * math.sin(_START[2]) * _DT, "∂(v sin θ dt)/∂θ = v cos θ dt, not v sin θ dt."),
-        ),
+        vary=Vary(_jacobian_entry, Choice(*_HEADING), Param("v", _V, 0.5, 2, 0.1, unit=" m/s"),
+                  Param("dt", _DT, 0.5, 2, 0.5, unit=" s"), valid=lambda p: _slips_apart(_jacobian_entry(p))),
     ),
     MatrixDerive(
         id="9.8",
         title="The whole predicted state",
-        key=column(_PRED),
         label="x′ = (x′, y′, θ′)ᵀ",
-        slips=(
-            Slip(column(motion_model((_START[0], _START[1], _START[2] + _OMEGA * _DT), _V, _OMEGA, _DT)[:2]
-                        + (_PRED[2],)),
-                 "You turned first and then drove. The velocity model moves along the heading at the start "
-                 "of the step, θ = π/6; the turn takes effect from the next step."),
-            Slip(column((_START[0] + _V * math.sin(_START[2]) * _DT, _START[1] + _V * math.cos(_START[2]) * _DT,
-                         _PRED[2])),
-                 "sin and cos are swapped: x moves by v cos θ dt and y by v sin θ dt."),
-            Slip(column(_PRED[:2] + (_START[2],)),
-                 "The heading did not change: θ′ = θ + ω dt, and ω = 0.1 rad/s."),
-        ),
+        vary=Vary(_new_state, *_pose_params(), valid=_states_apart),
     ),
 )
