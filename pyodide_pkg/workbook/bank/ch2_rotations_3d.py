@@ -3,25 +3,161 @@
 import math
 
 from ..answer_kinds.matrix import MatrixDerive
-from ..kinds.derive import Derive, Slip
+from ..kinds.derive import Derive, Slip, fmt
 from ..kinds.trace import Option, Trace
 from ..reference.linalg import matvec
-from ..reference.rotation3d import quat_from_axis_angle, quat_norm, rz
+from ..reference.rotation3d import quat_axis_angle, quat_from_axis_angle, quat_norm, rz
+from ..tolerance import clean
+from ..variants import Choice, Param, Vary, num, paren
 from . import column
 
-_V = (2, 1, 3)
-_Q90Z = quat_from_axis_angle((0, 0, 1), math.pi / 2)  # (w, x, y, z)
+_AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
+_SLOT = {"w": 0, "x": 1, "y": 2, "z": 3}  # where each component sits in q = (w, x, y, z)
+_QUARTER = math.sqrt(2) / 2
+
+
+def _axis_text(axis):
+    """The unit axis as the text writes it: ``"0, 0, 1"`` for z."""
+    return ", ".join(map(str, _AXES[axis]))
+
+
+def _num4(x):
+    """A number with at least 4 significant digits, as the worked answer prints it (0.08716, 0.7071)."""
+    return fmt(clean(x), digits=4)
+
+
+def _root_half(x, tex):
+    """``tex`` (the text's exact form of √2/2) where x is ±√2/2, else the decimal."""
+    if math.isclose(abs(x), _QUARTER):
+        return tex if x > 0 else "-" + tex
+    return _num4(x)
+
+
+def _square(x):
+    """A square in the norm check: ``\\tfrac12`` where the text writes it so, else the decimal."""
+    return "\\tfrac12" if math.isclose(x, 0.5) else num(x)
+
+
+def _yaw_x_axis(p):
+    """2.1: the x unit vector yawed by γ (0° < γ < 180°); asked: its y-component."""
+    g = p["gamma"]
+    c, s, _ = matvec(rz(math.radians(g)), [1, 0, 0])
+    word = "onto" if g == 90 else "towards" if g < 90 else "past"  # where x ends up, seen from y
+    return {
+        "key": s,
+        "title": f"Yaw by {num(g)}°",
+        "label": f"y-component of Rz({num(g)}°)·(1, 0, 0)ᵀ",
+        "slips": (Slip(matvec(rz(-math.radians(g)), [1, 0, 0])[1],
+                       "That is a clockwise yaw. A positive angle about z turns x towards y (right-hand rule)."),),
+        "values": {"c": _num4(c), "s": _num4(s), "ms": _num4(-s), "onto": word, "into": "into" if g == 90 else word},
+    }
+
+
+def _quat_w(p):
+    """2.3: the unit quaternion of θ about a coordinate axis; asked: its scalar part w."""
+    t, axis = p["theta"], p["axis"]
+    q = quat_from_axis_angle(_AXES[axis], math.radians(t))
+    return {
+        "key": q[0],
+        "title": f"Quaternion for {num(t)}° about {axis}",
+        "slips": (Slip(math.cos(math.radians(t)),
+                       f"That is cos {num(t)}°, the full angle. A quaternion uses half the angle: "
+                       f"w = cos(θ/2) = cos {num(t / 2)}°."),),
+        "values": {
+            "half": num(t / 2), "n": _axis_text(axis),
+            "w_exact": _root_half(q[0], "\\tfrac{\\sqrt2}{2} \\approx 0.7071"),
+            "v": ", ".join(map(_num4, q[1:])), "q": ",\\ ".join(map(_num4, q)),
+            "squares": " + ".join(num(c * c) for c in q),
+        },
+    }
+
+
+def _half_turn_component(p):
+    """2.4: the unit quaternion of 180° about one axis; asked: a component off that axis (always 0)."""
+    axis, comp = p["axis"], p["comp"]
+    q = quat_from_axis_angle(_AXES[axis], math.pi)
+    n = _axis_text(axis)
+    return {
+        "key": q[_SLOT[comp]],
+        "title": f"Quaternion for 180° about {axis}",
+        "label": comp,
+        "slips": (Slip(q[_SLOT[axis]],
+                       f"That is the {axis} component. The axis is ({n}), so sin(θ/2) lands in {axis} only; "
+                       f"{comp} gets sin(θ/2)·0."),),
+        "values": {"n": n},
+    }
+
+
+def _quat_norm(p):
+    """2.5: ‖q‖ of q = (±0.5, ±0.5, ±0.5, ±0.5), always a unit quaternion; and its angle and axis."""
+    q = (p["w"], p["x"], p["y"], p["z"])
+    axis, angle = quat_axis_angle(q)
+    theta = math.degrees(angle)
+    return {
+        "key": quat_norm(q),
+        "slips": (Slip(sum(q), "That is the sum of the components. The norm squares them first: √(4 · 0.5²)."),),
+        "values": {
+            "pw": paren(q[0]), "px": paren(q[1]), "py": paren(q[2]), "pz": paren(q[3]),
+            "half": num(theta / 2), "theta": num(theta),
+            "axis": ", ".join(f"{a:.3f}" for a in axis), "signs": ", ".join(num(2 * c) for c in q[1:]),
+        },
+    }
+
+
+def _yaw_vector(p):
+    """2.6: v = (x, y, z) yawed by 90°; asked: the whole rotated vector."""
+    v = [p["x"], p["y"], p["z"]]
+    turned = matvec(rz(math.pi / 2), v)
+    return {
+        "key": column(turned),
+        "label": "Rz(90°)·({}, {}, {})ᵀ".format(*map(num, v)),
+        "slips": (
+            Slip(column(matvec(rz(-math.pi / 2), v)),
+                 "That is Rz(−90°)·v, a clockwise yaw (the same as multiplying by the transpose of Rz(90°)). "
+                 "A positive yaw turns x towards y."),
+            Slip(column((v[1], v[0], v[2])),
+                 "You swapped x and y but lost a sign. A quarter turn about z sends (x, y) to (−y, x)."),
+        ),
+        "values": {"px": paren(v[0]), "py": paren(v[1]), "x2": num(v[0] ** 2), "y2": num(v[1] ** 2),
+                   "z2": num(v[2] ** 2), "rx": num(turned[0]), "ry": num(turned[1])},
+    }
+
+
+def _quat_whole(p):
+    """2.7: the whole unit quaternion (w, x, y, z) of θ about a coordinate axis."""
+    t, axis = p["theta"], p["axis"]
+    n, rad = _AXES[axis], math.radians(t)
+    q = quat_from_axis_angle(n, rad)
+    view = "seen from above" if axis == "z" else f"seen from the +{axis} side"
+    return {
+        "key": column(q),
+        "title": f"The whole quaternion for {num(t)}° about {axis}",
+        "slips": (
+            Slip(column(quat_from_axis_angle(n, 2 * rad)),
+                 f"That is the quaternion of a {num(2 * t)}° turn: you used the full angle. A quaternion holds "
+                 "half of it: w = cos(θ/2), (x, y, z) = sin(θ/2)·n."),
+            Slip(column(q[1:] + q[:1]),
+                 "Those are the right numbers in the order (x, y, z, w), scalar last, as some libraries store "
+                 "them. This answer asks for (w, x, y, z)."),
+            Slip(column(quat_from_axis_angle(n, -rad)),
+                 f"That is the conjugate, a turn of −{num(t)}° (clockwise {view}). For +{num(t)}° about +{axis}, "
+                 f"the {axis} part is +sin {num(t / 2)}°."),
+        ),
+        "values": {
+            "half": num(t / 2), "a": "an" if axis == "x" else "a",  # "an x part", "a z part"
+            "n": _axis_text(axis), "nx": str(n[0]), "ny": str(n[1]), "nz": str(n[2]),
+            **{f"e{c}": _root_half(q[_SLOT[c]], "\\sqrt2/2") for c in "wxyz"},
+            **{f"d{c}": _num4(q[_SLOT[c]]) for c in "wxyz"},
+            "w2": _square(q[0] ** 2), "v2": _square(sum(c * c for c in q[1:])), "back": num(360 - t),
+        },
+    }
+
 
 EXERCISES = (
     Derive(
         id="2.1",
         title="Yaw by 90°",
-        key=matvec(rz(math.pi / 2), [1, 0, 0])[1],
-        label="y-component of Rz(90°)·(1, 0, 0)ᵀ",
-        slips=(
-            Slip(matvec(rz(-math.pi / 2), [1, 0, 0])[1],
-                 "That is a clockwise yaw. A positive angle about z turns x towards y (right-hand rule)."),
-        ),
+        vary=Vary(_yaw_x_axis, Param("gamma", 90, 5, 175, 5, unit="°")),
     ),
     Trace(
         id="2.2",
@@ -46,62 +182,40 @@ EXERCISES = (
     Derive(
         id="2.3",
         title="Quaternion for 90° about z",
-        key=quat_from_axis_angle((0, 0, 1), math.pi / 2)[0],
         either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
         label="w",
-        slips=(
-            Slip(math.cos(math.pi / 2),
-                 "That is cos 90°, the full angle. A quaternion uses half the angle: w = cos(θ/2) = cos 45°."),
-        ),
+        # θ = 120° is never drawn: there cos θ = −cos(θ/2), so the full-angle slip would be accepted as −w
+        vary=Vary(_quat_w, Param("theta", 90, 10, 170, 10, unit="°", avoid=(120,)),
+                  Choice("axis", "z", ("x", "y", "z"))),
     ),
     Derive(
         id="2.4",
         title="Quaternion for 180° about x",
-        key=quat_from_axis_angle((1, 0, 0), math.pi)[3],
         label="z",
-        slips=(
-            Slip(quat_from_axis_angle((1, 0, 0), math.pi)[1],
-                 "That is the x component. The axis is (1, 0, 0), so sin(θ/2) lands in x only; z gets sin(θ/2)·0."),
-        ),
+        # the asked component lies off the axis: the text explains why it is 0
+        vary=Vary(_half_turn_component, Choice("axis", "x", ("x", "y", "z")), Choice("comp", "z", ("x", "y", "z")),
+                  valid=lambda p: p["comp"] != p["axis"]),
     ),
     Derive(
         id="2.5",
         title="The norm of a quaternion",
-        key=quat_norm((0.5, 0.5, 0.5, 0.5)),
         label="‖q‖",
-        slips=(
-            Slip(2.0, "That is the sum of the components. The norm squares them first: √(4 · 0.5²)."),
-        ),
+        # every component is ±0.5, so q stays a rotation ("It is a valid rotation", √(4 · 0.25));
+        # a sum of 1 is never drawn: the sum-of-components slip would be the key
+        vary=Vary(_quat_norm, *(Param(c, 0.5, -0.5, 0.5, 1) for c in "wxyz"),
+                  valid=lambda p: not math.isclose(sum(p.values()), 1.0)),
     ),
     MatrixDerive(
         id="2.6",
         title="Yaw a whole vector",
-        key=column(matvec(rz(math.pi / 2), list(_V))),
-        label="Rz(90°)·(2, 1, 3)ᵀ",
-        slips=(
-            Slip(column(matvec(rz(-math.pi / 2), list(_V))),
-                 "That is Rz(−90°)·v, a clockwise yaw (the same as multiplying by the transpose of Rz(90°)). "
-                 "A positive yaw turns x towards y."),
-            Slip(column((_V[1], _V[0], _V[2])),
-                 "You swapped x and y but lost a sign. A quarter turn about z sends (x, y) to (−y, x)."),
-        ),
+        # no zero component: x = 0 or y = 0 would make a slip coincide with the key or another slip
+        vary=Vary(_yaw_vector, *(Param(c, d, -5, 5, 1, avoid=(0,)) for c, d in zip("xyz", (2, 1, 3)))),
     ),
     MatrixDerive(
         id="2.7",
         title="The whole quaternion for 90° about z",
-        key=column(_Q90Z),
         label="q = (w, x, y, z)ᵀ",
         either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
-        slips=(
-            Slip(column(quat_from_axis_angle((0, 0, 1), math.pi)),
-                 "That is the quaternion of a 180° turn: you used the full angle. A quaternion holds half of it: "
-                 "w = cos(θ/2), (x, y, z) = sin(θ/2)·n."),
-            Slip(column(_Q90Z[1:] + _Q90Z[:1]),
-                 "Those are the right numbers in the order (x, y, z, w), scalar last, as some libraries store "
-                 "them. This answer asks for (w, x, y, z)."),
-            Slip(column(quat_from_axis_angle((0, 0, 1), -math.pi / 2)),
-                 "That is the conjugate, a turn of −90° (clockwise seen from above). For +90° about +z, "
-                 "the z part is +sin 45°."),
-        ),
+        vary=Vary(_quat_whole, Param("theta", 90, 10, 170, 10, unit="°"), Choice("axis", "z", ("x", "y", "z"))),
     ),
 )
