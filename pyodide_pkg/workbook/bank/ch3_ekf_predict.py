@@ -1,22 +1,360 @@
 """Chapter 3 · EKF prediction step."""
 
 import math
+from fractions import Fraction
 
 from ..answer_kinds.expression import FormulaDerive
 from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.debug import Debug
-from ..kinds.derive import Derive, Slip
+from ..kinds.derive import Derive, Slip, fmt
 from ..kinds.trace import Option, Trace
 from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
 from ..reference.linalg import add, matmul, sub, identity, transpose
+from ..tolerance import agrees, clean
+from ..variants import Choice, Param, Vary, num
 from . import grid
 
-_P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]
+_P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
 _Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
-_P_PRED = ekf_predict((0, 0, 0), _P, 1, 0, 1, _Q)[1]
-_F0 = motion_jacobian((0, 0, 0), 1, 0, 1)  # exercise 3.4's F
-_ZERO = [[0.0] * 3 for _ in range(3)]
-_F_NORTH = motion_jacobian((0, 0, math.pi / 2), 2, 0, 0.5)  # exercise 3.7
+_EAST, _NORTH = 0.0, math.pi / 2
+_PRINTED_37, _PRINTED_38 = (2, 0.5), (1, 1)  # (v, dt) as the workbook prints 3.7 and 3.8 (variant 0)
+
+
+# ---- helpers for the variants -------------------------------------------------
+def _sig(x: float) -> str:
+    """A derived number as the derivation prints it: 4 decimals, 4 significant digits when small."""
+    return fmt(clean(x), digits=4)
+
+
+def _bm(m) -> str:
+    """A matrix in TeX as the chapter writes it: ``\\begin{bmatrix} 1 & 0 \\\\ 0 & 1 \\end{bmatrix}``."""
+    rows = " \\\\ ".join(" & ".join(num(clean(v)) for v in row) for row in m)
+    return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
+
+
+def _diag(a: float, b: float, c: float):
+    return [[a, 0, 0], [0, b, 0], [0, 0, c]]
+
+
+def _metres(d: float, one: str) -> str:
+    """A distance in words: ``one`` (e.g. "one metre") for exactly 1 m, else "1.5 metres"."""
+    return one if math.isclose(d, 1.0) else f"{num(d)} metres"
+
+
+def _pi_frac(deg: int, tfrac: bool = False) -> str:
+    """An angle in degrees as a multiple of π in TeX: 45 -> ``\\pi/4`` (or ``\\tfrac{\\pi}{4}``), -30 -> ``-\\pi/6``.
+
+    >>> _pi_frac(45), _pi_frac(-35), _pi_frac(45, tfrac=True), _pi_frac(180)
+    ('\\\\pi/4', '-7\\\\pi/36', '\\\\tfrac{\\\\pi}{4}', '\\\\pi')
+    """
+    f = Fraction(int(deg), 180)
+    sign, n, d = "-" if f < 0 else "", abs(f.numerator), f.denominator
+    top = "\\pi" if n == 1 else f"{n}\\pi"
+    if d == 1:
+        return sign + top
+    return f"{sign}\\tfrac{{{top}}}{{{d}}}" if tfrac else f"{sign}{top}/{d}"
+
+
+def _apart(key, slips) -> bool:
+    """No slip agrees with the key or with another slip (numbers or matrices), in either direction."""
+    def same(a, b) -> bool:
+        if isinstance(a, (tuple, list)):
+            return all(same(x, y) for x, y in zip(a, b))
+        a, b = clean(a), clean(b)
+        return agrees(a, b) or agrees(b, a)
+
+    values = [key, *(s.value for s in slips)]
+    return not any(same(values[i], values[j]) for i in range(len(values)) for j in range(i + 1, len(values)))
+
+
+# ---- 3.1 ------------------------------------------------------------------------
+def _compass(x0: int, y0: int) -> str:
+    """Where the start lies, in words (3.1's statement).
+
+    >>> _compass(0, 0), _compass(2, -1), _compass(0, 3)
+    ('the origin', '2 m east and 1 m south of the origin', '3 m north of the origin')
+    """
+    parts = [f"{abs(c)} m {(pos if c > 0 else neg)}" for c, pos, neg in ((x0, "east", "west"), (y0, "north", "south")) if c]
+    return " and ".join(parts) + " of the origin" if parts else "the origin"
+
+
+def _drive_east(p):
+    """3.1: from (x0, y0) facing east at v for dt; asked: the new x."""
+    x0, y0, v, dt = p["x0"], p["y0"], p["v"], p["dt"]
+    xn, yn, _ = motion_model((x0, y0, _EAST), v, 0, dt)
+    dx, dy, _ = motion_model((0, 0, _EAST), v, 0, dt)  # the displacement alone
+    east = "Facing east, all the motion goes into x: cos 0 = 1."
+    if x0 == y0:  # y′ and "sin used for x" are the same number
+        slips = [Slip(yn, f"That is y (or you used sin for x). {east}")]
+    else:
+        slips = [Slip(yn, f"That is y. {east}"),
+                 Slip(x0 + dy, f"That leaves x where it started: you used sin for x. {east}")]
+    if x0:
+        slips.append(Slip(dx, f"That is the distance driven alone. x′ = x + v·cosθ·dt starts from x = {num(x0)}."))
+    if dt != 1:
+        slips.append(Slip(motion_model((x0, y0, _EAST), v, 0, 1)[0],
+                          f"You left out dt. The robot drives for {num(dt)} s, so it covers v·dt = {num(dx)} m, "
+                          f"not {num(v)} m."))
+    return {
+        "key": xn,
+        "slips": tuple(slips),
+        "values": {"where": _compass(x0, y0), "xn": num(xn), "yn": num(yn), "dist": _metres(dx, "one metre")},
+    }
+
+
+def _drive_east_ok(p) -> bool:
+    """The slips (y′, sin for x, no start, no dt) are told apart from the key and each other."""
+    f = _drive_east(p)
+    return _apart(f["key"], f["slips"])
+
+
+# ---- 3.2 ------------------------------------------------------------------------
+def _drive_at_heading(p):
+    """3.2: from the origin at heading θ, v for dt; asked: the new y."""
+    deg, v, dt = p["theta"], p["v"], p["dt"]
+    theta = math.radians(deg)
+    xn, yn, _ = motion_model((0, 0, theta), v, 0, dt)
+    d = v * dt
+    slips = [Slip(motion_model((0, 0, theta), v, 0, 1)[1],
+                  f"You left out dt. The robot drives for {num(dt)} s, so it covers v·dt = {num(d)} m, not {num(v)} m.")]
+    if not agrees(clean(xn), clean(yn)):
+        slips.append(Slip(xn, "That is x′, the cosine share. The new y takes the sine: y′ = y + v·sinθ·dt."))
+    even = math.isclose(abs(math.cos(theta)), abs(math.sin(theta)))
+    arg = _pi_frac(deg, tfrac=True)
+    return {
+        "key": yn,
+        "slips": tuple(slips),
+        "values": {
+            "rad": _pi_frac(deg),
+            "targ": arg if deg > 0 else f"\\left({arg}\\right)",
+            "vdt": "" if math.isclose(d, 1.0) else num(d),
+            "sdeg": f"{deg}°" if deg > 0 else f"({deg}°)",
+            "xn": _sig(xn), "yn": _sig(yn), "d": num(d),
+            "split": "evenly" if even else "by the cosine and sine of the heading",
+        },
+    }
+
+
+def _drive_at_heading_ok(p) -> bool:
+    """Neither coordinate is zero (no heading along an axis), and the slips stay apart."""
+    f = _drive_at_heading(p)
+    x, y = motion_model((0, 0, math.radians(p["theta"])), p["v"], 0, p["dt"])[:2]
+    return abs(x) >= 0.01 and abs(y) >= 0.01 and _apart(f["key"], f["slips"])
+
+
+# ---- 3.3 ------------------------------------------------------------------------
+def _north_f13(p):
+    """3.3: F(1,3) facing north at v for dt."""
+    v, dt = p["v"], p["dt"]
+    F = motion_jacobian((0, 0, _NORTH), v, 0, dt)
+    return {
+        "key": F[0][2],
+        "slips": (
+            Slip(motion_jacobian((0, 0, _NORTH), v, 0, 1)[0][2],
+                 f"You left out dt: F(1,3) = −v·sinθ·dt, and dt = {num(dt)}."),
+            Slip(clean(-F[1][2]), "That uses cos θ. Differentiating v·cosθ·dt with respect to θ gives −v·sinθ·dt."),
+        ),
+        "values": {"f13": num(F[0][2])},
+    }
+
+
+def _north_f13_ok(p) -> bool:
+    """Leaving out dt must give another number (dt ≠ 1 is also excluded from the grid)."""
+    f = _north_f13(p)
+    return _apart(f["key"], f["slips"])
+
+
+# ---- 3.4 and 3.8 ------------------------------------------------------------------
+def _east_covariance(v, dt, P, Q):
+    """F, F P, F P Fᵀ and P⁻ facing east (θ = 0) with the reference code."""
+    F = motion_jacobian((0, 0, _EAST), v, 0, dt)
+    FP = matmul(F, P)
+    return F, FP, matmul(FP, transpose(F)), ekf_predict((0, 0, _EAST), P, v, 0, dt, Q)[1]
+
+
+def _heading_gain(f23: float, p33: float) -> str:
+    """What y gains from the heading: ``0.1`` when F₂₃ = 1, else ``0.1 \\cdot F_{23}^2 = 0.4``."""
+    if math.isclose(f23, 1.0):
+        return num(p33)
+    return f"{num(p33)} \\cdot F_{{23}}^2 = {num(f23 * f23 * p33)}"
+
+
+_ASKED = {"1,1": (0, "P^-_{11}"), "2,2": (1, "P^-_{22}")}
+
+
+def _covariance_entry(p):
+    """3.4: one diagonal entry of P⁻ = F P Fᵀ + Q facing east."""
+    v, dt, entry = p["v"], p["dt"], p["entry"]
+    P = _diag(p["p11"], p["p22"], p["p33"])
+    Q = _diag(p["q11"], p["q22"], p["q33"])
+    F, FP, FPF, Pm = _east_covariance(v, dt, P, Q)
+    f23 = F[1][2]
+    i, asked = _ASKED[entry]
+    if entry == "1,1":
+        slips = [Slip(Pm[1][1], "That is P⁻(2,2), the y variance. The question asks for the top-left entry."),
+                 Slip(FPF[0][0], f"That is F P Fᵀ alone. Add the process noise Q: its (1,1) entry is {num(Q[0][0])}.")]
+    else:
+        slips = [Slip(Pm[0][0], "That is P⁻(1,1), the x variance. The question asks for the (2,2) entry, the y variance."),
+                 Slip(FPF[1][1], f"That is F P Fᵀ alone. Add the process noise Q: its (2,2) entry is {num(Q[1][1])}."),
+                 Slip(add(P, Q)[1][1], "That is P + Q: you left F out. F passes the heading uncertainty into y: "
+                                       f"add F₂₃²·P₃₃ = {num(f23 * f23 * P[2][2])}.")]
+        if not math.isclose(f23, 1.0):
+            slips.append(Slip(P[1][1] + f23 * P[2][2] + Q[1][1],
+                              f"F₂₃ enters twice, once from F and once from Fᵀ: the heading adds F₂₃²·P₃₃ = "
+                              f"{num(f23 * f23 * P[2][2])}, not F₂₃·P₃₃."))
+    return {
+        "key": Pm[i][i],
+        "label": f"P⁻({entry})",
+        "slips": tuple(slips),
+        "values": {"f23": num(f23), "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm),
+                   "p22m": num(Pm[1][1]), "p23m": num(Pm[1][2]), "asked": asked, "ans": num(Pm[i][i])},
+    }
+
+
+def _covariance_entry_ok(p) -> bool:
+    """y grows more than x (the derivation says so), and the slips stay apart."""
+    if not p["q22"] + (p["v"] * p["dt"]) ** 2 * p["p33"] > p["q11"]:
+        return False
+    f = _covariance_entry(p)
+    return _apart(f["key"], f["slips"])
+
+
+def _predicted_covariance(p):
+    """3.8: the whole P⁻ = F P Fᵀ + Q facing east, with exercise 3.4's P and Q."""
+    v, dt = p["v"], p["dt"]
+    F, FP, FPF, Pm = _east_covariance(v, dt, _P, _Q)
+    f23 = F[1][2]
+    printed = (v, dt) == _PRINTED_38
+    slips = [
+        Slip(grid(FPF), "That is F P Fᵀ without the process noise. Add Q: the motion itself is uncertain."),
+        Slip(grid(add(_P, _Q)), "That is P + Q: you left F out. F passes the heading uncertainty into y, which is "
+                                "where the off-diagonal terms come from."),
+        Slip(grid(add(matmul(matmul(transpose(F), _P), F), _Q)),
+             "That is Fᵀ P F + Q, the product in the wrong order. The covariance is pushed forward as F P Fᵀ."),
+    ]
+    if not math.isclose(f23, 1.0):
+        once = [row[:] for row in Pm]
+        once[1][1] = _P[1][1] + f23 * _P[2][2] + _Q[1][1]
+        slips.append(Slip(grid(once), "Check P⁻(2,2): F₂₃ enters twice, once from F and once from Fᵀ, so y gains "
+                                      f"F₂₃²·P₃₃ = {num(f23 * f23 * _P[2][2])}, not F₂₃·P₃₃."))
+    return {
+        "key": grid(Pm),
+        "slips": tuple(slips),
+        "values": {
+            "src": "the numbers of exercise 3.4" if printed else "these numbers",
+            "same": "the same" if printed else "with",
+            "pdef": "" if printed else f" = \\operatorname{{diag}}({num(_P[0][0])}, {num(_P[1][1])}, {num(_P[2][2])})",
+            "qdef": "" if printed else f" = \\operatorname{{diag}}({num(_Q[0][0])}, {num(_Q[1][1])}, {num(_Q[2][2])})",
+            "fsrc": "Exercise 3.4's hint gives" if printed else "At this heading and step,",
+            "fdef": "" if printed else f" = {_bm(F)}",
+            "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm), "f23": num(f23),
+            "gain": _heading_gain(f23, _P[2][2]), "metres": _metres(f23, "a metre"), "p23m": num(Pm[1][2]),
+        },
+    }
+
+
+def _predicted_covariance_ok(p) -> bool:
+    """The slips (no Q, no F, Fᵀ P F, F₂₃ once) stay apart from the key and from each other."""
+    f = _predicted_covariance(p)
+    return _apart(f["key"], f["slips"])
+
+
+# ---- 3.7 ------------------------------------------------------------------------
+def _north_jacobian(p):
+    """3.7: the whole F facing north at v for dt."""
+    v, dt = p["v"], p["dt"]
+    F = motion_jacobian((0, 0, _NORTH), v, 0, dt)
+    d = v * dt
+    return {
+        "key": grid(F),
+        "slips": (
+            Slip(grid(motion_jacobian((0, 0, _EAST), v, 0, dt)),
+                 "That is F at θ = 0 (or sin and cos swapped). Facing north, sin θ = 1 and cos θ = 0: the "
+                 "heading column is (−v·dt, 0, 1)."),
+            Slip(grid(motion_jacobian((0, 0, _NORTH), v, 0, 1)),
+                 f"You left out dt: F(1,3) = −v·sin θ·dt = −{num(v)} · 1 · {num(dt)}."),
+            Slip(grid(sub(F, identity(3))),
+                 "That is the derivative of the displacement alone. x′ = x + v cos θ dt also contains x itself, "
+                 "so F carries the identity on its diagonal."),
+            Slip(grid(motion_jacobian((0, 0, -_NORTH), v, 0, dt)),
+                 "The sign of F(1,3) is flipped: the derivative of cos θ is −sin θ, so F(1,3) = −v sin θ dt."),
+        ),
+        "values": {
+            "f13": num(F[0][2]),
+            "travel": _metres(d, "one metre"),
+            "dx": "-\\delta\\theta" if math.isclose(d, 1.0) else f"-{num(d)}\\,\\delta\\theta",
+            "col": "0, 1, 1" if (v, dt) == _PRINTED_37 else "0, v\\,dt, 1",  # 3.4's column as printed
+        },
+    }
+
+
+def _north_jacobian_ok(p) -> bool:
+    """Leaving out dt must change F (dt ≠ 1 is also excluded from the grid); the slips stay apart."""
+    f = _north_jacobian(p)
+    return _apart(f["key"], f["slips"])
+
+
+# ---- 3.9 ------------------------------------------------------------------------
+def _f13(v, theta, dt):
+    return motion_jacobian((0.0, 0.0, theta), v, 0.0, dt)[0][2]
+
+
+def _f23(v, theta, dt):
+    return motion_jacobian((0.0, 0.0, theta), v, 0.0, dt)[1][2]
+
+
+_HEADING_COLUMN = {
+    "1,3": {
+        "key": _f13, "answer_text": "-v*sin(theta)*dt",
+        "values": {"Fij": "F_{13}", "coord": "x", "model": "x' = x + v\\cos\\theta\\,dt",
+                   "rhs": "x + v\\cos\\theta\\,dt", "deriv": "-v\\sin\\theta\\,dt", "trig": "\\cos\\theta",
+                   "ref": "Exercise 3.3"},
+        "at": (1, math.pi / 2, 0.5, "\\pi/2"),
+        "slips": (
+            Slip(lambda v, theta, dt: v * math.sin(theta) * dt,
+                 "The sign is flipped: the derivative of cos θ is −sin θ."),
+            Slip(lambda v, theta, dt: -v * math.cos(theta) * dt,
+                 "That differentiates to cos θ. x′ contains v cos θ dt, whose derivative by θ is −v sin θ dt."),
+            Slip(lambda v, theta, dt: -v * math.sin(theta),
+                 "You left out dt: the robot drives for dt seconds, so every displacement carries a factor dt."),
+            Slip(lambda v, theta, dt: v * math.cos(theta) * dt,
+                 "That is F(2,3), the derivative of y′. F(1,3) is the derivative of x′ = x + v cos θ dt."),
+        ),
+    },
+    "2,3": {
+        "key": _f23, "answer_text": "v*cos(theta)*dt",
+        "values": {"Fij": "F_{23}", "coord": "y", "model": "y' = y + v\\sin\\theta\\,dt",
+                   "rhs": "y + v\\sin\\theta\\,dt", "deriv": "v\\cos\\theta\\,dt", "trig": "\\sin\\theta",
+                   "ref": "The (2,3) entry of exercise 3.4's F"},
+        "at": (1, 0.0, 1, "0"),
+        "slips": (
+            Slip(lambda v, theta, dt: -v * math.cos(theta) * dt,
+                 "The sign is flipped: the derivative of sin θ is +cos θ, with no minus."),
+            Slip(lambda v, theta, dt: v * math.sin(theta) * dt,
+                 "That is the term itself, not its derivative. y′ contains v sin θ dt, whose derivative by θ "
+                 "is v cos θ dt."),
+            Slip(lambda v, theta, dt: v * math.cos(theta),
+                 "You left out dt: the robot drives for dt seconds, so every displacement carries a factor dt."),
+            Slip(lambda v, theta, dt: -v * math.sin(theta) * dt,
+                 "That is F(1,3), the derivative of x′. F(2,3) is the derivative of y′ = y + v sin θ dt."),
+        ),
+    },
+}
+
+
+def _heading_column_formula(p):
+    """3.9: an entry of F's heading column, F(1,3) or F(2,3), as a formula in v, θ, dt."""
+    case = _HEADING_COLUMN[p["entry"]]
+    v, theta, dt, theta_tex = case["at"]
+    return {
+        "title": f"F({p['entry']}) as a formula",
+        "label": f"F({p['entry']})",
+        "key": case["key"],
+        "answer_text": case["answer_text"],
+        "slips": case["slips"],
+        "values": {**case["values"], "rv": num(v), "rth": theta_tex, "rdt": num(dt),
+                   "rval": num(case["key"](v, theta, dt))},
+    }
 
 
 def _predict_pose(x, y, theta, v, omega, dt):
@@ -28,39 +366,36 @@ EXERCISES = (
     Derive(
         id="3.1",
         title="Predict the new position",
-        key=motion_model((0, 0, 0), 1, 0, 1)[0],
         label="x (m)",
         unit="m",
-        slips=(Slip(0.0, "That is y (or you used sin for x). Facing east, all the motion goes into x: cos 0 = 1."),),
+        vary=Vary(_drive_east, Param("x0", 0, -3, 3, 1, unit=" m"), Param("y0", 0, -3, 3, 1, unit=" m"),
+                  Param("v", 1, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
+                  valid=_drive_east_ok),
     ),
     Derive(
         id="3.2",
         title="Predict at a heading",
-        key=motion_model((0, 0, math.pi / 4), 2, 0, 0.5)[1],
         label="y (m)",
         unit="m",
-        slips=(Slip(2 * math.sin(math.pi / 4),
-                    "You left out dt. The robot drives for 0.5 s, so it covers v·dt = 1 m, not 2 m."),),
+        vary=Vary(_drive_at_heading, Param("theta", 45, -175, 175, 5, unit="°", avoid=(0, 90, -90)),
+                  Param("v", 2, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)),
+                  valid=_drive_at_heading_ok),
     ),
     Derive(
         id="3.3",
         title="An entry of the Jacobian F",
-        key=motion_jacobian((0, 0, math.pi / 2), 1, 0, 0.5)[0][2],
         label="F(1,3)",
-        slips=(
-            Slip(-1.0, "You left out dt: F(1,3) = −v·sinθ·dt, and dt = 0.5."),
-            Slip(0.0, "That uses cos θ. Differentiating v·cosθ·dt with respect to θ gives −v·sinθ·dt."),
-        ),
+        vary=Vary(_north_f13, Param("v", 1, 0.5, 3, 0.5, unit=" m/s"),
+                  Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_f13_ok),
     ),
     Derive(
         id="3.4",
         title="Predict the covariance",
-        key=_P_PRED[0][0],
-        label="P⁻(1,1)",
-        slips=(
-            Slip(_P_PRED[1][1], "That is P⁻(2,2), the y variance. The question asks for the top-left entry."),
-            Slip(1.0, "That is F P Fᵀ alone. Add the process noise Q: its (1,1) entry is 0.01."),
-        ),
+        vary=Vary(_covariance_entry, Param("v", 1, 0.5, 2, 0.5, unit=" m/s"), Param("dt", 1, 0.2, 2, 0.2, unit=" s"),
+                  Param("p11", 1, 0.5, 2, 0.1), Param("p22", 1, 0.5, 2, 0.1), Param("p33", 0.1, 0.01, 0.2, 0.01),
+                  Param("q11", 0.01, 0.01, 0.05, 0.01), Param("q22", 0.01, 0.01, 0.05, 0.01),
+                  Param("q33", 0.001, 0.001, 0.005, 0.001), Choice("entry", "1,1", ("1,1", "2,2")),
+                  valid=_covariance_entry_ok),
     ),
     Debug(
         id="3.5",
@@ -115,54 +450,22 @@ EXERCISES = (
     MatrixDerive(
         id="3.7",
         title="The whole Jacobian F facing north",
-        key=grid(_F_NORTH),
         label="F",
-        slips=(
-            Slip(grid(motion_jacobian((0, 0, 0), 2, 0, 0.5)),
-                 "That is F at θ = 0 (or sin and cos swapped). Facing north, sin θ = 1 and cos θ = 0: the "
-                 "heading column is (−v·dt, 0, 1)."),
-            Slip(grid(motion_jacobian((0, 0, math.pi / 2), 2, 0, 1)),
-                 "You left out dt: F(1,3) = −v·sin θ·dt = −2 · 1 · 0.5."),
-            Slip(grid(sub(_F_NORTH, identity(3))),
-                 "That is the derivative of the displacement alone. x′ = x + v cos θ dt also contains x itself, "
-                 "so F carries the identity on its diagonal."),
-            Slip(grid(motion_jacobian((0, 0, -math.pi / 2), 2, 0, 0.5)),
-                 "The sign of F(1,3) is flipped: the derivative of cos θ is −sin θ, so F(1,3) = −v sin θ dt."),
-        ),
+        vary=Vary(_north_jacobian, Param("v", _PRINTED_37[0], 0.5, 3, 0.5, unit=" m/s"),
+                  Param("dt", _PRINTED_37[1], 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_jacobian_ok),
     ),
     MatrixDerive(
         id="3.8",
         title="The whole predicted covariance",
-        key=grid(_P_PRED),
         label="P⁻ = F P Fᵀ + Q",
-        slips=(
-            Slip(grid(ekf_predict((0, 0, 0), _P, 1, 0, 1, _ZERO)[1]),
-                 "That is F P Fᵀ without the process noise. Add Q: the motion itself is uncertain."),
-            Slip(grid(add(_P, _Q)),
-                 "That is P + Q: you left F out. F passes the heading uncertainty into y, which is where the "
-                 "off-diagonal terms come from."),
-            Slip(grid(add(matmul(matmul(transpose(_F0), _P), _F0), _Q)),
-                 "That is Fᵀ P F + Q, the product in the wrong order. The covariance is pushed forward as "
-                 "F P Fᵀ."),
-        ),
+        vary=Vary(_predicted_covariance, Param("v", _PRINTED_38[0], 0.5, 2, 0.5, unit=" m/s"),
+                  Param("dt", _PRINTED_38[1], 0.2, 2, 0.2, unit=" s"), valid=_predicted_covariance_ok),
     ),
     FormulaDerive(
         id="3.9",
         title="F(1,3) as a formula",
-        key=lambda v, theta, dt: motion_jacobian((0.0, 0.0, theta), v, 0.0, dt)[0][2],
         variables=("v", "theta", "dt"),
         domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},
-        answer_text="-v*sin(theta)*dt",
-        label="F(1,3)",
-        slips=(
-            Slip(lambda v, theta, dt: v * math.sin(theta) * dt,
-                 "The sign is flipped: the derivative of cos θ is −sin θ."),
-            Slip(lambda v, theta, dt: -v * math.cos(theta) * dt,
-                 "That differentiates to cos θ. x′ contains v cos θ dt, whose derivative by θ is −v sin θ dt."),
-            Slip(lambda v, theta, dt: -v * math.sin(theta),
-                 "You left out dt: the robot drives for dt seconds, so every displacement carries a factor dt."),
-            Slip(lambda v, theta, dt: v * math.cos(theta) * dt,
-                 "That is F(2,3), the derivative of y′. F(1,3) is the derivative of x′ = x + v cos θ dt."),
-        ),
+        vary=Vary(_heading_column_formula, Choice("entry", "1,3", ("1,3", "2,3"))),
     ),
 )
