@@ -3,10 +3,11 @@
 import math
 
 from ..answer_kinds.matrix import MatrixDerive
-from ..kinds.derive import Derive, Slip
+from ..kinds.derive import Derive, Slip, fmt
 from ..kinds.trace import Option, Trace
 from ..reference.linalg import det2
 from ..reference.pose_graph import (
+    edge_error,
     edge_error_relative,
     edge_error_simple,
     gauss_newton_size,
@@ -14,54 +15,217 @@ from ..reference.pose_graph import (
     pose_graph_variables,
     relative_pose,
 )
+from ..variants import Param, Vary, num, paren
 from . import column, grid
 
 _X1 = (0.0, 0.0, 0.0)
-_X2 = (1.1, 0.05, 0.02)
 _Z12 = (1.0, 0.0, 0.0)
-_SIGMA = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
-# Exercise 5.6: the same motion as 5.2, seen from a pose at (2, 1) facing north.
+# Exercise 5.6: pose 1 sits at (2, 1) facing north; the prose turns the motion with R(90°).
 _XI = (2.0, 1.0, math.pi / 2)
-_XJ = (1.95, 2.1, math.pi / 2 + 0.02)
-# Exercise 5.7: a scan match whose x and y errors are correlated.
-_SIGMA_C = [[0.02, 0.01, 0], [0.01, 0.02, 0], [0, 0, 0.001]]
-_DET_XY = det2([row[:2] for row in _SIGMA_C[:2]])
+# Exercise 5.2's own numbers: 5.6's derivation says when it is that motion.
+_H52 = (1.1, 0.05, 0.02)
+_WORDS = ("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen "
+          "sixteen seventeen eighteen nineteen").split()
+_TENS = "twenty thirty forty fifty sixty seventy eighty ninety".split()
+
+
+def _prose(x: float) -> str:
+    """A number in running text (outside math): a real minus sign."""
+    return num(x).replace("-", "−")
+
+
+def _times(r: float) -> str:
+    """A ratio in words: ``ten`` for 10, ``twenty-five`` for 25, ``12.5`` when not whole."""
+    k = round(r)
+    if abs(r - k) > 1e-9 or not 0 <= k < 100:
+        return num(r)
+    if k < 20:
+        return _WORDS[k]
+    tens, ones = divmod(k, 10)
+    return _TENS[tens - 2] + (f"-{_WORDS[ones]}" if ones else "")
+
+
+def _two(x: float) -> str:
+    """An entry to two decimals, as the answer line prints it (66.67, -33.33, 1000)."""
+    return num(round(x, 2))
+
+
+def _pose_count(p):
+    """5.1: the unknowns of a planar pose graph of n poses."""
+    n = p["n"]
+    return {
+        "key": pose_graph_variables(n, pose_dof=3),
+        "slips": (
+            Slip(n, "That counts poses, not numbers. Each planar pose carries three unknowns: x, y and θ."),
+            Slip(pose_graph_variables(n, pose_dof=6),
+                 "Six per pose is the 3D case. A planar pose has only x, y and θ."),
+        ),
+        "values": {"unknowns": num(pose_graph_variables(n, pose_dof=3)),
+                   "unknowns3d": num(pose_graph_variables(n, pose_dof=6))},
+    }
+
+
+def _odometry_error(p):
+    """5.2: e = z₁₂ − (x₂ − x₁) for pose 1 at the origin; asked: its x-component."""
+    x2 = (p["x2"], p["y2"], p["t2"])
+    e = edge_error_simple(_X1, x2, _Z12)
+    return {
+        "key": e[0],
+        "slips": (
+            Slip(-e[0], "The sign is flipped: you computed (x₂ − x₁) − z₁₂. The error is measurement minus prediction."),
+            Slip(x2[0] - _X1[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
+        ),
+        "values": {
+            "dx": num(x2[0] - _X1[0]), "dy": num(x2[1] - _X1[1]), "dt": num(x2[2] - _X1[2]),
+            "ex": num(e[0]), "ey": num(e[1]), "et": num(e[2]),
+            "sign": "negative" if e[0] < 0 else "positive",
+            "gap": _prose(abs(e[0])),
+            "apart": "further apart" if e[0] < 0 else "closer together",
+            "exact": num(edge_error(_X1, x2, _Z12)[0]),
+            "heading": _prose(x2[2]),
+        },
+    }
+
+
+def _information_diagonal(p):
+    """5.3: Ω = Σ⁻¹ for a diagonal Σ = diag(s, s, t); asked: Ω(1,1)."""
+    s, t = p["s"], p["t"]
+    omega = information_matrix([[s, 0, 0], [0, s, 0], [0, 0, t]])
+    return {
+        "key": omega[0][0],
+        "slips": (
+            Slip(s, "That is Σ(1,1), the covariance itself. The information matrix is its inverse, Ω = Σ⁻¹."),
+            Slip(omega[2][2], "That is Ω(3,3), the heading entry. The (1,1) entry belongs to x."),
+        ),
+        "values": {"wxy": num(omega[0][0]), "wt": num(omega[2][2]), "times": _times(omega[2][2] / omega[0][0])},
+    }
+
+
+def _hessian_size(p):
+    """5.5: the side of H for n poses of 6 DOF and m landmarks of 3 DOF."""
+    n, m = p["n"], p["m"]
+    size = gauss_newton_size(n, 6, m, 3)
+    million, rest = divmod(size * size, 10**6)
+    return {
+        "key": size,
+        "slips": (
+            Slip(gauss_newton_size(n, 6),
+                 f"That counts the poses only. In full SLAM the {m} landmarks are unknowns too, 3 numbers each."),
+            Slip(gauss_newton_size(n, 3, m, 3),
+                 "A 3D pose has 6 degrees of freedom (x, y, z, roll, pitch, yaw), not 3."),
+            Slip(size ** 2,
+                 "That is the number of entries of H. The question asks for its side: one row per unknown."),
+            Slip(gauss_newton_size(0, 6, m, 3), f"That counts the landmarks only. Add the {n} poses, 6 numbers each."),
+        ),
+        "values": {"poses": num(gauss_newton_size(n, 6)), "marks": num(gauss_newton_size(0, 6, m, 3)),
+                   "size": num(size), "entries": f"{'over' if rest else 'exactly'} {million} million"},
+    }
+
+
+def _distinct_sizes(p):
+    """5.5: no slip count equals another (3n + 3m = 6n when m = n; 6n = 3m when m = 2n)."""
+    return p["m"] != p["n"] and p["m"] != 2 * p["n"]
+
+
+def _turned_edge_error(p):
+    """5.6: e = z₁₂ − x₁⁻¹ ⊕ x₂ with pose 1 at (2, 1) facing north, as a column."""
+    xj = (p["x2"], p["y2"], math.pi / 2 + p["t2"])
+    dx, dy = xj[0] - _XI[0], xj[1] - _XI[1]
+    h = relative_pose(_XI, xj)
+    e = edge_error_relative(_XI, xj, _Z12)
+    world = edge_error_simple(_XI, xj, _Z12)
+    same = all(abs(a - b) < 1e-9 for a, b in zip(h, _H52))
+    motion = ("exercise 5.2's motion" if same else
+              f"the motion of exercise 5.2 with x₂ = [{', '.join(_prose(v) for v in h)}]")
+    return {
+        "key": column(e),
+        "slips": (
+            Slip(column(world),
+                 "You subtracted the poses in world axes. Odometry measures the motion in pose 1's frame, and "
+                 "pose 1 faces north: turn x₂ − x₁ into that frame first (its forward axis is the world's +y)."),
+            Slip(column([-v for v in e]),
+                 "The sign is flipped: that is prediction minus measurement. The error is z₁₂ − h, measured "
+                 "minus predicted."),
+            Slip(column(h),
+                 "That is h, the motion the poses imply, seen from pose 1. The error subtracts it from the "
+                 "odometry reading z₁₂."),
+        ),
+        "values": {
+            "dx": num(dx), "dy": num(dy), "pdx": paren(dx), "pdy": paren(dy),
+            "hx": num(h[0]), "hy": num(h[1]), "ht": num(h[2]),
+            "ex": num(e[0]), "ey": num(e[1]), "et": num(e[2]),
+            "wx": num(world[0]), "wy": num(world[1]), "wt": num(world[2]),
+            "motion": motion,
+        },
+    }
+
+
+def _xy_block(p):
+    """5.7's Σ: x and y variances s, their covariance b, the heading variance t."""
+    s, b, t = p["s"], p["b"], p["t"]
+    return [[s, b, 0], [b, s, 0], [0, 0, t]]
+
+
+def _correlated_information(p):
+    """5.7: Ω = Σ⁻¹ for a Σ whose x and y errors are correlated."""
+    sigma = _xy_block(p)
+    s, b, t = p["s"], p["b"], p["t"]
+    omega = information_matrix(sigma)
+    det = det2([row[:2] for row in sigma[:2]])
+    return {
+        "key": grid(omega),
+        "slips": (
+            Slip(grid([[1 / sigma[i][i] if i == j else 0.0 for j in range(3)] for i in range(3)]),
+                 f"You inverted the diagonal alone. With the correlation {num(b)} between x and y, the 2×2 block has "
+                 "to be inverted as a whole: 1/det times [[d, −b], [−c, a]]."),
+            Slip(grid([[1 / v if v else 0.0 for v in row] for row in sigma]),
+                 "You took the reciprocal of each entry. The inverse of a matrix is not entry by entry: invert "
+                 "the x–y block as a whole, then the θ entry on its own."),
+            Slip(grid([[v / det if i < 2 and j < 2 else (1 / v if i == j else 0.0)
+                        for j, v in enumerate(row)] for i, row in enumerate(sigma)]),
+                 "The off-diagonal entries have the wrong sign. The inverse of [[a, b], [c, d]] is "
+                 "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal."),
+        ),
+        "values": {
+            "det": fmt(det, digits=4), "mb": num(-b),
+            "wt": num(omega[2][2]), "w11": _two(omega[0][0]), "inv_s": num(1 / s),
+            "a11": _two(omega[0][0]), "a12": _two(omega[0][1]), "a22": _two(omega[1][1]), "a33": _two(omega[2][2]),
+        },
+    }
+
+
+def _two_places_suffice(p):
+    """5.7: Σ is positive definite and every non-zero entry of Ω is at least 10, so the
+    statement's "decimals to two places are fine" stays within the grading tolerance."""
+    s, b = p["s"], p["b"]
+    if b >= s:
+        return False
+    omega = information_matrix(_xy_block(p))
+    return all(abs(v) >= 10 for row in omega for v in row if abs(v) > 1e-9)
+
 
 EXERCISES = (
     Derive(
         id="5.1",
         title="Count the unknowns",
-        key=pose_graph_variables(100, pose_dof=3),
         label="number of optimisation variables",
         unit="variables",
-        slips=(
-            Slip(100, "That counts poses, not numbers. Each planar pose carries three unknowns: x, y and θ."),
-            Slip(pose_graph_variables(100, pose_dof=6),
-                 "Six per pose is the 3D case. A planar pose has only x, y and θ."),
-        ),
+        vary=Vary(_pose_count, Param("n", 100, 10, 500, 10)),
     ),
     Derive(
         id="5.2",
         title="Odometry edge error",
-        key=edge_error_simple(_X1, _X2, _Z12)[0],
         label="x-component of e = z₁₂ − (x₂ − x₁)",
         unit="m",
-        slips=(
-            Slip(-edge_error_simple(_X1, _X2, _Z12)[0],
-                 "The sign is flipped: you computed (x₂ − x₁) − z₁₂. The error is measurement minus prediction."),
-            Slip(_X2[0] - _X1[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
-        ),
+        vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
+                  Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"), Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
     ),
     Derive(
         id="5.3",
         title="Information matrix",
-        key=information_matrix(_SIGMA)[0][0],
         label="Ω(1,1), the (1,1) entry of Σ⁻¹",
-        slips=(
-            Slip(_SIGMA[0][0], "That is Σ(1,1), the covariance itself. The information matrix is its inverse, Ω = Σ⁻¹."),
-            Slip(information_matrix(_SIGMA)[2][2],
-                 "That is Ω(3,3), the heading entry. The (1,1) entry belongs to x."),
-        ),
+        vary=Vary(_information_diagonal, Param("s", 0.01, 0.01, 0.05, 0.01, avoid=(0.03,)),
+                  Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,))),
     ),
     Trace(
         id="5.4",
@@ -85,51 +249,23 @@ EXERCISES = (
     Derive(
         id="5.5",
         title="Size of the Gauss–Newton system",
-        key=gauss_newton_size(1000, 6, 500, 3),
         label="rows (= columns) of H",
-        slips=(
-            Slip(gauss_newton_size(1000, 6),
-                 "That counts the poses only. In full SLAM the 500 landmarks are unknowns too, 3 numbers each."),
-            Slip(gauss_newton_size(1000, 3, 500, 3),
-                 "A 3D pose has 6 degrees of freedom (x, y, z, roll, pitch, yaw), not 3."),
-            Slip(gauss_newton_size(1000, 6, 500, 3) ** 2,
-                 "That is the number of entries of H. The question asks for its side: one row per unknown."),
-            Slip(1500, "That counts the landmarks only. Add the 1000 poses, 6 numbers each."),
-        ),
+        vary=Vary(_hessian_size, Param("n", 1000, 500, 3000, 100), Param("m", 500, 100, 1000, 100),
+                  valid=_distinct_sizes),
     ),
     MatrixDerive(
         id="5.6",
         title="Edge error from a turned pose",
-        key=column(edge_error_relative(_XI, _XJ, _Z12)),
         label="e₁₂ = (eₓ, e_y, e_θ)ᵀ",
-        slips=(
-            Slip(column(edge_error_simple(_XI, _XJ, _Z12)),
-                 "You subtracted the poses in world axes. Odometry measures the motion in pose 1's frame, and "
-                 "pose 1 faces north: turn x₂ − x₁ into that frame first (its forward axis is the world's +y)."),
-            Slip(column([-v for v in edge_error_relative(_XI, _XJ, _Z12)]),
-                 "The sign is flipped: that is prediction minus measurement. The error is z₁₂ − h, measured "
-                 "minus predicted."),
-            Slip(column(relative_pose(_XI, _XJ)),
-                 "That is h, the motion the poses imply, seen from pose 1. The error subtracts it from the "
-                 "odometry reading z₁₂."),
-        ),
+        vary=Vary(_turned_edge_error, Param("x2", 1.95, 1.9, 2.1, 0.05, unit=" m"),
+                  Param("y2", 2.1, 1.7, 2.4, 0.1, unit=" m"), Param("t2", 0.02, 0.01, 0.05, 0.01, unit=" rad")),
     ),
     MatrixDerive(
         id="5.7",
         title="Information from a correlated covariance",
-        key=grid(information_matrix(_SIGMA_C)),
         label="Ω = Σ⁻¹",
-        slips=(
-            Slip(grid([[1 / _SIGMA_C[i][i] if i == j else 0.0 for j in range(3)] for i in range(3)]),
-                 "You inverted the diagonal alone. With the correlation 0.01 between x and y, the 2×2 block has "
-                 "to be inverted as a whole: 1/det times [[d, −b], [−c, a]]."),
-            Slip(grid([[1 / v if v else 0.0 for v in row] for row in _SIGMA_C]),
-                 "You took the reciprocal of each entry. The inverse of a matrix is not entry by entry: invert "
-                 "the x–y block as a whole, then the θ entry on its own."),
-            Slip(grid([[v / _DET_XY if i < 2 and j < 2 else (1 / v if i == j else 0.0)
-                        for j, v in enumerate(row)] for i, row in enumerate(_SIGMA_C)]),
-                 "The off-diagonal entries have the wrong sign. The inverse of [[a, b], [c, d]] is "
-                 "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal."),
-        ),
+        vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.01, avoid=(0.03,)),
+                  Param("b", 0.01, 0.005, 0.045, 0.005), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
+                  valid=_two_places_suffice),
     ),
 )

@@ -8,13 +8,16 @@ from ..kinds.debug import Debug
 from ..kinds.derive import Derive, Slip
 from ..reference.arm import (
     end_effector_velocity,
+    forward_kinematics_2link,
     jacobian_2link,
     jacobian_det,
     most_manipulable_theta2,
+    velocity_ratio,
 )
+from ..variants import Choice, Param, Vary, num, paren, signed
 from . import grid
 
-_J = jacobian_2link(1, 1, 0, math.pi / 2)
+_J = jacobian_2link(1, 1, 0, math.pi / 2)  # exercise 7.1's Jacobian, as 7.2 and 7.7 quote it
 
 _BUGGY = """\
 import math
@@ -28,51 +31,242 @@ def jacobian_2link(L1, L2, t1, t2):
     return [[J11, J12], [J21, J22]]
 """
 
+
+def _angle(deg: float) -> str:
+    """An angle as the text writes it: ``0`` bare, any other with its degree sign."""
+    return "0" if deg == 0 else f"{num(deg)}°"
+
+
+def _sin_arg(deg: float) -> str:
+    """The argument of sin/cos in TeX: ``0``, ``30°``, ``(-30°)``."""
+    return f"({_angle(deg)})" if deg < 0 else _angle(deg)
+
+
+def _jacobian_entry(p):
+    """7.1: J(1,1) for equal links L at θ1, with the elbow at θ2 = 90° − θ1 (link 2 points straight up)."""
+    L, t1 = p["L"], p["t1"]
+    t2 = 90 - t1
+    J = jacobian_2link(L, L, math.radians(t1), math.radians(t2))
+    s1, c1 = math.sin(math.radians(t1)), math.cos(math.radians(t1))
+    slips = [Slip(-J[0][0], "Check the sign, and the entry: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), "
+                  f"negative here (the derivative of cos is −sin). +{num(J[1][0])} is J(2,1), the derivative of y.")]
+    if t1 != 0:  # −J(1,1) and J(2,1) part ways: each slip gets its own message
+        slips = [
+            Slip(-J[0][0], "Check the sign: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), negative here "
+                 "(the derivative of cos is −sin)."),
+            Slip(J[1][0], "That is J(2,1) = ∂y/∂θ1, the derivative of y. J(1,1) differentiates x."),
+            Slip(J[0][1], "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, "
+                 "which moves both links."),
+        ]
+    return {
+        "key": J[0][0],
+        "slips": tuple(slips),
+        "values": {
+            "deg1": "" if t1 == 0 else "°", "t2": num(t2), "a1": _sin_arg(t1), "s1": num(s1),
+            "m1": num(-L * s1), "l1c": num(L * c1),
+            "j11": num(J[0][0]), "j12": num(J[0][1]), "j21": num(J[1][0]),
+            "det": num(jacobian_det(L, L, math.radians(t1), math.radians(t2))),
+        },
+    }
+
+
+def _tip_velocity(p):
+    """7.2: (ẋ, ẏ) = J (θ̇1, 0) with exercise 7.1's Jacobian; asked: ẋ."""
+    w = p["w1"]
+    v = end_effector_velocity(_J, [w, 0])
+    speed = math.hypot(*v)
+    root = "\\sqrt2" if abs(w) == 1 else f"{num(abs(w))}\\sqrt2"
+    return {
+        "key": v[0],
+        "slips": (
+            Slip(v[1], "That is ẏ, from the second row of J. ẋ comes from the first row."),
+            Slip(end_effector_velocity(_J, [w, w])[0], "θ̇2 is 0, so the second column of J contributes nothing."),
+        ),
+        "values": {"pw": paren(w), "col1": "column 1" if w == 1 else f"{num(w).replace('-', '−')} times column 1", "xd": num(v[0]), "yd": num(v[1]),
+                   "j11": num(_J[0][0]), "j12": num(_J[0][1]), "pj12": paren(_J[0][1]), "j21": num(_J[1][0]), "j22": num(_J[1][1]),
+                   "speed": f"{root} \\approx {speed:.2f}"},
+    }
+
+
+def _straight_arm_det(p):
+    """7.3: det J of the straight arm (θ2 = 0) with equal links L: always 0, the point of the exercise."""
+    L = p["L"]
+    return {
+        "key": jacobian_det(L, L, 0, 0),
+        "slips": (
+            Slip(jacobian_det(L, L, 0, math.pi / 2),
+                 "That is det J at θ2 = 90°. det J = L1 L2 sin θ2, and sin 0 = 0."),
+            Slip(float(L + L), "det J = L1 L2 sin θ2, a product with sin θ2, not a sum of lengths."),
+        ),
+    }
+
+
+def _best_elbow(p):
+    """7.4: the θ2 in [0°, 180°] where w = |det J| peaks, for equal links L (always 90°)."""
+    L = p["L"]
+    J = jacobian_2link(L, L, 0, math.pi / 2)
+    wmax = jacobian_det(L, L, 0, math.pi / 2)
+    return {
+        "key": math.degrees(most_manipulable_theta2(L, L, samples=181)),
+        "slips": (
+            Slip(0.0, "At θ2 = 0 the arm is straight and w = 0: that is the worst angle, a singularity."),
+            Slip(180.0, "At θ2 = 180° the arm is folded back and w = 0: another singularity."),
+            Slip(wmax, "That is the largest value of w. The question asks for the angle where it happens."),
+        ),
+        "values": {"w2": "" if L == 1 else num(L * L), "wmax": num(wmax),
+                   "j11": num(J[0][0]), "j12": num(J[0][1]), "j21": num(J[1][0]), "j22": num(J[1][1]),
+                   "ratio": num(round(velocity_ratio(J), 1))},
+    }
+
+
+def _link2_direction(deg: float) -> str:
+    """Where link 2 points, in words (the text says it outside math)."""
+    d = (deg + 180) % 360 - 180 or 0
+    d = 180 if d == -180 else d
+    words = {90: "straight up", -90: "straight down", 0: "straight along the positive x-axis",
+             180: "straight along the negative x-axis"}
+    return words.get(d, f"at {num(d).replace('-', '−')}° from the x-axis")
+
+
+def _unit_jacobian(p):
+    """7.6: the whole J of the unit-link arm at (θ1, θ2)."""
+    t1, t2 = p["t1"], p["t2"]
+    r1, r2 = math.radians(t1), math.radians(t2)
+    J = jacobian_2link(1, 1, r1, r2)
+    s1, c1, s12, c12 = math.sin(r1), math.cos(r1), math.sin(r1 + r2), math.cos(r1 + r2)
+    x, y = forward_kinematics_2link(1, 1, r1, r2)
+    return {
+        "key": grid(J),
+        "slips": (
+            Slip(grid([J[0], [J[1][0], 1 * s12]]),
+                 "J(2,2) uses sin(θ1 + θ2): that is the bug of exercise 7.5. ∂/∂θ2 of L2 sin(θ1 + θ2) is "
+                 f"L2 cos(θ1 + θ2) = cos {num(t1 + t2)}° = {num(c12)}."),
+            Slip(grid(jacobian_2link(1, 1, r2, r1)),
+                 f"That is J at θ = ({_angle(t2)}, {_angle(t1)}): the two joint angles are swapped. "
+                 f"Here θ1 = {_angle(t1)} and θ2 = {_angle(t2)}."),
+            Slip(grid(jacobian_2link(1, 1, r1, 0)),
+                 f"That is J of the straight arm, θ2 = 0. Put θ2 = {_angle(t2)} into sin(θ1 + θ2) and cos(θ1 + θ2)."),
+        ),
+        "values": {
+            "deg1": "" if t1 == 0 else "°", "t12": num(t1 + t2),
+            "s1": num(s1), "c1": num(c1), "s12": num(s12), "c12": num(c12),
+            "a11": f"-{num(s1)}" if s1 >= 0 else num(-s1), "b11": signed(-s12), "b21": signed(c12),
+            "j11": num(J[0][0]), "j12": num(J[0][1]), "j21": num(J[1][0]), "j22": num(J[1][1]),
+            "x": num(x), "y": num(y), "link2": _link2_direction(t1 + t2),
+            "det": num(jacobian_det(1, 1, r1, r2)),
+            "as71": " as in exercise 7.1" if (t1, t2) == (0, 90) else " a new pose",
+        },
+    }
+
+
+def _well_posed_jacobian(p):
+    """7.6: no singular pose, and no slip that equals the key (θ1 = θ2 makes the swap
+    harmless; sin = cos at θ1 + θ2 = 45° or −135° hides the exercise-7.5 bug)."""
+    t1, t2 = p["t1"], p["t2"]
+    return t2 % 180 != 0 and t1 != t2 and (t1 + t2) % 180 != 45
+
+
+_X_OF = "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1 + \\theta_2)"
+_Y_OF = "L_1\\sin\\theta_1 + L_2\\sin(\\theta_1 + \\theta_2)"
+
+
+def _entry(r: int, c: int):
+    """J(r+1, c+1) as a function of the formula's variables."""
+    return lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[r][c]
+
+
+# Each entry of J as a formula: its answer, its TeX, the slips a learner makes on it.
+_FORMULAS = {
+    (1, 1): ("-L1*sin(theta1) - L2*sin(theta1 + theta2)", "-L_1\\sin\\theta_1 - L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-y", (
+        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][0],
+         "The sign is flipped: the derivative of cos is −sin."),
+        (lambda theta1, theta2, L1, L2: -L1 * math.sin(theta1),
+         "Link 2 moves with θ1 too: its term L2 cos(θ1 + θ2) also depends on θ1, and contributes "
+         "−L2 sin(θ1 + θ2)."),
+        (_entry(0, 1), "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, which "
+         "moves both links."),
+        (_entry(1, 0), "That is J(2,1) = ∂y/∂θ1, from the sines of y. J(1,1) differentiates x, the cosines."),
+    )),
+    (1, 2): ("-L2*sin(theta1 + theta2)", "-L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-(y - L_1\\sin\\theta_1)", (
+        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][1],
+         "The sign is flipped: the derivative of cos is −sin."),
+        (_entry(0, 0), "That is J(1,1) = ∂x/∂θ1: joint 1 moves both links. J(1,2) differentiates by θ2, which "
+         "moves link 2 only."),
+        (_entry(1, 1), "That is J(2,2) = ∂y/∂θ2, from the sines of y. J(1,2) differentiates x, the cosines."),
+    )),
+    (2, 1): ("L1*cos(theta1) + L2*cos(theta1 + theta2)", "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x", (
+        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[1][0],
+         "The sign is flipped: the derivative of sin is +cos."),
+        (lambda theta1, theta2, L1, L2: L1 * math.cos(theta1),
+         "Link 2 moves with θ1 too: its term L2 sin(θ1 + θ2) also depends on θ1, and contributes "
+         "L2 cos(θ1 + θ2)."),
+        (_entry(1, 1), "That is J(2,2) = ∂y/∂θ2: only link 2 depends on θ2. J(2,1) differentiates by θ1, which "
+         "moves both links."),
+        (_entry(0, 0), "That is J(1,1) = ∂x/∂θ1, from the cosines of x. J(2,1) differentiates y, the sines."),
+    )),
+    (2, 2): ("L2*cos(theta1 + theta2)", "L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x - L_1\\cos\\theta_1", (
+        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[1][1],
+         "The sign is flipped: the derivative of sin is +cos."),
+        (_entry(1, 0), "That is J(2,1) = ∂y/∂θ1: joint 1 moves both links. J(2,2) differentiates by θ2, which "
+         "moves link 2 only."),
+        (_entry(0, 1), "That is J(1,2) = ∂x/∂θ2, from the cosines of x. J(2,2) differentiates y, the sines."),
+    )),
+}
+
+
+def _jacobian_formula(p):
+    """7.7: one entry of J as a formula in θ1, θ2, L1, L2 (which one is drawn)."""
+    entry = p["entry"]
+    r, c = (int(k) for k in entry.strip("()").split(","))
+    answer, tex, equals, slips = _FORMULAS[r, c]
+    coord, joint = "xy"[r - 1], c
+    at71 = jacobian_2link(1, 1, 0, math.pi / 2)[r - 1][c - 1]
+    return {
+        "key": _entry(r - 1, c - 1),
+        "answer_text": answer,
+        "label": f"J{entry} = ∂{coord}/∂θ{joint}",
+        "slips": tuple(Slip(f, m) for f, m in slips),
+        "values": {
+            "ij": f"{r}{c}", "coord": coord, "j": str(joint),
+            "fk": _X_OF if r == 1 else _Y_OF, "fk2": (_X_OF if r == 1 else _Y_OF).replace(" + \\theta", "+\\theta"),
+            "terms": "Both terms contain" if joint == 1 else "Only the second term contains",
+            "carries": "the whole arm, so both links appear" if joint == 1 else "link 2 alone, so only link 2 appears",
+            "equals": equals,
+            "turning": "the base" if joint == 1 else "the elbow",
+            "ref71": "Exercise 7.1 is this formula" if (r, c) == (1, 1) else "Exercise 7.1 works this formula out",
+            "at71": num(at71),
+            "formula": tex.format(s=" "), "formula2": tex.format(s=""),
+        },
+    }
+
+
 EXERCISES = (
     Derive(
         id="7.1",
         title="Jacobian at θ = (0, 90°)",
-        key=_J[0][0],
         label="J(1,1)",
-        slips=(
-            Slip(-_J[0][0], "Check the sign, and the entry: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), "
-                 "negative here (the derivative of cos is −sin). +1 is J(2,1), the derivative of y."),
-        ),
+        vary=Vary(_jacobian_entry, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("t1", 0, -45, 45, 5, unit="°")),
     ),
     Derive(
         id="7.2",
         title="End-effector velocity",
-        key=end_effector_velocity(_J, [1, 0])[0],
         label="ẋ",
         unit="m/s",
-        slips=(
-            Slip(end_effector_velocity(_J, [1, 0])[1], "That is ẏ, from the second row of J. ẋ comes from the first row."),
-            Slip(end_effector_velocity(_J, [1, 1])[0], "θ̇2 is 0, so the second column of J contributes nothing."),
-        ),
+        vary=Vary(_tip_velocity, Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))),
     ),
     Derive(
         id="7.3",
         title="Spot the singularity",
-        key=jacobian_det(1, 1, 0, 0),
         label="det J at θ2 = 0",
-        slips=(
-            Slip(jacobian_det(1, 1, 0, math.pi / 2),
-                 "That is det J at θ2 = 90°. det J = L1 L2 sin θ2, and sin 0 = 0."),
-            Slip(2.0, "det J = L1 L2 sin θ2, a product with sin θ2, not a sum of lengths."),
-        ),
+        vary=Vary(_straight_arm_det, Param("L", 1, 0.5, 2.5, 0.1, unit=" m", avoid=(2,))),
     ),
     Derive(
         id="7.4",
         title="Best elbow angle",
-        key=math.degrees(most_manipulable_theta2(1, 1)),
         label="θ2 that maximises w = |det J|",
         unit="°",
         angle="deg",
-        slips=(
-            Slip(0.0, "At θ2 = 0 the arm is straight and w = 0: that is the worst angle, a singularity."),
-            Slip(180.0, "At θ2 = 180° the arm is folded back and w = 0: another singularity."),
-            Slip(jacobian_det(1, 1, 0, math.pi / 2), "That is the largest value of w. The question asks for the angle where it happens."),
-        ),
+        vary=Vary(_best_elbow, Param("L", 1, 0.5, 2, 0.1, unit=" m")),
     ),
     Debug(
         id="7.5",
@@ -99,37 +293,15 @@ EXERCISES = (
     MatrixDerive(
         id="7.6",
         title="The whole Jacobian at θ = (0, 90°)",
-        key=grid(_J),
         label="J",
-        slips=(
-            Slip(grid([_J[0], [_J[1][0], 1 * math.sin(0 + math.pi / 2)]]),
-                 "J(2,2) uses sin(θ1 + θ2): that is the bug of exercise 7.5. ∂/∂θ2 of L2 sin(θ1 + θ2) is "
-                 "L2 cos(θ1 + θ2) = cos 90° = 0."),
-            Slip(grid(jacobian_2link(1, 1, math.pi / 2, 0)),
-                 "That is J at θ = (90°, 0): the two joint angles are swapped. Here θ1 = 0 and θ2 = 90°."),
-            Slip(grid(jacobian_2link(1, 1, 0, 0)),
-                 "That is J of the straight arm, θ2 = 0. Put θ2 = 90° into sin(θ1 + θ2) and cos(θ1 + θ2)."),
-        ),
+        vary=Vary(_unit_jacobian, Param("t1", 0, -60, 60, 5, unit="°"), Param("t2", 90, -150, 150, 5, unit="°", avoid=(0,)),
+                  valid=_well_posed_jacobian),
     ),
     FormulaDerive(
         id="7.7",
         title="J(1,1) as a formula",
-        key=lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[0][0],
         variables=("theta1", "theta2", "L1", "L2"),
         domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
-        answer_text="-L1*sin(theta1) - L2*sin(theta1 + theta2)",
-        label="J(1,1) = ∂x/∂θ1",
-        slips=(
-            Slip(lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][0],
-                 "The sign is flipped: the derivative of cos is −sin."),
-            Slip(lambda theta1, theta2, L1, L2: -L1 * math.sin(theta1),
-                 "Link 2 moves with θ1 too: its term L2 cos(θ1 + θ2) also depends on θ1, and contributes "
-                 "−L2 sin(θ1 + θ2)."),
-            Slip(lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[0][1],
-                 "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, which "
-                 "moves both links."),
-            Slip(lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[1][0],
-                 "That is J(2,1) = ∂y/∂θ1, from the sines of y. J(1,1) differentiates x, the cosines."),
-        ),
+        vary=Vary(_jacobian_formula, Choice("entry", "(1,1)", ("(1,1)", "(1,2)", "(2,1)", "(2,2)"))),
     ),
 )

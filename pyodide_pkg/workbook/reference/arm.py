@@ -142,6 +142,24 @@ def manipulability(J: Matrix) -> float:
     return abs(det2(J))
 
 
+def velocity_ratio(J: Matrix) -> float:
+    """How many times more easily the tip moves in its best direction than in its worst:
+    the ratio of J's singular values, σmax/σmin (the square roots of JᵀJ's eigenvalues).
+
+    Exercise 7.4: at θ = (0, 90°) with unit links, about 2.6 (exactly (3 + √5)/2).
+
+    >>> round(velocity_ratio([[-1, -1], [1, 0]]), 4)
+    2.618
+    >>> velocity_ratio([[-1, -1], [2, 2]])
+    inf
+    """
+    a, b = J[0][0] ** 2 + J[1][0] ** 2, J[0][1] ** 2 + J[1][1] ** 2  # JᵀJ's diagonal
+    c = J[0][0] * J[0][1] + J[1][0] * J[1][1]  # and its off-diagonal entry
+    mid, half = (a + b) / 2, math.hypot((a - b) / 2, c)
+    low = mid - half
+    return math.inf if low <= 1e-12 * mid else math.sqrt((mid + half) / low)
+
+
 def most_manipulable_theta2(L1: float, L2: float, samples: int = 3601) -> float:
     """The elbow angle in [0, π] (radians) where |det J| peaks, found by a scan.
 
