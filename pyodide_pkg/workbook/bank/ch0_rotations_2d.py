@@ -8,10 +8,11 @@ from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
 from ..reference.linalg import add
 from ..reference.rotation2d import compose, det_rot2, rot2, rotate_2d
-from ..variants import Param, Vary, num, paren
+from ..tolerance import clean
+from ..variants import Choice, Param, Vary, num, paren
 from . import grid
 
-_R30, _R60 = rot2(math.radians(30)), rot2(math.radians(60))
+TURNS = {90: ("quarter turn", "y", "-x"), 180: ("half turn", "-x", "-y"), 270: ("three-quarter turn", "-y", "x")}
 
 
 def _quarter_turn(p):
@@ -25,6 +26,78 @@ def _quarter_turn(p):
         "values": {"px": paren(x), "py": paren(y), "xr": num(xr), "yr": num(yr)},
     }
 
+
+def _composed_entry(p):
+    """0.2: the (1,1) entry of R(α)·R(β), which is cos(α + β)."""
+    a, b = p["a"], p["b"]
+    key = compose(math.radians(a), math.radians(b))[0][0]
+    return {
+        "key": key,
+        "label": f"(1,1) entry of R({num(a)}°)·R({num(b)}°)",
+        "slips": (
+            Slip(rot2(math.radians(a))[0][0] * rot2(math.radians(b))[0][0],
+                 "You multiplied the two (1,1) entries. A matrix product mixes a row with a column: use R(α)R(β) = R(α+β)."),
+            Slip(det_rot2(math.radians(a + b)),
+                 "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle."),
+        ),
+        "values": {"total": num(a + b), "c": num(clean(key))},
+    }
+
+
+def _diagonal_point(p):
+    """0.4: the point (a, a) turned by 45°; asked: its x- or y-coordinate."""
+    a, axis = p["a"], p["axis"]
+    xr, yr = rotate_2d(a, a, math.pi / 4)
+    other = "y" if axis == "x" else "x"
+    rules = {"x": "cosθ·x − sinθ·y", "y": "sinθ·x + cosθ·y"}
+    tex = {"x": r"\cos\theta\,x - \sin\theta\,y", "y": r"\sin\theta\,x + \cos\theta\,y"}
+    r = r"\sqrt2" if a == 1 else rf"{num(a)}\sqrt2"
+    key, slip = (xr, yr) if axis == "x" else (yr, xr)
+    return {
+        "key": key,
+        "title": f"Rotate ({num(a)}, {num(a)}) by 45°",
+        "label": f"{axis}-coordinate of the rotated point",
+        "slips": (Slip(slip, f"That is the {other}-coordinate. The {axis}-coordinate is {rules[axis]}."),),
+        "values": {"rule": tex[axis], "xr": num(clean(xr)), "yr": num(yr), "r": r, "answer": num(clean(key))},
+    }
+
+
+def _rotation_det(p):
+    """0.6: det R(θ), which is 1 for every θ."""
+    theta = p["theta"]
+    return {
+        "key": det_rot2(math.radians(theta)),
+        "label": f"det R({num(theta)}°)",
+        "slips": (Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ."),),
+    }
+
+
+def _whole_product(p):
+    """0.7: the whole matrix R(α)·R(β) = R(α + β), for α + β a multiple of 90°."""
+    a, b = p["a"], p["b"]
+    total = a + b
+    ra, rb = rot2(math.radians(a)), rot2(math.radians(b))
+    key = grid(compose(math.radians(a), math.radians(b)))
+    turn, x_to, y_to = TURNS[total]
+    return {
+        "key": key,
+        "title": f"The whole product R({num(a)}°)·R({num(b)}°)",
+        "label": f"R({num(a)}°)·R({num(b)}°)",
+        "rotation_angle": math.radians(total),
+        "slips": (
+            Slip(grid([[u * v for u, v in zip(rowa, rowb)] for rowa, rowb in zip(ra, rb)]),
+                 "You multiplied entry by entry. A matrix product takes row i of the left matrix against "
+                 f"column j of the right one: (1,1) is cos{num(a)}°·cos{num(b)}° − "
+                 f"sin{num(a)}°·sin{num(b)}°."),
+            Slip(grid(add(ra, rb)),
+                 f"That is the sum R({num(a)}°) + R({num(b)}°). Composing rotations multiplies the matrices; "
+                 "the angles add, not the matrices."),
+        ),
+        "values": {"total": num(total), "turn": turn, "x_to": x_to, "y_to": y_to,
+                   **{f"k{i}{j}": num(clean(v)) for i, row in enumerate(key, 1) for j, v in enumerate(row, 1)}},
+    }
+
+
 EXERCISES = (
     Derive(
         id="0.1",
@@ -35,13 +108,7 @@ EXERCISES = (
     Derive(
         id="0.2",
         title="Compose two rotations",
-        key=compose(math.radians(30), math.radians(60))[0][0],
-        label="(1,1) entry of R(30°)·R(60°)",
-        slips=(
-            Slip(math.cos(math.radians(30)) * math.cos(math.radians(60)),
-                 "You multiplied the two (1,1) entries. A matrix product mixes a row with a column: use R(α)R(β) = R(α+β)."),
-            Slip(1.0, "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle."),
-        ),
+        vary=Vary(_composed_entry, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°")),
     ),
     Trace(
         id="0.3",
@@ -61,9 +128,7 @@ EXERCISES = (
     Derive(
         id="0.4",
         title="Rotate (1, 1) by 45°",
-        key=rotate_2d(1, 1, math.pi / 4)[0],
-        label="x-coordinate of the rotated point",
-        slips=(Slip(rotate_2d(1, 1, math.pi / 4)[1], "That is the y-coordinate. The x-coordinate is cosθ·x − sinθ·y."),),
+        vary=Vary(_diagonal_point, Param("a", 1, 1, 5, 1), Choice("axis", "x", ("x", "y"))),
     ),
     Build(
         id="0.5",
@@ -91,23 +156,12 @@ EXERCISES = (
     Derive(
         id="0.6",
         title="The determinant of a rotation",
-        key=det_rot2(math.radians(37)),
-        label="det R(37°)",
-        slips=(Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ."),),
+        vary=Vary(_rotation_det, Param("theta", 37, 5, 355, 5, unit="°", avoid=(90, 180, 270))),
     ),
     MatrixDerive(
         id="0.7",
         title="The whole product R(30°)·R(60°)",
-        key=grid(compose(math.radians(30), math.radians(60))),
-        label="R(30°)·R(60°)",
-        rotation_angle=math.radians(90),
-        slips=(
-            Slip(grid([[a * b for a, b in zip(ra, rb)] for ra, rb in zip(_R30, _R60)]),
-                 "You multiplied entry by entry. A matrix product takes row i of the left matrix against "
-                 "column j of the right one: (1,1) is cos30°·cos60° − sin30°·sin60°."),
-            Slip(grid(add(_R30, _R60)),
-                 "That is the sum R(30°) + R(60°). Composing rotations multiplies the matrices; the angles add, "
-                 "not the matrices."),
-        ),
+        vary=Vary(_whole_product, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°"),
+                  valid=lambda p: p["a"] + p["b"] in TURNS),
     ),
 )

@@ -8,53 +8,171 @@ from ..kinds.design import Design, Step
 from ..kinds.trace import Option, Trace
 from ..reference.linalg import matvec, transpose
 from ..reference.transform2d import apply, chain, inverse_transform, transform2d
+from ..tolerance import clean
+from ..variants import Param, Vary, num, paren, signed
 from . import grid
-
-_T_WORLD_BASE = transform2d(0, 1, 0)
-_T_BASE_TOOL = transform2d(2, 0, math.pi / 2)
-_T12 = transform2d(2, 1, math.pi / 2)  # exercise 1.2's robot pose
-_RT = transpose([row[:2] for row in _T12[:2]])
-_RT_t = matvec(_RT, [_T12[0][2], _T12[1][2]])
 
 
 def _with(rot, t):
     """[[rot, t], [0, 1]] as a 3×3 key."""
     return grid([[*rot[0], t[0]], [*rot[1], t[1]], [0.0, 0.0, 1.0]])
 
+
+def _terms(coefs, xs, const=None):
+    r"""A dot product written out in TeX, as the derivations print it: ``0 \cdot 2 + 1 \cdot 1 - 1``.
+
+    >>> _terms((-1, 0), (2, -2), 2)
+    '-1 \\cdot 2 + 0 \\cdot (-2) + 2'
+    """
+    parts = [f"{num(c) if k == 0 else signed(c)} \\cdot {paren(x)}" for k, (c, x) in enumerate(zip(coefs, xs))]
+    return " ".join(parts + ([signed(const)] if const is not None else []))
+
+
+def _pure_translation(p):
+    """1.1: a point (px, py) of a robot at (tx, ty) with heading 0; asked: its world x."""
+    tx, ty, px, py = p["tx"], p["ty"], p["px"], p["py"]
+    T = transform2d(tx, ty, 0)
+    wx, wy = apply(T, px, py)
+    ahead = f"The point is {num(px)} m ahead of it" if py == 0 and px > 0 else \
+        f"The point sits at ({num(px)}, {num(py)}) in its frame"
+    return {
+        "key": wx,
+        "slips": (
+            Slip(apply(transform2d(0, 0, 0), px, py)[0],
+                 f"That is the point in the robot frame. The robot sits at ({num(tx)}, {num(ty)}), so add its position."),
+            Slip(apply(T, 0, 0)[0], f"That is the robot's own x. {ahead}: add the point too."),
+        ),
+        "values": {"stx": signed(tx), "sty": signed(ty), "wx": num(wx), "wy": num(wy)},
+    }
+
+
+def _turn_and_shift(p):
+    """1.2: the point d ahead of a robot at (tx, ty) facing 90°; asked: its world y."""
+    tx, ty, d = p["tx"], p["ty"], p["d"]
+    wx, wy = apply(transform2d(tx, ty, math.pi / 2), d, 0)
+    turned = apply(transform2d(0, 0, math.pi / 2), d, 0)
+    shifted = apply(transform2d(tx, ty, 0), d, 0)
+    if clean(turned[1]) == clean(shifted[1]):
+        left_out = (Slip(turned[1], f"You left something out: turning ({num(d)}, 0) by 90° alone gives y = {num(turned[1])}, "
+                                    f"and shifting it by ({num(tx)}, {num(ty)}) without turning also gives "
+                                    f"y = {num(shifted[1])}. T rotates first, then adds t."),)
+    else:
+        left_out = (Slip(turned[1], f"You left something out: turning ({num(d)}, 0) by 90° alone gives "
+                                    f"y = {num(turned[1])}. T rotates first, then adds t = ({num(tx)}, {num(ty)})."),
+                    Slip(shifted[1], f"You left something out: shifting ({num(d)}, 0) by ({num(tx)}, {num(ty)}) "
+                                     f"without turning gives y = {num(shifted[1])}. T rotates first, then adds t."))
+    distance = "one metre" if d == 1 else f"{num(d)} metres"
+    return {
+        "key": wy,
+        "slips": left_out + (
+            Slip(apply(transform2d(tx, ty, -math.pi / 2), d, 0)[1],
+                 "That is a clockwise turn. A heading of +90° turns the robot's x-axis onto the world's +y."),
+        ),
+        "values": {"distance": distance, "Distance": distance[0].upper() + distance[1:], "stx": signed(tx),
+                   "sty": signed(ty), "wx": num(clean(wx)), "wy": num(clean(wy)),
+                   "ty_turn": num(clean(turned[1])), "sx": num(shifted[0])},
+    }
+
+
+def _tool_point(p):
+    """1.3: a point d along a tool frame (at (ux, uy) in the base, turned 90°) of a base at (bx, by); asked: world x."""
+    bx, by, ux, uy, d = p["bx"], p["by"], p["ux"], p["uy"], p["d"]
+    T_world_base, T_base_tool = transform2d(bx, by, 0), transform2d(ux, uy, math.pi / 2)
+    in_base = apply(T_base_tool, d, 0)
+    wx, wy = apply(chain(T_world_base, T_base_tool), d, 0)
+    verb = "lifts" if bx == 0 and by > 0 else "lowers" if bx == 0 else "shifts"
+    return {
+        "key": wx,
+        "slips": (
+            Slip(apply(chain(T_base_tool, T_world_base), d, 0)[0],
+                 "The order is reversed. Apply the tool-to-base transform to the point first, then base-to-world."),
+            Slip(apply(chain(T_world_base, transform2d(ux, uy, 0)), d, 0)[0],
+                 f"You added the offsets but skipped the tool frame's 90° turn: ({num(d)}, 0) in the tool frame "
+                 "points along the base's y-axis."),
+        ),
+        "values": {"bpx": num(clean(in_base[0])), "bpy": num(clean(in_base[1])), "wx": num(clean(wx)),
+                   "wy": num(clean(wy)), "verb": verb},
+    }
+
+
+def _tool_point_ok(p):
+    """The base is offset (else the chain is one transform), and the slips differ from the key and each other."""
+    b_plus_u = p["bx"] + p["ux"]
+    reversed_x, unturned_x = p["ux"] - p["by"], b_plus_u + p["d"]
+    return (p["bx"], p["by"]) != (0, 0) and reversed_x != b_plus_u and reversed_x != unturned_x
+
+
+def _inverse_pose(p):
+    """1.6: T⁻¹ for a robot at (tx, ty) with heading θ."""
+    tx, ty, theta = p["tx"], p["ty"], p["theta"]
+    T = transform2d(tx, ty, math.radians(theta))
+    R = [row[:2] for row in T[:2]]
+    RT = transpose(R)
+    RT_t = matvec(RT, [tx, ty])
+    key = grid(inverse_transform(T))
+    wx, wy = apply(T, 1, 0)  # the point 1 m ahead of the robot, in the world
+    (c, s_), (ns, _) = RT
+    default = (tx, ty, theta) == (2, 1, 90)
+    return {
+        "key": key,
+        "slips": (
+            Slip(_with(RT, [-tx, -ty]),
+                 "The rotation block is right, but the translation is −t, the robot's position negated in world "
+                 "axes. T⁻¹ needs it in the robot's own axes: −Rᵀt."),
+            Slip(_with(RT, RT_t),
+                 "The translation has the wrong sign: it is −Rᵀt. Check with the robot's own position: "
+                 f"T⁻¹ must send ({num(tx)}, {num(ty)}) to the origin."),
+            Slip(_with(R, [-tx, -ty]),
+                 "Negating the translation is not enough: the turn must be undone too, so the rotation block is "
+                 "Rᵀ, and the translation becomes −Rᵀt."),
+            Slip(grid(T), "That is T itself, the robot's pose. The question asks for the transform that undoes it."),
+        ),
+        "values": {
+            "whose": "Exercise 1.2's" if default else "A",
+            "check_on": "exercise 1.2's answer" if default else "the point one metre straight ahead of the robot",
+            **{f"t{i}{j}": num(clean(T[i - 1][j - 1])) for i in (1, 2) for j in (1, 2)},
+            "r11": num(clean(c)), "r12": num(clean(s_)), "r21": num(clean(ns)),
+            "rt1_terms": _terms(RT[0], (tx, ty)), "rt2_terms": _terms(RT[1], (tx, ty)),
+            "rt1": num(clean(RT_t[0])), "rt2": num(clean(RT_t[1])),
+            "k13": num(clean(key[0][2])), "k23": num(clean(key[1][2])),
+            "wx": num(clean(wx)), "wy": num(clean(wy)),
+            "chk1": _terms(key[0][:2], (clean(wx), clean(wy)), clean(key[0][2])),
+            "chk2": _terms(key[1][:2], (clean(wx), clean(wy)), clean(key[1][2])),
+        },
+    }
+
+
+def _inverse_pose_ok(p):
+    """Not a pure rotation or a half turn (where slips coincide with the key or each other), and no entry
+    of −Rᵀt so near zero that the 4-decimal entries of T cannot give it within the tolerance."""
+    if (p["tx"], p["ty"]) == (0, 0) or p["theta"] % 180 == 0:
+        return False
+    c, s = math.cos(math.radians(p["theta"])), math.sin(math.radians(p["theta"]))
+    return all(abs(v) < 1e-9 or abs(v) >= 0.5 for v in (c * p["tx"] + s * p["ty"], -s * p["tx"] + c * p["ty"]))
+
 EXERCISES = (
     Derive(
         id="1.1",
         title="Pure translation",
-        key=apply(transform2d(3, 4, 0), 1, 0)[0],
         label="x-coordinate in the world frame",
-        slips=(
-            Slip(1.0, "That is the point in the robot frame. The robot sits at (3, 4), so add its position."),
-            Slip(3.0, "That is the robot's own x. The point is 1 m ahead of it: add the point too."),
-        ),
+        vary=Vary(_pure_translation, Param("tx", 3, -5, 5, 1, avoid=(0,)), Param("ty", 4, -5, 5, 1),
+                  Param("px", 1, -5, 5, 1, avoid=(0,)), Param("py", 0, -5, 5, 1),
+                  valid=lambda p: p["px"] != p["tx"]),  # else the two slips are one number
     ),
     Derive(
         id="1.2",
         title="Rotation plus translation",
-        key=apply(transform2d(2, 1, math.pi / 2), 1, 0)[1],
         label="y-coordinate in the world frame",
-        slips=(
-            Slip(1.0, "You left something out: turning (1, 0) by 90° alone gives y = 1, and shifting it by (2, 1) "
-                      "without turning also gives y = 1. T rotates first, then adds t."),
-            Slip(apply(transform2d(2, 1, -math.pi / 2), 1, 0)[1],
-                 "That is a clockwise turn. A heading of +90° turns the robot's x-axis onto the world's +y."),
-        ),
+        vary=Vary(_turn_and_shift, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1, avoid=(0,)),
+                  Param("d", 1, 0.5, 3, 0.5, unit=" m"),
+                  valid=lambda p: p["ty"] != 2 * p["d"]),  # else the clockwise turn lands on the turn-alone slip
     ),
     Derive(
         id="1.3",
         title="Chain two transforms",
-        key=apply(chain(_T_WORLD_BASE, _T_BASE_TOOL), 1, 0)[0],
         label="x-coordinate in the world frame",
-        slips=(
-            Slip(apply(chain(_T_BASE_TOOL, _T_WORLD_BASE), 1, 0)[0],
-                 "The order is reversed. Apply the tool-to-base transform to the point first, then base-to-world."),
-            Slip(3.0, "You added the offsets but skipped the tool frame's 90° turn: (1, 0) in the tool frame "
-                      "points along the base's y-axis."),
-        ),
+        vary=Vary(_tool_point, Param("bx", 0, -3, 3, 1), Param("by", 1, -3, 3, 1), Param("ux", 2, -3, 3, 1),
+                  Param("uy", 0, -3, 3, 1), Param("d", 1, 1, 3, 1), valid=_tool_point_ok),
     ),
     Trace(
         id="1.4",
@@ -88,19 +206,8 @@ EXERCISES = (
     MatrixDerive(
         id="1.6",
         title="The inverse transform, whole",
-        key=grid(inverse_transform(_T12)),
         label="T⁻¹",
-        slips=(
-            Slip(_with(_RT, [-_T12[0][2], -_T12[1][2]]),
-                 "The rotation block is right, but the translation is −t, the robot's position negated in world "
-                 "axes. T⁻¹ needs it in the robot's own axes: −Rᵀt."),
-            Slip(_with(_RT, _RT_t),
-                 "The translation has the wrong sign: it is −Rᵀt. Check with the robot's own position: "
-                 "T⁻¹ must send (2, 1) to the origin."),
-            Slip(_with([row[:2] for row in _T12[:2]], [-_T12[0][2], -_T12[1][2]]),
-                 "Negating the translation is not enough: the turn must be undone too, so the rotation block is "
-                 "Rᵀ, and the translation becomes −Rᵀt."),
-            Slip(grid(_T12), "That is T itself, the robot's pose. The question asks for the transform that undoes it."),
-        ),
+        vary=Vary(_inverse_pose, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1),
+                  Param("theta", 90, -175, 180, 5, unit="°"), valid=_inverse_pose_ok),
     ),
 )
