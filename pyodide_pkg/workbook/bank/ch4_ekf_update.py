@@ -7,62 +7,287 @@ from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
-from ..reference.ekf import ekf_update, measurement_jacobian, range_bearing
+from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
+from ..variants import Choice, Param, Vary, num, paren
 from . import grid
 
 _POSE = (0, 0, 0)
 _LANDMARK = (3, 4)
 _H_PRED = range_bearing(_POSE, _LANDMARK)
-_Z = (4.8, 0.95)
-_H = measurement_jacobian(_POSE, _LANDMARK)
-_DX, _DY = _LANDMARK[0] - _POSE[0], _LANDMARK[1] - _POSE[1]
-_SQ = _DX * _DX + _DY * _DY
+
+# 4.1 to 4.3 and 4.7: a robot facing east (θ = 0) at (x, y) sights a landmark at (lx, ly).
+_SIGHTING = (Param("x", 0, -2, 2, 1), Param("y", 0, -2, 2, 1), Param("lx", 3, -5, 5, 1), Param("ly", 4, -5, 5, 1))
+
+
+def _dec(x, places):
+    """``x`` to at most ``places`` decimals, without trailing zeros (53.13, 45, -135)."""
+    s = f"{x:.{places}f}".rstrip("0").rstrip(".")
+    return "0" if s in ("-0", "") else s
+
+
+def _sighting(p):
+    """The offsets and distances of a sighting, and the strings every derivation of it prints."""
+    pose, landmark = (p["x"], p["y"], 0), (p["lx"], p["ly"])
+    dx, dy = p["lx"] - p["x"], p["ly"] - p["y"]
+    q = dx * dx + dy * dy
+    root = math.isqrt(q)
+    whole = root * root == q  # √q is a whole number
+    r = range_bearing(pose, landmark)[0]
+    return {
+        "pose": pose, "landmark": landmark, "dx": dx, "dy": dy, "q": q, "r": r, "whole": whole,
+        "rq_plain": num(r) if whole else f"√{q} ≈ {num(r)}",  # √q in a slip's words
+        "values": {
+            "px": paren(p["x"]), "py": paren(p["y"]), "dx": num(dx), "dy": num(dy),
+            "dx2": num(dx * dx), "dy2": num(dy * dy), "q": num(q), "r": num(r),
+            "rq": num(r) if whole else f"\\sqrt{{{q}}}",  # √q in TeX: exact
+            "req": "=" if whole else "\\approx",
+        },
+    }
+
+
+def _predicted_range(p):
+    """4.1: the range from the robot at (x, y) to the landmark (lx, ly)."""
+    s = _sighting(p)
+    a, b = sorted((abs(s["dx"]), abs(s["dy"])))
+    if (a, b) == (3, 4):
+        remark = "The familiar 3-4-5 right triangle."
+    elif s["whole"]:
+        remark = f"A {a}-{b}-{num(s['r'])} right triangle: the range comes out whole."
+    else:
+        remark = f"A right triangle with legs {a} m and {b} m: the range is its hypotenuse."
+    return {
+        "key": s["r"],
+        "slips": (Slip(float(s["q"]), "That is q = dx² + dy², the squared range. Take its square root."),),
+        "values": {**s["values"], "remark": remark},
+    }
+
+
+def _predicted_bearing(p):
+    """4.2: the bearing of the landmark (lx, ly) from the robot at (x, y) facing east, in degrees."""
+    s = _sighting(p)
+    phi = range_bearing(s["pose"], s["landmark"])[1]
+    dx, dy = num(s["dx"]), num(s["dy"])
+    return {
+        "key": math.degrees(phi),
+        "slips": (
+            Slip(math.degrees(math.atan2(s["dx"], s["dy"])),
+                 f"The arguments are swapped. atan2 takes (dy, dx): atan2({dy}, {dx}), measured from the x-axis."),
+        ),
+        "values": {**s["values"], "setup": "Same setup" if p == _DEFAULT_SIGHTING else "New setup",
+                   "rad": num(phi), "deg": _dec(math.degrees(phi), 2)},
+    }
+
+
+def _range_slope(p):
+    """4.3: H(1,1) = −dx/√q, how fast the range changes as the robot steps along x."""
+    s = _sighting(p)
+    H = measurement_jacobian(s["pose"], s["landmark"])
+    deg = _dec(math.degrees(range_bearing(s["pose"], s["landmark"])[1]), 2)
+    return {
+        "key": H[0][0],
+        "slips": (
+            Slip(H[0][1], "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx."),
+            Slip(-s["dx"] / s["q"], f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
+                                    "it is the bearing row that divides by q."),
+        ),
+        "values": {**s["values"], "h11": num(H[0][0]), "size": num(abs(H[0][0])),
+                   "phi": f"{deg}°" if not deg.startswith("-") else f"({deg}°)"},
+    }
+
+
+def _range_innovation(p):
+    """4.4: the range innovation z_r − h_r between measured (zr, zphi) and predicted (hr, hphi)."""
+    y = innovation((p["zr"], p["zphi"]), (p["hr"], p["hphi"]))
+    closer = y[0] < 0
+    return {
+        "key": y[0],
+        "slips": (
+            Slip(innovation((p["hr"],), (p["zr"],))[0],
+                 "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
+            Slip(y[1], "That is the bearing innovation, the second component. The range is the first."),
+        ),
+        "values": {"zr1": f"{p['zr']:.1f}", "hr1": f"{p['hr']:.1f}", "yr": num(y[0]), "gap": num(abs(y[0])),
+                   "closer": "closer" if closer else "farther", "pull": "pull" if closer else "push",
+                   "towards": "towards" if closer else "away from"},
+    }
+
+
+def _innovation_is_a_surprise(p):
+    """A range surprise of 0.1 to 1 m and a bearing one of at most 0.2 rad, in numbers that are not 4.4's own."""
+    dr, dphi = round(abs(p["zr"] - p["hr"]), 6), abs(p["zphi"] - p["hphi"])
+    shown = (p["hr"], p["zr"], round(p["hphi"], 4), p["zphi"])
+    return 0 < dr <= 1 and dphi <= 0.2 and shown != (5, 4.8, 0.9273, 0.95)
+
+
+def _whole_jacobian(p):
+    """4.7: the measurement Jacobian H of a landmark ahead and to the left of the robot."""
+    s = _sighting(p)
+    H = measurement_jacobian(s["pose"], s["landmark"])
+    dx, dy, q = s["dx"], s["dy"], s["q"]
+    return {
+        "key": grid(H),
+        "slips": (
+            Slip(grid([[h / q ** 0.5 for h in H[0]], H[1]]),
+                 "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
+                 f"the range row divides by √q = {s['rq_plain']} (only the bearing row divides by q)."),
+            Slip(grid([H[0], [dy / q ** 0.5, -dx / q ** 0.5, -1.0]]),
+                 f"The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = {q}."),
+            Slip(grid([H[0], [H[1][0], H[1][1], 0.0]]),
+                 "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
+                 "it by −δθ."),
+            Slip(grid([[-h for h in H[0]], [-H[1][0], -H[1][1], H[1][2]]]),
+                 "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
+                 "dx = lx − x, so moving the robot by +δx shrinks dx."),
+        ),
+        "values": {**s["values"], **{f"h{i}{j}": num(H[i - 1][j - 1]) for i in (1, 2) for j in (1, 2)},
+                   "as_in": "as in exercises 4.1 to 4.3" if p == _DEFAULT_SIGHTING else "a new sighting",
+                   "away": num(s["r"]) if s["whole"] else f"about {s['r']:.1f}"},
+    }
+
+
+_DEFAULT_SIGHTING = {q.name: q.default for q in _SIGHTING}
+
+
+def _over_q(sign, top):
+    """±dx/q or ±dy/q, with q = dx² + dy² (the bearing row's denominator)."""
+    if top == "dx":
+        return lambda dx, dy: sign * dx / (dx * dx + dy * dy)
+    return lambda dx, dy: sign * dy / (dx * dx + dy * dy)
+
+
+def _over_root_q(sign, top):
+    """±dx/√q or ±dy/√q (the range row's denominator)."""
+    if top == "dx":
+        return lambda dx, dy: sign * dx / (dx * dx + dy * dy) ** 0.5
+    return lambda dx, dy: sign * dy / (dx * dx + dy * dy) ** 0.5
+
+
+# 4.8: each entry of H's position columns, (row, column) -> (numerator, its sign, what it says in words,
+# and its slips: the chain rule's sign, the other row's denominator, the neighbouring entries).
+_ENTRIES = {
+    "2,1": ("dy", 1, "past a landmark on its left", "dy > 0",
+            "swings the landmark further round to the left, so the bearing grows", "dy", (
+                (_over_q(-1, "dy"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1, and that minus cancels the one in "
+                                    "∂atan2(dy, dx)/∂dx = −dy/q."),
+                (_over_root_q(1, "dy"), "That divides by √q, as the range row does. The derivative of atan2 divides by "
+                                        "q = dx² + dy²."),
+                (_over_q(-1, "dx"), "That is H(2,2) = ∂φ/∂y. The x-derivative has dy on top."),
+                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x, from the range row. The bearing row is the second one."),
+            )),
+    "2,2": ("dx", -1, "past a landmark ahead of it", "dx > 0",
+            "swings the landmark round to the right, so the bearing falls", "-dx", (
+                (_over_q(1, "dx"), "The sign is flipped. dy = ly − y, so ∂dy/∂y = −1: multiply "
+                                   "∂atan2(dy, dx)/∂dy = dx/q by it."),
+                (_over_root_q(-1, "dx"), "That divides by √q, as the range row does: it is H(1,1) = ∂r/∂x. The "
+                                         "derivative of atan2 divides by q = dx² + dy²."),
+                (_over_q(1, "dy"), "That is H(2,1) = ∂φ/∂x. The y-derivative has dx on top."),
+                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y, from the range row. The bearing row is the second one."),
+            )),
+    "1,1": ("dx", -1, "towards a landmark ahead of it", "dx > 0",
+            "brings it closer, so the range falls", "-dx", (
+                (_over_root_q(1, "dx"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1: multiply "
+                                        "∂√q/∂dx = dx/√q by it."),
+                (_over_q(-1, "dx"), "That divides by q, as the bearing row does: it is H(2,2) = ∂φ/∂y. "
+                                    "Differentiating √q gives dx/√q: the range row divides by √q."),
+                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y. The x-derivative has dx on top."),
+                (_over_q(1, "dy"), "That is H(2,1) = ∂φ/∂x, from the bearing row. The range row is the first one."),
+            )),
+    "1,2": ("dy", -1, "towards a landmark on its left", "dy > 0",
+            "brings it closer, so the range falls", "-dy", (
+                (_over_root_q(1, "dy"), "The sign is flipped. dy = ly − y, so ∂dy/∂y = −1: multiply "
+                                        "∂√q/∂dy = dy/√q by it."),
+                (_over_q(-1, "dy"), "That divides by q, as the bearing row does. Differentiating √q gives dy/√q: "
+                                    "the range row divides by √q."),
+                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x. The y-derivative has dy on top."),
+                (_over_q(-1, "dx"), "That is H(2,2) = ∂φ/∂y, from the bearing row. The range row is the first one."),
+            )),
+}
+_ATAN2 = r"\operatorname{atan2}(dy, dx)"
+_SQRT_Q = r"\sqrt{dx^2 + dy^2}"
+
+
+def _jacobian_entry_formula(p):
+    """4.8: one entry of H's position columns as a formula in dx and dy (which one is the draw)."""
+    entry = p["entry"]
+    i, j = (int(k) - 1 for k in entry.split(","))
+    top, sign, where, condition, effect, follows, slips = _ENTRIES[entry]
+    var, dvar = ("x", "dx") if j == 0 else ("y", "dy")
+    minus = "-" if sign < 0 else ""
+    if i == 0:  # the range row: r = √q, ∂r/∂d = d/√q
+        den, den_tex = "sqrt(dx^2 + dy^2)", _SQRT_Q
+        f_tex, f_def, f_of = " r", f"r = {_SQRT_Q}", _SQRT_Q
+        inner = f"{dvar}/{_SQRT_Q}"
+        inner_frac = f"\\frac{{{dvar}}}{{{_SQRT_Q}}}"
+    else:  # the bearing row: φ = atan2(dy, dx) − θ, ∂atan2/∂dx = −dy/q, ∂atan2/∂dy = dx/q
+        den, den_tex = "(dx^2 + dy^2)", "dx^2 + dy^2"
+        f_tex, f_def, f_of = r"\phi", f"\\phi = {_ATAN2} - \\theta", _ATAN2
+        inner = "-dy/(dx^2 + dy^2)" if j == 0 else "dx/(dx^2 + dy^2)"
+        inner_frac = "\\frac{-dy}{dx^2 + dy^2}" if j == 0 else "\\frac{dx}{dx^2 + dy^2}"
+    example = measurement_jacobian((0.0, 0.0, 0.0), _LANDMARK)[i][j]  # at 4.3's numbers, dx = 3 and dy = 4
+    q0 = _LANDMARK[0] ** 2 + _LANDMARK[1] ** 2
+    at_default = entry == "2,1"
+    return {
+        "key": lambda dx, dy: measurement_jacobian((0.0, 0.0, 0.0), (dx, dy))[i][j],
+        "answer_text": f"{minus}{top}/{den}",
+        "label": f"H({entry}) = ∂{'r' if i == 0 else 'φ'}/∂{var}",
+        "slips": tuple(Slip(f, message) for f, message in slips),
+        "values": {
+            "ij": f"{i + 1}{j + 1}", "fn": f_tex, "var": var, "dvar": dvar,
+            "what": "range" if i == 0 else "bearing", "fdef": f_def, "fop": f_of, "inner": inner,
+            "inner_frac": inner_frac, "result": f"{minus}\\frac{{{top}}}{{{den_tex}}}",
+            "answer": f"{minus}\\dfrac{{{top}}}{{{den_tex}}}",
+            "at": "At exercise 4.3's numbers" if at_default else
+                  f"For a landmark {_LANDMARK[0]} m ahead and {_LANDMARK[1]} m to the left",
+            "example": f"{minus}{_LANDMARK[0] if top == 'dx' else _LANDMARK[1]}/{math.isqrt(q0) if i == 0 else q0}",
+            "example_value": num(example), "tail": "the\nentry of 4.7" if at_default else f"the ({entry}) entry of H there",
+            "move": f"+{var}", "where": where, "condition": condition, "effect": effect, "follows": follows,
+        },
+    }
+
+
+def _ahead(p):
+    return p["lx"] > p["x"]
+
+
+def _off_both_axes(p):
+    """A real right triangle: the landmark is not straight along x or y from the robot."""
+    return p["lx"] != p["x"] and p["ly"] != p["y"]
+
 
 EXERCISES = (
     Derive(
         id="4.1",
         title="Predicted range",
-        key=_H_PRED[0],
         label="r (m)",
         unit="m",
-        slips=(Slip(25.0, "That is q = dx² + dy², the squared range. Take its square root."),),
+        vary=Vary(_predicted_range, *_SIGHTING, valid=_off_both_axes),
     ),
     Derive(
         id="4.2",
         title="Predicted bearing",
-        key=math.degrees(_H_PRED[1]),
         label="φ (degrees)",
         unit="°",
         angle="deg",
         periodic=True,  # a bearing: 413.13° points the same way
-        slips=(
-            Slip(math.degrees(math.atan2(3, 4)),
-                 "The arguments are swapped. atan2 takes (dy, dx): atan2(4, 3), measured from the x-axis."),
-        ),
+        vary=Vary(_predicted_bearing, *_SIGHTING,
+                  valid=lambda p: _off_both_axes(p) and p["lx"] - p["x"] != p["ly"] - p["y"]),
     ),
     Derive(
         id="4.3",
         title="An entry of H",
-        key=measurement_jacobian(_POSE, _LANDMARK)[0][0],
         label="H(1,1)",
-        slips=(
-            Slip(measurement_jacobian(_POSE, _LANDMARK)[0][1],
-                 "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx."),
-            Slip(-3 / 25, "You divided by q. The range row divides by √q = 5; it is the bearing row that divides by q."),
-        ),
+        vary=Vary(_range_slope, *_SIGHTING,
+                  valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(p["lx"] - p["x"]) != abs(p["ly"] - p["y"])),
     ),
     Derive(
         id="4.4",
         title="The innovation",
-        key=_Z[0] - _H_PRED[0],
         label="range innovation (m)",
         unit="m",
-        slips=(
-            Slip(_H_PRED[0] - _Z[0],
-                 "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
-            Slip(_Z[1] - _H_PRED[1],
-                 "That is the bearing innovation, the second component. The range is the first."),
-        ),
+        vary=Vary(_range_innovation,
+                  Param("hr", 5, 3, 7, 0.1, unit=" m"), Param("hphi", _H_PRED[1], 0.2273, 1.4273, 0.1, unit=" rad"),
+                  Param("zr", 4.8, 2.5, 7.5, 0.1, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),
+                  valid=_innovation_is_a_surprise),
     ),
     Build(
         id="4.5",
@@ -106,40 +331,14 @@ EXERCISES = (
     MatrixDerive(
         id="4.7",
         title="The whole measurement Jacobian H",
-        key=grid(_H),
         label="H",
-        slips=(
-            Slip(grid([[h / _SQ ** 0.5 for h in _H[0]], _H[1]]),
-                 "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
-                 "the range row divides by √q = 5 (only the bearing row divides by q)."),
-            Slip(grid([_H[0], [_DY / _SQ ** 0.5, -_DX / _SQ ** 0.5, -1.0]]),
-                 "The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = 25."),
-            Slip(grid([_H[0], [_H[1][0], _H[1][1], 0.0]]),
-                 "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
-                 "it by −δθ."),
-            Slip(grid([[-h for h in _H[0]], [-_H[1][0], -_H[1][1], _H[1][2]]]),
-                 "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
-                 "dx = lx − x, so moving the robot by +δx shrinks dx."),
-        ),
+        vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
     ),
     FormulaDerive(
         id="4.8",
         title="H(2,1) as a formula",
-        key=lambda dx, dy: measurement_jacobian((0.0, 0.0, 0.0), (dx, dy))[1][0],
         variables=("dx", "dy"),
         domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)},
-        answer_text="dy/(dx^2 + dy^2)",
-        label="H(2,1) = ∂φ/∂x",
-        slips=(
-            Slip(lambda dx, dy: -dy / (dx * dx + dy * dy),
-                 "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1, and that minus cancels the one in "
-                 "∂atan2(dy, dx)/∂dx = −dy/q."),
-            Slip(lambda dx, dy: dy / (dx * dx + dy * dy) ** 0.5,
-                 "That divides by √q, as the range row does. The derivative of atan2 divides by q = dx² + dy²."),
-            Slip(lambda dx, dy: -dx / (dx * dx + dy * dy),
-                 "That is H(2,2) = ∂φ/∂y. The x-derivative has dy on top."),
-            Slip(lambda dx, dy: -dx / (dx * dx + dy * dy) ** 0.5,
-                 "That is H(1,1) = ∂r/∂x, from the range row. The bearing row is the second one."),
-        ),
+        vary=Vary(_jacobian_entry_formula, Choice("entry", "2,1", ("1,1", "1,2", "2,1", "2,2"))),
     ),
 )

@@ -1,42 +1,171 @@
 """Chapter 8 · PID control."""
 
+import math
+
 from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
 from ..kinds.derive import Derive, Slip
 from ..kinds.trace import Option, Trace
 from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step, pid_terms
+from ..variants import Choice, Param, Vary, num, paren, signed
 from . import column
 
-_GAINS = dict(Kp=1, Ki=0.1, Kd=0.5, dt=1)
-_ERRORS = [5, 3, 1]
-_U2 = pid_sequence(_ERRORS, **_GAINS)[2]
-_P2 = p_term(_ERRORS[2], _GAINS["Kp"])
-_I2 = i_term(_ERRORS, _GAINS["Ki"], _GAINS["dt"])
-_D2 = d_term(_ERRORS[2], _ERRORS[1], _GAINS["Kd"], _GAINS["dt"])
+
+def _minus(x):
+    """A number in a message, with a typographic minus: −1."""
+    return num(x).replace("-", "−")
+
+
+def _p_step(p):
+    """8.1: the output Kp·e of P control, with e = target − actual."""
+    e = p["target"] - p["actual"]
+    u = p_term(e, p["Kp"])
+    return {
+        "key": u,
+        "slips": (
+            Slip(p_term(p["actual"] - p["target"], p["Kp"]),
+                 f"Sign: the error is target − actual = {'+' if e > 0 else '−'}{num(abs(e))}, so the push is "
+                 f"{'positive' if e > 0 else 'negative'}, toward the target."),
+            Slip(e, "That is the error e. The output multiplies it by Kp."),
+        ),
+        "values": {"e": num(e), "pe": paren(e), "u": num(u)},
+    }
+
+
+# 8.2 and 8.7: three PID steps with a shrinking error e[0] > e[1] > e[2] > 0, from e[−1] = 0.
+_THREE_STEPS = (Param("Kp", 1, 0.5, 3, 0.5), Param("Ki", 0.1, 0.05, 0.3, 0.05), Param("Kd", 0.5, 0.2, 1, 0.1),
+                Choice("dt", 1, (0.5, 1, 2)),
+                Param("e0", 5, 3, 9, 1), Param("e1", 3, 2, 6, 1), Param("e2", 1, 1, 4, 1))
+_GAINS = ("Kp", "Ki", "Kd", "dt")
+
+
+def _three_steps(p):
+    """The terms at step 2 and the strings both derivations print."""
+    errors = [p["e0"], p["e1"], p["e2"]]
+    gains = {g: p[g] for g in _GAINS}
+    P, I, D = p_term(errors[2], p["Kp"]), i_term(errors, p["Ki"], p["dt"]), d_term(errors[2], errors[1], p["Kd"], p["dt"])
+    return {
+        "errors": errors, "gains": gains, "P": P, "I": I, "D": D,
+        "values": {"P": num(P), "I": num(I), "D": num(D), "S": num(sum(errors)), "drop": num(errors[1] - errors[2])},
+    }
+
+
+def _against(a, b):
+    """−1, 0 or 1 as ``a`` is below, at or above ``b`` (equal within float noise)."""
+    return 0 if math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12) else (1 if a > b else -1)
+
+
+def _shrinking(p):
+    """e[0] > e[1] > e[2] > 0: the error shrinks at every step and is not yet gone."""
+    return p["e0"] > p["e1"] > p["e2"] > 0
+
+
+def _falling_fast(p):
+    """8.7's story: the error shrinks, and at least halves in the last step."""
+    return _shrinking(p) and 2 * p["e2"] <= p["e1"]
+
+
+def _converging(p):
+    """8.2's story: the error shrinks, and the push is gentle: positive, weaker than the step before, and
+    no more than P alone (D eases off at least as much as I adds)."""
+    if not _shrinking(p):
+        return False
+    u = pid_sequence([p["e0"], p["e1"], p["e2"]], *(p[g] for g in _GAINS))
+    return 0 < u[2] < u[1] and u[2] <= p_term(p["e2"], p["Kp"]) + 1e-9
+
+
+def _pid_output(p):
+    """8.2: u[2] = P + I + D after three steps."""
+    t = _three_steps(p)
+    (e0, e1, e2), P, I, D, Ki, dt = t["errors"], t["P"], t["I"], t["D"], p["Ki"], p["dt"]
+    u = pid_sequence(t["errors"], **t["gains"])[2]
+    times = f", {num(Ki)} × {num(e0 + e1 + e2)}." if dt == 1 else \
+        f", times dt: {num(Ki)} × {num(e0 + e1 + e2)} × {num(dt)}."
+    return {
+        "key": u,
+        "slips": (
+            Slip(P + I, f"You left out the D term. The error fell from {num(e1)} to {num(e2)}, so "
+                        f"Kd·(e[2] − e[1])/dt = {_minus(D)}."),
+            Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times),
+            Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
+            Slip(P + Ki * e2 * dt + D,
+                 f"The I term integrates every error so far ({num(e0)} + {num(e1)} + {num(e2)}), not only the current one."),
+        ),
+        "values": {**t["values"], "Ds": signed(D), "u": num(u), "pile": num((e0 + e1 + e2) * dt),
+                   "more": ("a little", "as much again", "even more")[_against(I, P) + 1]},
+    }
+
+
+def _falling_error_d_term(p):
+    """8.6: the D term Kd·(e[k] − e[k−1])/dt of a falling error."""
+    ek, ep, Kd, dt = p["ek"], p["ep"], p["Kd"], p["dt"]
+    D = d_term(ek, ep, Kd, dt)
+    return {
+        "key": D,
+        "slips": (
+            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {num(ek)} − {num(ep)} = {_minus(ek - ep)}. "
+                     "A falling error gives a negative D."),
+            Slip(Kd * (ek - ep), f"You forgot to divide by dt = {num(dt)}."),
+            Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second."),
+        ),
+        "values": {"de": num(ek - ep), "D": num(D), "drop": num(ep - ek), "rate": num((ek - ep) / dt),
+                   "span": _SPANS[dt]},
+    }
+
+
+_SPANS = {0.05: "a twentieth of a second", 0.1: "a tenth of a second", 0.2: "a fifth of a second",
+          0.25: "a quarter of a second", 0.5: "half a second"}
+
+
+def _d_is_a_brake(p):
+    """The error falls, and fast enough for D to dwarf it: at least twice e[k−1] in size."""
+    return p["ek"] < p["ep"] and abs(d_term(p["ek"], p["ep"], p["Kd"], p["dt"])) >= 2 * p["ep"]
+
+
+def _pid_terms(p):
+    """8.7: the column (P, I, D) at step 2."""
+    t = _three_steps(p)
+    (e0, e1, e2), P, I, D = t["errors"], t["P"], t["I"], t["D"]
+    at_default = p == {q.name: q.default for q in _THREE_STEPS}
+    if _against(I, P) > 0:
+        push = "pushes harder still"
+    elif _against(I, P) == 0:
+        push = "pushes just as hard"
+    elif I >= 0.7 * P:
+        push = "still pushes\nalmost as hard"  # the page breaks the line there
+    else:
+        push = "still adds a smaller push"
+    return {
+        "key": column(pid_terms(t["errors"], **t["gains"])),
+        "slips": (
+            Slip(column((P, p["Ki"] * e2 * p["dt"], D)),
+                 f"The I term integrates every error so far, {num(e0)} + {num(e1)} + {num(e2)}, not only the current one."),
+            Slip(column((P, I, -D)),
+                 "The D term has the wrong sign: it is Kd·(e[2] − e[1])/dt, new minus old, and the error is "
+                 "shrinking."),
+            Slip(column((P, i_term(t["errors"][:2], p["Ki"], p["dt"]), D)),
+                 f"The I term stops one step short: the integral includes the current error e[2] = {num(e2)}."),
+        ),
+        "values": {**t["values"], "u": num(pid_sequence(t["errors"], **t["gains"])[2]), "push": push,
+                   "lead": "Take exercise 8.2 again" if at_default else "Take three PID steps",
+                   "total": "exercise 8.2's" if at_default else "the output"},
+    }
+
 
 EXERCISES = (
     Derive(
         id="8.1",
         title="One step of P control",
-        key=p_term(10 - 7, 2),
         label="control output u",
-        slips=(
-            Slip(p_term(7 - 10, 2), "Sign: the error is target − actual = +3, so the push is positive, toward the target."),
-            Slip(10 - 7, "That is the error e. The output multiplies it by Kp."),
-        ),
+        vary=Vary(_p_step, Param("target", 10, 0, 20, 1), Param("actual", 7, 0, 20, 1),
+                  Param("Kp", 2, 0.5, 5, 0.5, avoid=(1,)),
+                  valid=lambda p: p["target"] != p["actual"]),
     ),
     Derive(
         id="8.2",
         title="PID over three steps",
-        key=_U2,
         label="u[2]",
-        slips=(
-            Slip(_P2 + _I2, "You left out the D term. The error fell from 3 to 1, so Kd·(e[2] − e[1])/dt = −1."),
-            Slip(_P2 + _D2, "You left out the I term: Ki times the sum of all errors so far, 0.1 × 9."),
-            Slip(_P2 + _I2 - _D2, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
-            Slip(_P2 + _GAINS["Ki"] * _ERRORS[2] + _D2,
-                 "The I term integrates every error so far (5 + 3 + 1), not only the current one."),
-        ),
+        vary=Vary(_pid_output, *_THREE_STEPS, valid=_converging),
     ),
     Trace(
         id="8.3",
@@ -108,27 +237,14 @@ EXERCISES = (
     Derive(
         id="8.6",
         title="The sign of the D term",
-        key=d_term(2, 5, 1, 0.1),
         label="D term",
-        slips=(
-            Slip(-d_term(2, 5, 1, 0.1), "Sign flipped: the D term uses e[k] − e[k−1] = 2 − 5 = −3. A falling error gives a negative D."),
-            Slip(1 * (2 - 5), "You forgot to divide by dt = 0.1."),
-            Slip(1 * (2 - 5) * 0.1, "Divide by dt, don't multiply: the derivative is a change per second."),
-        ),
+        vary=Vary(_falling_error_d_term, Param("ek", 2, 0, 8, 1), Param("ep", 5, 1, 10, 1), Param("Kd", 1, 0.5, 3, 0.5),
+                  Choice("dt", 0.1, tuple(_SPANS)), valid=_d_is_a_brake),
     ),
     MatrixDerive(
         id="8.7",
         title="The three terms, one by one",
-        key=column(pid_terms(_ERRORS, **_GAINS)),
         label="(P, I, D)ᵀ at step 2",
-        slips=(
-            Slip(column((_P2, _GAINS["Ki"] * _ERRORS[2] * _GAINS["dt"], _D2)),
-                 "The I term integrates every error so far, 5 + 3 + 1, not only the current one."),
-            Slip(column((_P2, _I2, -_D2)),
-                 "The D term has the wrong sign: it is Kd·(e[2] − e[1])/dt, new minus old, and the error is "
-                 "shrinking."),
-            Slip(column((_P2, i_term(_ERRORS[:2], _GAINS["Ki"], _GAINS["dt"]), _D2)),
-                 "The I term stops one step short: the integral includes the current error e[2] = 1."),
-        ),
+        vary=Vary(_pid_terms, *_THREE_STEPS, valid=_falling_fast),
     ),
 )

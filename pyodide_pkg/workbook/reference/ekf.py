@@ -141,6 +141,18 @@ def ekf_update(x: float, P: float, z: float, R: float) -> tuple[float, float]:
     return x + K * (z - x), (1 - K) * P
 
 
+def innovation(z, h) -> list[float]:
+    """y = z − h(x⁻): what the sensor says that the prediction did not (measured minus predicted).
+
+    Exercise 4.4: predicted (5, 0.9273), measured (4.8, 0.95); the range
+    innovation is −0.2 m (the landmark looks closer than predicted).
+
+    >>> [round(v, 4) for v in innovation((4.8, 0.95), (5, 0.9273))]
+    [-0.2, 0.0227]
+    """
+    return [zi - hi for zi, hi in zip(z, h)]
+
+
 def ekf_update_matrix(x, P: Matrix, z, h, H: Matrix, R: Matrix):
     """The general update, given the predicted measurement ``h`` = h(x⁻).
 
@@ -167,9 +179,9 @@ def ekf_update_matrix(x, P: Matrix, z, h, H: Matrix, R: Matrix):
     >>> round(xn[0], 4), round(Pn[0][0], 4)
     (5.7474, 0.1429)
     """
-    innovation = [zi - hi for zi, hi in zip(z, h)]
+    y = innovation(z, h)
     K = kalman_gain(P, H, R)
-    x_new = [xi + di for xi, di in zip(x, matvec(K, innovation))]
+    x_new = [xi + di for xi, di in zip(x, matvec(K, y))]
     P_new = matmul(sub(identity(len(x)), matmul(K, H)), P)
     return x_new, P_new
 
