@@ -47,8 +47,15 @@ build/wheel.stamp: build/vendor.stamp scripts/build_wheel.py $(PKG_SOURCES) .ven
 	$(BIN)/python scripts/build_wheel.py
 	touch $@
 
-# The worker's memory snapshot: Node boots the vendored Pyodide with the wheel imported.
-build/snapshot.stamp: build/wheel.stamp scripts/build_snapshot.mjs
+# The standard library cut in two: the core the worker starts with (what start-up and
+# the grader import, found by running them in Node, plus the package) and the rest.
+build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_stdlib.py
+	node scripts/stdlib_probe.mjs
+	$(BIN)/python scripts/split_stdlib.py
+	touch $@
+
+# The worker's memory snapshot: Node boots the vendored Pyodide with the package imported.
+build/snapshot.stamp: build/stdlib.stamp scripts/build_snapshot.mjs
 	node scripts/build_snapshot.mjs
 	touch $@
 
@@ -58,7 +65,7 @@ build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) node_modules/.installed
 
 deps: $(BIN)/.installed node_modules/.installed
 
-site/.stamp: build/vendor.stamp build/wheel.stamp build/snapshot.stamp build/bundle.stamp mkdocs.yml $(DOCS_SOURCES)
+site/.stamp: build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp mkdocs.yml $(DOCS_SOURCES)
 	$(BIN)/mkdocs build --strict --quiet
 	touch $@
 
@@ -69,7 +76,7 @@ serve: site
 	$(BIN)/python -m http.server --bind $(HOST) --directory site $(PORT)
 
 # Live-reloading server for authors (rebuilds pages on save).
-dev: build/vendor.stamp build/wheel.stamp build/snapshot.stamp build/bundle.stamp
+dev: build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp
 	$(BIN)/mkdocs serve -a $(HOST):$(PORT)
 
 # A browser for the tests: Playwright's own where installed, else Debian's chromium.

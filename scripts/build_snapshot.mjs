@@ -1,15 +1,16 @@
 // Make the Pyodide memory snapshot the page's worker starts from.
 //
 // A fresh Pyodide spends most of its start-up booting the interpreter and
-// importing modules. Here, at build time, Node boots the same vendored Pyodide,
-// installs our wheel, imports the whole grading package and grades one answer of
+// importing modules. Here, at build time, Node boots the same vendored Pyodide
+// with the same core standard library (which holds the grading package: see
+// scripts/split_stdlib.py), imports the whole grading package and grades one answer of
 // every kind, then saves the interpreter's memory. The worker restores that
 // memory instead of booting (docs/performance.md has the numbers).
 //
 // The snapshot is tied to the exact pyodide.asm.wasm build (Pyodide checks its
 // build id on load), so it is made from the vendored files and nothing else.
 // Output: <vendor>/workbook.snapshot.gz (zero pages left out, see sparse(), then
-// gzip: the service worker or the worker inflates it with DecompressionStream) and build/snapshot.json (sizes, hashes, source wheel).
+// gzip: the service worker or the worker inflates it with DecompressionStream) and build/snapshot.json (sizes, hashes, the core it was made with).
 //
 // Usage: node scripts/build_snapshot.mjs [vendor-dir]
 import { createHash } from "node:crypto";
@@ -24,10 +25,7 @@ const vendor = path.resolve(process.argv[2] || path.join(root, "docs/assets/vend
 const require = createRequire(import.meta.url);
 const { loadPyodide } = require(vendor + "pyodide.js");
 
-const lock = JSON.parse(readFileSync(vendor + "pyodide-lock.json", "utf8"));
-const wheelName = lock.packages["robotics-workbook"]?.file_name;
-if (!wheelName) throw new Error("pyodide-lock.json lists no robotics-workbook wheel; run scripts/build_wheel.py first");
-const wheel = readFileSync(vendor + wheelName);
+const core = readFileSync(vendor + "python_stdlib.core.zip"); // run scripts/split_stdlib.py first
 
 // Everything imported here is in the snapshot; nothing may hold a JavaScript
 // object (Pyodide refuses to snapshot those), so the warm-up goes through JSON.
@@ -84,11 +82,9 @@ function sparse(bytes) {
 }
 
 const t0 = performance.now();
-const py = await loadPyodide({ indexURL: vendor, _makeSnapshot: true, stdout: () => {}, stderr: () => {} });
-const site = py.runPython("import site; site.getsitepackages()[0]");
-py.FS.writeFile("/tmp/workbook.whl", wheel);
-py.runPython(`import zipfile; zipfile.ZipFile("/tmp/workbook.whl").extractall(${JSON.stringify(site)})`);
-py.FS.unlink("/tmp/workbook.whl");
+// The worker's own start: the core standard library, which holds the package too (scripts/split_stdlib.py).
+const stdLibURL = vendor + "python_stdlib.core.zip";
+const py = await loadPyodide({ indexURL: vendor, stdLibURL, _makeSnapshot: true, stdout: () => {}, stderr: () => {} });
 py.runPython(WARM_UP);
 const snapshot = py.makeMemorySnapshot();
 const packed = sparse(snapshot);
@@ -97,8 +93,7 @@ writeFileSync(vendor + "workbook.snapshot.gz", gz);
 const sha256 = (b) => createHash("sha256").update(b).digest("hex");
 const info = {
   pyodide: py.version,
-  wheel: wheelName,
-  wheel_sha256: sha256(wheel),
+  stdlib_core_sha256: sha256(core),
   bytes: snapshot.length,
   sparse_bytes: packed.length,
   gzip_bytes: gz.length,

@@ -8,12 +8,14 @@
    ``.venv-pyodide``) adds it to ``build/pyodide-lock.base.json`` and writes the
    site's ``pyodide-lock.json``. Where no Python 3.12 is available the same entry
    is written here, from the wheel's metadata.
-4. Precompile the vendored ``python_stdlib.zip`` and NumPy wheel to .pyc with
-   Python 3.12 (first, so the lock lists the compiled wheel's sha256): Pyodide
-   ships them as sources, so every start compiled the ~150 modules it imports,
-   and every first ``import numpy`` compiled ~80 more; compiled once here, both
-   get faster (docs/performance.md). Skipped, with a note, where there is no
-   Python 3.12. The published files are verified before (vendor.py).
+4. Precompile the vendored NumPy wheel to .pyc with Python 3.12 (first, so the
+   lock lists the compiled wheel's sha256): Pyodide ships it as sources, so
+   every first ``import numpy`` compiled ~80 modules; compiled once here, it
+   gets faster (docs/performance.md). Skipped, with a note, where there is no
+   Python 3.12. The published file is verified before (vendor.py). The standard
+   library stays as sources: the page starts from a snapshot, or, on a slow
+   first visit, from the small core (scripts/split_stdlib.py), where bytes cost
+   more than compiling.
 """
 
 from __future__ import annotations
@@ -124,10 +126,8 @@ def precompile(archive: Path) -> str:
 
 
 def main() -> None:
-    # Pyodide publishes the standard library and NumPy as sources: every start,
-    # and every first `import numpy`, compiled them again (docs/performance.md).
-    compiled = {archive.name: precompile(archive)
-                for archive in (VENDOR / "python_stdlib.zip", *sorted(VENDOR.glob("numpy-*.whl")))}
+    # Pyodide publishes NumPy as sources: every first `import numpy` compiled it again (docs/performance.md).
+    compiled = {archive.name: precompile(archive) for archive in sorted(VENDOR.glob("numpy-*.whl"))}
     wheel = build_wheel()
     for old in VENDOR.glob("robotics_workbook-*.whl"):
         old.unlink()

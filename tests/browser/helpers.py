@@ -203,3 +203,11 @@ def keep_to_origin(context, url: str) -> list[str]:
 
     context.route("**/*", guard)
     return blocked
+
+
+def network_is_off(page: Page) -> bool:
+    """Whether the page's network is really gone: a request outside the service
+    worker's scope (the site sits under a sub-path) fails. ``navigator.onLine``
+    does not say: recent Chromium leaves it true under Playwright's offline mode."""
+    return page.evaluate(
+        "() => fetch('/?offline-probe=' + Math.random(), {cache: 'no-store'}).then(() => false, () => true)")

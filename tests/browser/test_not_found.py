@@ -12,6 +12,7 @@ from __future__ import annotations
 from playwright.sync_api import expect
 
 from workbook.contract import ATTR
+from helpers import network_is_off
 
 LONG = 120_000
 DEEP = "chapters/no-such-chapter/no-such-page/"
@@ -54,7 +55,7 @@ def test_unknown_deep_address_shows_the_styled_404_online_and_offline(page, cont
     try:
         response = page.goto(site_url + DEEP + "?offline")
         assert response.status == 404
-        assert page.evaluate("navigator.onLine") is False
+        assert network_is_off(page)
         assert_styled_404(page, site_url, header_colour)
         # Its links lead back into the site, still offline.
         page.locator("a.md-header__button.md-logo").click()

@@ -19,7 +19,7 @@ from pathlib import Path
 import pytest
 from conftest import SITE
 from site_server import SiteServer
-from helpers import keep_to_origin, role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
+from helpers import keep_to_origin, network_is_off, role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page, expect
 
 ROTATE_NUMPY = (
@@ -57,7 +57,8 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     urls = [u for u, _ in files]
     for needed in ("./", "chapters/00-rotations-2d/", "progress/", "search/search_index.json", "assets/exercises.json",
                    "assets/vendor/pyodide/pyodide.asm.wasm", "assets/vendor/pyodide/pyodide-lock.json",
-                   "assets/vendor/pyodide/workbook.snapshot.gz",
+                   "assets/vendor/pyodide/workbook.snapshot.gz", "assets/vendor/pyodide/python_stdlib.core.zip",
+                   "assets/vendor/pyodide/python_stdlib.rest.zip",
                    "assets/vendor/katex/katex.min.js", "assets/dist/workbook.js", "assets/dist/worker.js",
                    "assets/workbook.css"):
         assert needed in urls, needed
@@ -73,7 +74,7 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     fresh.goto(site_url + "chapters/00-rotations-2d/")
     wait_runtime(fresh, timeout=LONG)
     print(f"\noffline: fresh page load to runtime ready in {time.perf_counter() - started:.1f} s")
-    assert fresh.evaluate("navigator.onLine") is False
+    assert network_is_off(fresh)
     # From the cache: the memory snapshot, and the WebAssembly compiled while it was read (worker.js).
     assert fresh.evaluate("[workbook.runtime.startedFrom, workbook.runtime.startStages.wasm]") == ["snapshot", "precompiled"]
     assert answer_derive(exercise(fresh, "0.1"), "3") == "correct"

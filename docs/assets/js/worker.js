@@ -11,12 +11,15 @@ const indexURL = new URL("../vendor/pyodide/", self.location.href).href;
 let handle = null;
 let pyodide = null;
 let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the request running
+let lazyStdlib = null; // workbook.lazy_stdlib
 
 // ---- Start-up -----------------------------------------------------------------
 // The worker restores a memory snapshot made at build time
 // (scripts/build_snapshot.mjs): the interpreter with the grading package already
 // imported. If that fails for any reason (missing, damaged, a browser without
-// DecompressionStream), it boots Pyodide and installs the wheel instead.
+// DecompressionStream), it boots Pyodide instead. Either way Python's standard
+// library is the small core, which holds the grading package too; the rest is
+// mounted on first use (scripts/split_stdlib.py, workbook/lazy_stdlib.py).
 // docs/performance.md has the measurements behind each step.
 
 const networkFetch = self.fetch.bind(self); // kept before precompileWasm() stands in for it
@@ -32,6 +35,8 @@ async function cached(url) {
 }
 
 const SNAPSHOT = indexURL + "workbook.snapshot.gz";
+const STDLIB_CORE = indexURL + "python_stdlib.core.zip";
+const STDLIB_REST = indexURL + "python_stdlib.rest.zip";
 
 // On a first visit the snapshot is a 4.8 MB download that a plain start does
 // not need: on a slow link (3.9 s at 10 Mbps, 24 s at 1.6 Mbps) it costs far
@@ -182,7 +187,7 @@ async function start() {
   mark("pyodide.js");
   // Pyodide reads this option after loading pyodide.asm.js: the moment to decide
   // (not enumerable, so that loadPyodide's copy of its options does not read it earlier).
-  const options = { indexURL };
+  const options = { indexURL, stdLibURL: STDLIB_CORE };
   let skipped = false;
   Object.defineProperty(options, "_loadSnapshot", {
     enumerable: false,
@@ -196,8 +201,7 @@ async function start() {
   try {
     const py = await loadPyodide(options);
     if (skipped) {
-      await py.loadPackage("robotics-workbook", { messageCallback: () => {} });
-      mark("installed");
+      mark("booted");
       return { py, from: "boot" };
     }
     mark("restored");
@@ -206,7 +210,7 @@ async function start() {
   } catch (err) {
     if (skipped) throw err;
     unpatch();
-    const py = await loadPyodide({ indexURL, packages: ["robotics-workbook"] });
+    const py = await loadPyodide({ indexURL, stdLibURL: STDLIB_CORE });
     return { py, from: "boot", why: String((err && err.message) || err) };
   }
 }
@@ -231,6 +235,8 @@ const ready = (async () => {
   const t0 = performance.now();
   const started = await start();
   pyodide = started.py;
+  lazyStdlib = pyodide.pyimport("workbook.lazy_stdlib");
+  lazyStdlib.install(STDLIB_REST);
   handle = pyodide.pyimport("workbook.api").handle;
   mark("handle");
   pyodide.runPython(WARM_UP);
@@ -244,8 +250,29 @@ const ready = (async () => {
 
 const failure = (kind, message) => ({ ok: false, error: { kind, message } });
 
+// The rest of the standard library, fetched before a run that needs it, so that
+// the run's time limit does not pay for the download (the import itself would
+// fetch it too, synchronously: lazy_stdlib.py). Offline it comes from the
+// service worker's copy.
+let restMounted = null;
+function mountRest() {
+  restMounted ??= (async () => {
+    const response = await fetch(STDLIB_REST);
+    if (!response.ok) throw new Error(`HTTP ${response.status}`);
+    pyodide.FS.writeFile(lazyStdlib.REST, new Uint8Array(await response.arrayBuffer()));
+    lazyStdlib.mount();
+  })();
+  restMounted.catch(() => {
+    restMounted = null;
+  });
+  return restMounted;
+}
+
 async function serve(msg) {
   await ready;
+  if (msg.op === "run" && /\bimport\b/.test(msg.code || "") && lazyStdlib.needed_by(msg.code)) {
+    await mountRest().catch(() => {}); // if it fails, an import that needs it says so
+  }
   if (msg.op === "run" && /\bimport\b/.test(msg.code || "")) {
     const needs = /^\s*(?:import|from)\s+numpy\b/m.test(msg.code);
     if (needs) self.postMessage({ id: msg.id, type: "progress", message: "Loading NumPy…" });

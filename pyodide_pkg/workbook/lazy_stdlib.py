@@ -1,0 +1,154 @@
+"""The rest of the standard library, fetched the first time it is needed (in the page).
+
+The worker starts Pyodide with a *core* standard library: the modules Pyodide's
+start-up and the grader import, and this package (``scripts/split_stdlib.py``
+writes it from the official ``python_stdlib.zip``). Everything else is in a
+second zip, the *rest*, which a learner's code rarely needs (``import
+statistics``, or NumPy's loader). ``install`` puts a finder at the end of
+``sys.meta_path``: when an import names a module of the rest (its names are
+listed in the core zip, so a typo costs nothing), the rest is fetched once,
+written next to the core and mounted, and the import goes on as usual. The page
+fetches it ahead of a Build run that imports something (``mount``), so a run's
+time limit never pays for the download.
+
+Natively nothing is installed; the tests drive the finder with a fake fetch.
+"""
+
+from __future__ import annotations
+
+import importlib.machinery
+import sys
+import zipfile
+from typing import Callable
+
+INDEX = "stdlib-rest.txt"  # in the core zip: one module name per line
+REST = "/lib/python_stdlib.rest.zip"
+
+
+def _fetch_sync(url: str) -> bytes:
+    """GET ``url`` synchronously (allowed in a Web Worker) and return its bytes."""
+    from js import XMLHttpRequest  # Pyodide only
+
+    request = XMLHttpRequest.new()
+    request.open("GET", url, False)
+    request.responseType = "arraybuffer"
+    request.send(None)
+    if request.status != 200:
+        raise OSError(f"HTTP {request.status}")
+    return request.response.to_bytes()
+
+
+class RestOfStdlib:
+    """A meta path finder for the modules in the rest of the standard library."""
+
+    def __init__(self, names: set[str], url: str | None, fetch: Callable[[str], bytes] = _fetch_sync,
+                 dest: str = REST) -> None:
+        self.names, self.url, self.fetch, self.dest = names, url, fetch, dest
+        self.mounted = False
+
+    def mount(self, data: bytes | None = None) -> None:
+        """Make the rest importable: ``data`` is the zip; None fetches it, unless
+        the page already wrote it to ``dest``."""
+        if self.mounted:
+            return
+        if data is None and not _exists(self.dest):
+            if not self.url:
+                raise ImportError("the rest of the standard library has no address")
+            try:
+                data = self.fetch(self.url)
+            except Exception as err:  # offline without the stored copy, a server error, ...
+                raise ImportError(f"this module is in the part of Python's standard library that is loaded "
+                                  f"on first use, and it could not be loaded ({err})") from None
+        if data is not None:
+            with open(self.dest, "wb") as f:
+                f.write(data)
+        sys.path.append(self.dest)
+        self.mounted = True
+        # A package imported from the core looks for its submodules in its own folder only: add the rest's.
+        for name, module in list(sys.modules.items()):
+            path = getattr(module, "__path__", None)
+            folder = f"{self.dest}/{name.replace('.', '/')}"
+            if isinstance(path, list) and folder not in path and any(n.startswith(name + ".") for n in self.names):
+                path.append(folder)
+        importlib.invalidate_caches()
+
+    def find_spec(self, fullname: str, path=None, target=None):
+        if fullname not in self.names:
+            return None
+        self.mount()
+        parent, _, _ = fullname.rpartition(".")
+        if parent:
+            package = sys.modules.get(parent)
+            search = list(getattr(package, "__path__", []) or [])
+            folder = f"{self.dest}/{parent.replace('.', '/')}"
+            if folder not in search:
+                search.append(folder)
+                if package is not None and isinstance(getattr(package, "__path__", None), list):
+                    package.__path__.append(folder)
+        else:
+            search = [self.dest]
+        return importlib.machinery.PathFinder.find_spec(fullname, search, target)
+
+
+def _core_index() -> set[str]:
+    for entry in sys.path:
+        if entry.endswith(".zip"):
+            try:
+                with zipfile.ZipFile(entry) as z:
+                    return set(z.read(INDEX).decode("utf-8").split())
+            except (OSError, KeyError, zipfile.BadZipFile):
+                continue
+    return set()
+
+
+def finder() -> RestOfStdlib | None:
+    return next((f for f in sys.meta_path if isinstance(f, RestOfStdlib)), None)
+
+
+def install(url: str, names: set[str] | None = None, fetch: Callable[[str], bytes] = _fetch_sync) -> RestOfStdlib:
+    """Add the finder (once; a second call updates the address). Returns it."""
+    found = finder()
+    if found is None:
+        found = RestOfStdlib(_core_index() if names is None else names, url, fetch)
+        sys.meta_path.append(found)
+    found.url = url
+    return found
+
+
+def mount() -> None:
+    """The page has written the rest to ``REST``: mount it now."""
+    found = finder()
+    if found is not None:
+        found.mount()
+
+
+def _exists(path: str) -> bool:
+    try:
+        with open(path, "rb"):
+            return True
+    except OSError:
+        return False
+
+
+def needed_by(code: str) -> bool:
+    """Whether running ``code`` may need the rest: it imports a module of the rest,
+    or one that is neither built in nor in the core (a package such as NumPy,
+    whose loader uses the rest)."""
+    found = finder()
+    if found is None or found.mounted:
+        return False
+    try:
+        import ast
+
+        tree = ast.parse(code)
+    except (SyntaxError, ValueError):
+        return False
+    tops = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            tops.update(alias.name.split(".")[0] for alias in node.names)
+        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
+            tops.add(node.module.split(".")[0])
+    rest_tops = {name.split(".")[0] for name in found.names}
+    return any(top in rest_tops or (top not in sys.builtin_module_names and top not in sys.modules
+                                    and importlib.machinery.PathFinder.find_spec(top) is None) for top in tops)
