@@ -134,4 +134,11 @@ class Browsers:
         if has:
             page.evaluate("() => Promise.race([navigator.serviceWorker.ready.then(() => true),"
                           " new Promise((r) => setTimeout(() => r(false), 20000))])")
+            # The offline copy starts a while after ready: wait for the page to say it is stored
+            # (data-workbook-offline), not for a quiet network, or a "warm" visit races the copy.
+            try:
+                page.wait_for_function(f"() => document.documentElement.getAttribute({ATTR.offline!r}) !== 'caching'",
+                                       timeout=60_000, polling=200)
+            except Exception:
+                pass  # the revisit then shows what a learner who came back too soon gets
             self.server.wait_quiet(2.0, 60.0)

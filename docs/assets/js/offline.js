@@ -98,8 +98,11 @@ async function activeVersion(registration) {
   return worker ? (await ask(worker, { type: "version" }, ["version"])).version : null;
 }
 
-// The offline copy waits until the runtime has started (ready, or failed) and
-// the browser is idle: storing it earlier competed with the start for the link.
+// The offline copy waits until the runtime has started (ready, or failed), a
+// little longer, and until the browser is idle: storing it earlier competed with
+// the start for the link, and right after ready with the learner's first Check
+// for the machine (the service worker writes some 16 MB).
+const AFTER_READY_MS = 2_000;
 function runtimeSettled() {
   const root = document.documentElement;
   const settled = () => [RUNTIME.ready, RUNTIME.failed].includes(root.getAttribute(ATTR.runtime));
@@ -120,6 +123,7 @@ async function stored(registration) {
   const first = await ask(registration.active, { type: "stored?" }, ["stored"]);
   if (first.complete) return;
   await runtimeSettled();
+  await new Promise((resolve) => setTimeout(resolve, AFTER_READY_MS));
   await idle();
   const worker = registration.active; // still the same unless an update took over meanwhile
   const done = await ask(worker, { type: "store" }, ["stored", "store-failed"]);
