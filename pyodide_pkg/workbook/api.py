@@ -102,6 +102,33 @@ HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "r
 assert set(HANDLERS) == set(OPS), "every op in contract.json has one handler"
 
 
+def warm_up(ids: list[str] | None = None) -> str:
+    """The requests the worker answers before it says "ready" (JSON): for the
+    exercises of the page (``ids``; chapter 0's when the page has not said),
+    one grade of each checked kind, then for its first Derive exercise a typed
+    expression, a draw and a split. The browser compiles WebAssembly functions
+    on their first call: this way the learner's first Check does not pay for it.
+
+    >>> [r["op"] for r in json.loads(warm_up(["0.1", "0.3", "0.5"]))]
+    ['grade', 'grade', 'grade', 'draw', 'split']
+    """
+    first: dict[str, Any] = {}
+    for ex_id in ids if ids is not None else [ex.id for ex in bank.chapter(0)]:
+        try:
+            ex = bank.get(str(ex_id))
+        except KeyError:
+            continue
+        if ex.op == "grade":
+            first.setdefault(ex.kind, ex)
+    requests: list[dict[str, Any]] = [{"op": "grade", "exercise": ex.id, "answer": "1"} for ex in first.values()]
+    if "derive" in first:
+        derive = first["derive"].id
+        requests += [{"op": "grade", "exercise": derive, "answer": "sqrt(2)/2", "variant": 0},
+                     {"op": "draw", "exercise": derive, "variant": 1, "texts": {}},
+                     {"op": "split", "exercise": derive, "text": "1 2"}]
+    return json.dumps(requests)
+
+
 def dispatch(request: Any) -> dict[str, Any]:
     """The envelope for one decoded request."""
     op = request.get("op") if isinstance(request, dict) else None

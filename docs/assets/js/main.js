@@ -36,6 +36,7 @@ if (typeof Worker === "undefined") {
   const early = window.__workbookEarly || null;
   window.__workbookEarly = null;
   runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
+  runtime.announce([...exercises()].map((el) => el.getAttribute(ATTR.exercise)));
 }
 window.workbook = { runtime, progress };
 registerOffline(siteRoot, progress);

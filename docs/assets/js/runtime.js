@@ -71,6 +71,11 @@ export class Runtime {
     if (early) for (const data of early.messages.splice(0)) this.receive(data);
   }
 
+  /** Name the page's exercises, so that the worker warms up for them (worker.js). */
+  announce(ids) {
+    this.worker.postMessage({ type: "page", ids });
+  }
+
   receive(data) {
     if (data.type === "ready") {
       this.ready = true;

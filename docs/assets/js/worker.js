@@ -219,28 +219,11 @@ async function start() {
 // browser compiles WebAssembly functions lazily, on their first call, and the
 // first grade called many for the first time; the worker's own JavaScript path
 // (JSON in, the call into Python, JSON out) is compiled on first use too. So
-// before "ready" the worker answers, through that same path, one request of
-// each kind the page sends first (not Build: it runs code): a grade of each
-// checked kind, a typed expression, a draw and a split.
-// Only the first chapters that hold every kind are imported for it: a plain
-// start (a slow first visit) compiles the others when a page first asks.
-const WARM_UP = `
-import json
-from workbook import bank
-from workbook.contract import KINDS
-_first = {}
-for _n in bank.chapters():
-    for _ex in bank.chapter(_n):
-        _first.setdefault(_ex.kind, _ex)
-    if len(_first) == len(KINDS):
-        break
-_derive = _first["derive"].id
-json.dumps([{"op": ex.op, "exercise": ex.id, "answer": "1"} for kind, ex in _first.items() if ex.op != "run"] + [
-    {"op": "grade", "exercise": _derive, "answer": "sqrt(2)/2", "variant": 0},
-    {"op": "draw", "exercise": _derive, "variant": 1, "texts": {"prompt": "", "title": "", "hint": "", "solution": ""}},
-    {"op": "split", "exercise": _derive, "text": "1 2"},
-])
-`;
+// before "ready" the worker answers, through that same path, the requests
+// workbook.api.warm_up() lists for the page's own exercises (the page names
+// them as soon as its script runs: {type: "page", ids}); only their chapters
+// are imported, so a plain start (a slow first visit) compiles no others.
+let pageIds = null;
 
 /** One request through Python: the worker's only way in (JSON both ways). */
 const answer = (request) => JSON.parse(handle(JSON.stringify(request)));
@@ -254,7 +237,9 @@ const ready = (async () => {
   lazyStdlib.install(STDLIB_REST);
   handle = pyodide.pyimport("workbook.api").handle;
   mark("handle");
-  for (const request of JSON.parse(pyodide.runPython(WARM_UP))) answer(request);
+  const api = pyodide.pyimport("workbook.api");
+  for (const request of JSON.parse(api.warm_up(pageIds))) answer(request);
+  api.destroy();
   mark("ready");
   stages.timeOrigin = performance.timeOrigin; // to line the stages up with the page's clock
   self.postMessage({ type: "ready", ms: performance.now() - t0, from: started.from, why: started.why, stages });
@@ -314,6 +299,10 @@ async function serve(msg) {
 let queue = Promise.resolve();
 self.onmessage = (event) => {
   const msg = event.data;
+  if (msg?.type === "page") {
+    pageIds ??= Array.isArray(msg.ids) ? msg.ids.map(String) : null;
+    return;
+  }
   if (msg?.type === "interrupt-buffer") {
     interruptBuffer = msg.buffer;
     ready.then(() => pyodide.setInterruptBuffer(interruptBuffer)).catch(() => {});
