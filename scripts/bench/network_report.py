@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from .config import PROFILES
 from .records import summary
 from .report import fmt
 
@@ -63,20 +64,29 @@ def network_targets(net: dict) -> list[dict]:
         "median of per-run ratios; CPU x4 slows the main thread only, not our worker")
     lcp = _med(net, "phone", "lcp_ms")
     add("phone: largest contentful paint <= 2.5 s", None if lcp is None else lcp / 1000, 2.5, "seconds, median")
-    tbt = _med(net, "phone", "tbt_ms")
-    others = ", ".join(f"{p} {_med(net, p, 'tbt_ms'):.0f} ms" for p in net
-                       if p != "phone" and _med(net, p, "tbt_ms") is not None)
-    add("phone: total blocking time nav -> ready <= 300 ms", tbt, 300.0,
-        "median" + (f"; other profiles: {others}" if others else ""))
+    # Issue 14 sets these two "on this machine": the profiles without a CPU slowdown.
+    # The phone profile's numbers (4x slower main thread) are shown beside them.
+    native = [p for p in net if p not in PROFILES or PROFILES[p].cpu_slowdown <= 1]
+    slowed = [p for p in net if p not in native]
+
+    def worst(key):
+        vals = [v for v in (_med(net, p, key) for p in native) if v is not None]
+        return max(vals) if vals else None
+
+    def shown(key, fmt):
+        return ", ".join(f"{p} {fmt(_med(net, p, key))}" for p in net if _med(net, p, key) is not None)
+
+    add("total blocking time nav -> ready <= 300 ms (this machine: profiles without CPU slowdown)",
+        worst("tbt_ms"), 300.0, "worst median; " + shown("tbt_ms", lambda v: f"{v:.0f} ms")
+        + (f" ({', '.join(slowed)}: CPU x4, for information)" if slowed else ""))
     counts = {p: (net[p]["metrics"].get("fetched_twice_count") or {}).get("max") for p in net}
     known = [v for v in counts.values() if v is not None]
     files = sorted({f for p in net for f in net[p]["fetched_twice"]})
     add("no file fetched twice on a first visit (every profile)", max(known) if known else None, 0,
         "most in one visit; " + (", ".join(files) if files else "none"))
-    grades = {p: _med(net, p, "first_grade_ms") for p in net}
-    worst = max((v for v in grades.values() if v is not None), default=None)
-    add("first grade right after ready <= 20 ms (every profile)", worst, 20.0,
-        "worst median; " + ", ".join(f"{p} {v:.1f} ms" for p, v in grades.items() if v is not None))
+    add("first grade right after ready <= 20 ms (this machine: profiles without CPU slowdown)",
+        worst("first_grade_ms"), 20.0, "worst median; " + shown("first_grade_ms", lambda v: f"{v:.1f} ms")
+        + (f" ({', '.join(slowed)}: CPU x4, for information)" if slowed else ""))
     return targets
 
 
