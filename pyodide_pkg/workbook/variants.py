@@ -23,7 +23,7 @@ from __future__ import annotations
 import math
 import random
 import re
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from html import escape
 from typing import Any, Callable, Iterator, Mapping
 
@@ -108,7 +108,6 @@ class Choice:
         return f"{self.name} one of {', '.join(map(str, self.options))}"
 
 
-@dataclass(frozen=True)
 class Vary:
     """How an exercise varies: ``make(p) -> {field: value, ..., "values": {...}}``.
 
@@ -117,14 +116,10 @@ class Vary:
     variant 0's parameters are never used for ``n > 0``.
     """
 
-    make: Callable[[dict[str, Any]], dict[str, Any]]
-    params: tuple[Param | Choice, ...] = ()
-    valid: Callable[[dict[str, Any]], bool] = field(default=lambda p: True)
-
-    def __init__(self, make, *params, valid=None):
-        object.__setattr__(self, "make", make)
-        object.__setattr__(self, "params", tuple(params))
-        object.__setattr__(self, "valid", valid or (lambda p: True))
+    def __init__(self, make: Callable[[dict[str, Any]], dict[str, Any]], *params: Param | Choice,
+                 valid: Callable[[dict[str, Any]], bool] | None = None) -> None:
+        self.make, self.params = make, tuple(params)
+        self.valid = valid or (lambda p: True)
 
     @property
     def defaults(self) -> dict[str, Any]:

@@ -66,9 +66,10 @@ export async function initPractise(shared, siteRoot) {
   let current = null;
 
   const say = () => {
-    const { due, text } = dueLine(manifest, progress);
+    const { text } = dueLine(manifest, progress);
     status.textContent = current ? `${text} Now: exercise ${current}.` : text;
-    next.textContent = due && due > (current && dueIds(progress, [current]).length ? 1 : 0) ? "Next due exercise" : "Practise another";
+    const others = dueIds(progress, manifest.variants || []).filter((id) => id !== current).length;
+    next.textContent = others ? "Next due exercise" : "Practise another";
   };
 
   async function serve(id) {

@@ -23,9 +23,7 @@ const KEEP = 100; // the most variants a list remembers
 const has = (list, v) => Array.isArray(list) && list.includes(v);
 const add = (list, v) => (has(list, v) ? list : [...(list || []), v].slice(-KEEP));
 
-function move(record, box, now) {
-  return { box, due: now + INTERVAL_MS[box], reviewed: now };
-}
+const move = (box, now) => ({ box, due: now + INTERVAL_MS[box], reviewed: now });
 
 const first = (record, v) => !has(record.done, v) && !has(record.missed, v);
 
@@ -33,12 +31,12 @@ const first = (record, v) => !has(record.done, v) && !has(record.missed, v);
 export function afterGrade(record, v, status, { schedule = true, now = Date.now() } = {}) {
   const patch = {};
   if (status === "correct") {
-    if (schedule && first(record, v)) Object.assign(patch, move(record, Math.min(TOP_BOX, Math.max(1, record.box || 1) + 1), now));
+    if (schedule && first(record, v)) Object.assign(patch, move(Math.min(TOP_BOX, Math.max(1, record.box || 1) + 1), now));
     patch.done = add(record.done, v);
     if (!has(record.revealedIn, v)) patch.clean = add(record.clean, v);
   } else if (status === "incorrect" && first(record, v)) {
     patch.missed = add(record.missed, v);
-    if (schedule) Object.assign(patch, move(record, 1, now));
+    if (schedule) Object.assign(patch, move(1, now));
   }
   return patch;
 }
@@ -48,7 +46,7 @@ export function afterReveal(record, v, { schedule = true, now = Date.now() } = {
   const patch = { revealed: true, revealedIn: add(record.revealedIn, v) };
   if (first(record, v)) {
     patch.missed = add(record.missed, v);
-    if (schedule) Object.assign(patch, move(record, 1, now));
+    if (schedule) Object.assign(patch, move(1, now));
   }
   return patch;
 }

@@ -234,7 +234,7 @@ const ready = (async () => {
   const started = await start();
   pyodide = started.py;
   lazyStdlib = pyodide.pyimport("workbook.lazy_stdlib");
-  lazyStdlib.install(STDLIB_REST);
+  lazyStdlib.install(STDLIB_REST).destroy();
   handle = pyodide.pyimport("workbook.api").handle;
   mark("handle");
   const api = pyodide.pyimport("workbook.api");
