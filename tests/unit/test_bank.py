@@ -321,3 +321,12 @@ def test_trace_has_exactly_one_correct_option(ex: Trace):
     assert list(statuses.values()).count("correct") == 1
     assert statuses[ex.answer] == "correct"
     assert all(o.why.strip() and o.text.strip() for o in ex.options)
+
+
+@pytest.mark.parametrize("ex", BY_KIND["derive"], ids=lambda ex: ex.id)
+def test_a_label_does_not_repeat_the_unit_the_widget_adds(ex: Derive):
+    """The widget writes the unit after the label ("x (m)"); a label that holds it too read "x (m) (m)"."""
+    for seed in (0, 1):
+        v = ex.variant(seed)
+        named = {"°": "(degrees)"}.get(v.unit, f"({v.unit})") if v.unit else None
+        assert not named or named not in v.label, (ex.id, seed, v.label)

@@ -366,7 +366,7 @@ EXERCISES = (
     Derive(
         id="3.1",
         title="Predict the new position",
-        label="x (m)",
+        label="x",
         unit="m",
         vary=Vary(_drive_east, Param("x0", 0, -3, 3, 1, unit=" m"), Param("y0", 0, -3, 3, 1, unit=" m"),
                   Param("v", 1, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
@@ -375,7 +375,7 @@ EXERCISES = (
     Derive(
         id="3.2",
         title="Predict at a heading",
-        label="y (m)",
+        label="y",
         unit="m",
         vary=Vary(_drive_at_heading, Param("theta", 45, -175, 175, 5, unit="°", avoid=(0, 90, -90)),
                   Param("v", 2, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)),

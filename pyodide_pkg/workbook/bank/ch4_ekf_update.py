@@ -258,14 +258,14 @@ EXERCISES = (
     Derive(
         id="4.1",
         title="Predicted range",
-        label="r (m)",
+        label="r",
         unit="m",
         vary=Vary(_predicted_range, *_SIGHTING, valid=_off_both_axes),
     ),
     Derive(
         id="4.2",
         title="Predicted bearing",
-        label="φ (degrees)",
+        label="φ",
         unit="°",
         angle="deg",
         periodic=True,  # a bearing: 413.13° points the same way
@@ -282,7 +282,7 @@ EXERCISES = (
     Derive(
         id="4.4",
         title="The innovation",
-        label="range innovation (m)",
+        label="range innovation",
         unit="m",
         vary=Vary(_range_innovation,
                   Param("hr", 5, 3, 7, 0.1, unit=" m"), Param("hphi", _H_PRED[1], 0.2273, 1.4273, 0.1, unit=" rad"),
