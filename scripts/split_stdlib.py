@@ -68,18 +68,23 @@ def core_files(used: list[str], names: set[str]) -> set[str]:
     return keep
 
 
-def minify(source: bytes, name: str) -> bytes:
-    """The module without docstrings and comments, if it compiles to the same program; else as it was."""
-    try:
-        tree = ast.parse(source, name)
-    except SyntaxError:
-        return source
+def strip_docstrings(tree: ast.AST) -> ast.AST:
+    """Remove the docstring of the module and of every class and function (in place; returns the tree)."""
     for node in ast.walk(tree):
         if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)):
             body = node.body
             if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) \
                     and isinstance(body[0].value.value, str):
                 body[0:1] = [] if len(body) > 1 else [ast.Pass()]
+    return tree
+
+
+def minify(source: bytes, name: str) -> bytes:
+    """The module without docstrings and comments, if it compiles to the same program; else as it was."""
+    try:
+        tree = strip_docstrings(ast.parse(source, name))
+    except SyntaxError:
+        return source
     out = ast.unparse(tree)
     if ast.dump(ast.parse(out)) != ast.dump(tree):
         return source

@@ -15,6 +15,8 @@ import struct
 import zipfile
 from pathlib import Path
 
+from split_stdlib import strip_docstrings  # scripts/ (tests/conftest.py puts it on the path)
+
 SITE = Path(__file__).resolve().parents[2] / "site"
 VENDOR = SITE / "assets/vendor/pyodide"
 
@@ -47,14 +49,7 @@ def test_numpy_ships_compiled_with_a_true_record():
 
 
 def _without_docstrings(source: bytes) -> str:
-    tree = ast.parse(source)
-    for node in ast.walk(tree):
-        if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)):
-            body = node.body
-            if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) \
-                    and isinstance(body[0].value.value, str):
-                body[0:1] = [] if len(body) > 1 else [ast.Pass()]
-    return ast.dump(tree)
+    return ast.dump(strip_docstrings(ast.parse(source)))
 
 
 def test_the_core_standard_library_holds_the_package_as_it_is():
