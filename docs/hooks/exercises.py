@@ -10,8 +10,8 @@ answer kind without its module (``workbook/answer_kinds/A.py`` and
 ``docs/assets/js/answer-kinds/A.js``), an unknown figure, and a ``{{name}}``
 placeholder that the exercise's generator does not fill (``exercise_text.py``).
 It also writes ``assets/exercises.json`` (the chapters and the ids on each, each
-exercise's kind and title, and which ones draw variants: for the progress pages
-and the review queue) and exposes the contract to the theme
+exercise's title, and which ones draw variants: for the progress pages and the
+review queue) and exposes the contract to the theme
 templates as ``config.extra.contract``.
 """
 
@@ -171,8 +171,8 @@ def on_post_build(config, **kwargs):
     ]
     out = Path(config.site_dir) / MANIFEST
     out.parent.mkdir(parents=True, exist_ok=True)
-    kinds = {ex.id: ex.kind for ex in bank.all_exercises()}
-    variants = [ex.id for ex in bank.all_exercises() if getattr(ex, "vary", None) is not None]
-    titles = {ex.id: ex.title for ex in bank.all_exercises()}
-    out.write_text(json.dumps({"version": 2, "chapters": chapters, "kinds": kinds, "variants": variants,
-                               "titles": titles}, ensure_ascii=False, separators=(",", ":")))
+    everything = bank.all_exercises()
+    variants = [ex.id for ex in everything if getattr(ex, "vary", None) is not None]
+    titles = {ex.id: ex.title for ex in everything}
+    out.write_text(json.dumps({"version": 2, "chapters": chapters, "variants": variants, "titles": titles},
+                              ensure_ascii=False, separators=(",", ":")))

@@ -59,7 +59,7 @@ def _help(ex: Exercise, base: str, hint_html: str, solution_html: str) -> tuple[
 
 
 def _variant_controls(base: str) -> str:
-    """New numbers, back to the workbook's, and a link to the numbers on screen (exercise.js drives them)."""
+    """New numbers, back to the workbook's, and a link to the numbers on screen (docs/assets/js/variants.js drives them)."""
     return (f'<div class="wb-variant" aria-label="Numbers" role="group">'
             f'<button type="button" class="md-button wb-help-button" {role_attr(ROLE.new_variant)}>New numbers</button>'
             f'<button type="button" class="md-button wb-help-button" {role_attr(ROLE.original_variant)} hidden>'

@@ -46,12 +46,13 @@ class RestOfStdlib:
         self.names, self.url, self.fetch, self.dest = names, url, fetch, dest
         self.mounted = False
 
-    def mount(self, data: bytes | None = None) -> None:
-        """Make the rest importable: ``data`` is the zip; None fetches it, unless
-        the page already wrote it to ``dest``."""
+    def mount(self) -> None:
+        """Make the rest importable: fetched here, unless the page already wrote it to ``dest``.
+        A package's submodules in the rest are found by ``find_spec``, which adds the rest's folder
+        to the package's ``__path__``."""
         if self.mounted:
             return
-        if data is None and not _exists(self.dest):
+        if not _exists(self.dest):
             if not self.url:
                 raise ImportError("the rest of the standard library has no address")
             try:
@@ -59,17 +60,10 @@ class RestOfStdlib:
             except Exception as err:  # offline without the stored copy, a server error, ...
                 raise ImportError(f"this module is in the part of Python's standard library that is loaded "
                                   f"on first use, and it could not be loaded ({err})") from None
-        if data is not None:
             with open(self.dest, "wb") as f:
                 f.write(data)
         sys.path.append(self.dest)
         self.mounted = True
-        # A package imported from the core looks for its submodules in its own folder only: add the rest's.
-        for name, module in list(sys.modules.items()):
-            path = getattr(module, "__path__", None)
-            folder = f"{self.dest}/{name.replace('.', '/')}"
-            if isinstance(path, list) and folder not in path and any(n.startswith(name + ".") for n in self.names):
-                path.append(folder)
         importlib.invalidate_caches()
 
     def find_spec(self, fullname: str, path=None, target=None):

@@ -6,7 +6,8 @@ import { ATTR, ROLE, STATE, findRole } from "./contract.js";
 import { setPending, showMessage, showReply } from "./feedback.js";
 import { afterGrade, afterReveal } from "./review.js";
 
-function decodeBase64(text) {
+/** Text from base64 of its UTF-8 bytes (the derivation, the variant templates). */
+export function decodeBase64(text) {
   const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
   return new TextDecoder().decode(bytes);
 }

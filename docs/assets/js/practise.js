@@ -5,17 +5,11 @@
 
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
-import { dueLine, loadManifest } from "./progress-ui.js";
+import { dueLine, el, loadManifest } from "./progress-ui.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
 
 const pages = new Map(); // chapter address -> Promise<Document>
-
-function el(tag, props = {}, ...children) {
-  const node = Object.assign(document.createElement(tag), props);
-  node.append(...children);
-  return node;
-}
 
 function chapterPage(href) {
   if (!pages.has(href)) {

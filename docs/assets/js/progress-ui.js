@@ -50,7 +50,8 @@ function phrase({ solved, afterReveal, total, mastered, masterable }, noun = "ex
   return `${solved} of ${total} ${noun} solved${extra}${master}`;
 }
 
-function el(tag, props = {}, ...children) {
+/** A new element with `props` and `children`. */
+export function el(tag, props = {}, ...children) {
   const node = Object.assign(document.createElement(tag), props);
   node.append(...children);
   return node;

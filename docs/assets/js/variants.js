@@ -6,12 +6,12 @@
 // link opens exactly it, and in the progress record, so a reload keeps it.
 
 import { ATTR, ROLE, STATE, findRole } from "./contract.js";
+import { decodeBase64 } from "./exercise.js";
 import { showMessage } from "./feedback.js";
 
 const PARAM = "variant";
 export const MAX_VARIANT = 999_999;
 
-const decode = (text) => new TextDecoder().decode(Uint8Array.from(atob(text), (c) => c.charCodeAt(0)));
 const encode = (text) => btoa(Array.from(new TextEncoder().encode(text), (b) => String.fromCharCode(b)).join(""));
 
 /** The variant a link asks for, for exercise `id` (?variant=ID-N), or null. */
@@ -74,7 +74,7 @@ function showControls(ctx, n) {
  */
 export async function showVariant(ctx, n, { remember = true } = {}) {
   const { el } = ctx;
-  const texts = JSON.parse(decode(el.getAttribute(ATTR.templates)));
+  const texts = JSON.parse(decodeBase64(el.getAttribute(ATTR.templates)));
   el.setAttribute("aria-busy", "true");
   const reply = await ctx.runtime.request({ op: "draw", exercise: ctx.id, variant: n, texts });
   el.removeAttribute("aria-busy");

@@ -270,10 +270,8 @@ function mountRest() {
 
 async function serve(msg) {
   await ready;
-  if (msg.op === "run" && /\bimport\b/.test(msg.code || "") && lazyStdlib.needed_by(msg.code)) {
-    await mountRest().catch(() => {}); // if it fails, an import that needs it says so
-  }
   if (msg.op === "run" && /\bimport\b/.test(msg.code || "")) {
+    if (lazyStdlib.needed_by(msg.code)) await mountRest().catch(() => {}); // if it fails, an import that needs it says so
     const needs = /^\s*(?:import|from)\s+numpy\b/m.test(msg.code);
     if (needs) self.postMessage({ id: msg.id, type: "progress", message: "Loading NumPy…" });
     try {
