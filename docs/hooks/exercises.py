@@ -6,7 +6,7 @@ prompt, hint and solution with the site's own Markdown extensions, and
 ``render_exercise`` builds the widget around the HTML its kind draws. The build
 fails on an unknown, duplicate or missing exercise id, an unknown kind (one not
 in the contract, or without its page module ``docs/assets/js/kinds/K.js``), an
-answer kind without its module (``workbook/answer_kinds/A.py`` and
+answer kind without its package (``workbook/answer_kinds/A/`` and
 ``docs/assets/js/answer-kinds/A.js``), an unknown figure, and a ``{{name}}``
 placeholder that the exercise's generator does not fill (``exercise_text.py``).
 It also writes ``assets/exercises.json`` (the chapters and the ids on each, each
@@ -70,7 +70,7 @@ def _check_kinds() -> None:
         for name in names:
             if not (JS / folder / f"{name}.js").is_file():
                 raise PluginError(f"{name!r} has no page module docs/assets/js/{folder}/{name}.js")
-    answer_classes()  # each answer kind's Python module exists and defines its class
+    answer_classes()  # each answer kind's Python package exists and defines its class
 
 
 def on_config(config, **kwargs):

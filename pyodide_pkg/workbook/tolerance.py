@@ -1,7 +1,10 @@
 """When a typed number counts as the key (GUIDE §2).
 
-- Relative tolerance 1e-3 by default: the derivations print 3–4 significant
-  digits, and a chained answer may differ in its last digit.
+- Relative tolerance 1e-3 by default: the derivations print 4 significant
+  figures or more, and a chained answer may differ in its last digit.
+- Engineers round to 3 significant figures: a value typed to n ≥ 3
+  significant figures is also right when it lies within half a unit of its
+  last typed digit of the key (``0.123`` for 0.1234, but not ``0.1238``).
 - An absolute floor applies only where the key is zero, and keys are cleaned
   of float noise first, so a key of 2e-16 from cos(90°) *is* zero.
 - Counts and other integers are exact (``exact=True``).
@@ -11,6 +14,8 @@
 
 >>> agrees(0.1438, 1 / 7)      # the old absolute floor of 1e-3 accepted this
 False
+>>> agrees(0.123, 0.1234), agrees(0.123, 0.1234, half_unit=0.0005), agrees(0.122, 0.1234, half_unit=0.0005)
+(False, True, False)
 >>> agrees(0.1429, 1 / 7), agrees(7493, 7500, exact=True), agrees(7500, 7500.0, exact=True)
 (True, False, True)
 """
@@ -20,6 +25,7 @@ from __future__ import annotations
 import math
 
 REL = 1e-3
+FIGURES = 3  # a value typed to this many significant figures or more may use its own rounding
 ZERO_FLOOR = 1e-3  # |value| accepted for a key of zero (a key has no scale there; 4-decimal rounding stays inside)
 CLOSE = 0.02
 NOISE = 1e-12
@@ -40,11 +46,13 @@ def clean(x: float) -> float:
     return float(f"{x:.12g}")
 
 
-def agrees(value: float, key: float, rel: float = REL, exact: bool = False) -> bool:
+def agrees(value: float, key: float, rel: float = REL, exact: bool = False, half_unit: float | None = None) -> bool:
     """True when ``value`` counts as ``key``.
 
     Relative: |value − key| ≤ rel·|key|. A zero key (after :func:`clean`) takes
     |value| ≤ 1e-3 instead. ``exact`` (counts, integers): equal after cleaning.
+    ``half_unit``, for a value typed to at least :data:`FIGURES` significant
+    figures: half a unit of its last digit; within that of the key is right too.
 
     >>> agrees(0.7071, math.sqrt(2) / 2), agrees(0.707, math.sqrt(2) / 2), agrees(0.70, math.sqrt(2) / 2)
     (True, True, False)
@@ -59,6 +67,8 @@ def agrees(value: float, key: float, rel: float = REL, exact: bool = False) -> b
         return False
     if exact:
         return clean(value) == clean(key)
+    if half_unit is not None and abs(value - key) <= half_unit * (1 + 1e-9):
+        return True
     if abs(key) < NOISE:  # clean(key) == 0; rounding to 12 digits cannot matter at 1e-3
         return abs(value) <= ZERO_FLOOR
     return abs(value - key) <= rel * abs(key) * (1 + 1e-12)

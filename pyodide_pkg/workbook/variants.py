@@ -149,31 +149,3 @@ def check_seed(seed: object) -> int:
     if not 0 <= n <= MAX_SEED:
         raise ValueError(f"a variant is a whole number from 0 to {MAX_SEED}")
     return n
-
-
-# ---- Formatting helpers for ``values`` ----------------------------------------
-def num(x: float) -> str:
-    """A number as the workbook prints it (``kinds.derive.fmt``): ``num(0.5) == "0.5"``."""
-    from .kinds.derive import fmt
-
-    return fmt(x)
-
-
-def paren(x: float) -> str:
-    """A number for a product in TeX: negative ones in parentheses.
-
-    >>> paren(-2), paren(3)
-    ('(-2)', '3')
-    """
-    s = num(x)
-    return f"({s})" if s.startswith("-") else s
-
-
-def signed(x: float) -> str:
-    """A number as a following term: ``+ 2`` or ``- 2`` (TeX minus).
-
-    >>> signed(-2), signed(0.5)
-    ('- 2', '+ 0.5')
-    """
-    s = num(x)
-    return f"- {s[1:]}" if s.startswith("-") else f"+ {s}"

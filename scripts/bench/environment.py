@@ -53,7 +53,7 @@ def parser_worst_case(repeats: int = 20) -> dict:
     Its limits (length, nesting, node count, exponent) are checked before any
     evaluation, so no input should take long; this records the worst seen.
     """
-    from workbook.answers import MAX_LENGTH, InvalidAnswer, parse_answer
+    from workbook.expr import MAX_LENGTH, InvalidAnswer, parse_answer
 
     half = MAX_LENGTH // 2
     cases = {

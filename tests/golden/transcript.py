@@ -21,7 +21,7 @@ ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "pyodide_pkg"))
 
 from workbook import bank  # noqa: E402
-from workbook.kinds.derive import fmt  # noqa: E402
+from workbook.number_format import fmt  # noqa: E402
 from workbook.verdict import GradingError  # noqa: E402
 
 FILE = Path(__file__).with_name("transcript.json")
@@ -52,24 +52,30 @@ def attempt(ex, answer) -> dict:
 
 
 def derive(ex) -> dict:
-    key = ex.key
-    tries = {"key": repr(key), "printed": fmt(key) + ("°" if ex.angle == "deg" else "")}
+    a = ex.answer
+    key = a.key
+    deg = "°" if a.angle == "deg" else ""
+    tries = {"key": repr(key), "printed": fmt(key) + deg}
+    if key and not isinstance(key, int):
+        tries["3 significant figures"] = f"{key:.3g}{deg}"
+        tries["2 significant figures"] = f"{key:.2g}{deg}"
+        tries["as LaTeX"] = "\\frac{" + fmt(2 * key) + "}{2}" + ("^{\\circ}" if deg else "")
     if key:
         tries["negated"] = repr(-key)
         tries["off by 1%"] = repr(key * 1.01)
         tries["off by 10%"] = repr(key * 1.1)
     else:
         tries["off by 0.01"] = "0.01"
-    if ex.angle == "deg":
+    if a.angle == "deg":
         tries["in radians"] = repr(key * 3.141592653589793 / 180)
         tries["in radians, with the unit"] = f"{key * 3.141592653589793 / 180!r} rad"
         tries["as a sum of degrees"] = f"{key / 2!r}° + {key / 2!r}°"
         tries["plus a turn"] = f"{key + 360!r}°"
-    if ex.unit in ("m", "m/s"):
-        tries["with its unit"] = f"{fmt(key)} {ex.unit}"
-        tries["in centimetres"] = f"{key * 100!r} cm" + ("/s" if ex.unit == "m/s" else "")
+    if a.unit in ("m", "m/s"):
+        tries["with its unit"] = f"{fmt(key)} {a.unit}"
+        tries["in centimetres"] = f"{key * 100!r} cm" + ("/s" if a.unit == "m/s" else "")
     tries["with a unit of the wrong kind"] = f"{fmt(key)} s"
-    for i, slip in enumerate(ex.slips, start=1):
+    for i, slip in enumerate(a.slips, start=1):
         tries[f"slip {i}"] = repr(slip.value)
     for text in INVALID:
         tries[f"invalid {text!r}"] = text
@@ -77,17 +83,25 @@ def derive(ex) -> dict:
 
 
 def _grid(rows) -> list[list[str]]:
-    return [[fmt(v, digits=4) for v in row] for row in rows]
+    return [[fmt(v) for v in row] for row in rows]
 
 
 def shaped(ex) -> dict:
     """A vector or matrix answer: grids of entry texts, and pasted strings."""
-    key = _grid(ex.cleaned)
-    tries = {"key grid": key, "worked text": ex.worked_text()}
+    a = ex.answer
+    key = _grid(a.cleaned)
+    tries = {"key grid": key, "worked text": ex.worked_text(), "the Answer line's LaTeX": a.worked_tex()}
+    tries["to 3 significant figures"] = [[f"{v:.3g}" for v in row] for row in a.cleaned]
     tries["transposed"] = [list(col) for col in zip(*key)]
-    tries["negated"] = _grid([[-v for v in row] for row in ex.cleaned])
+    tries["negated"] = _grid([[-v for v in row] for row in a.cleaned])
+    if a.names:
+        names = [n.split("|")[0] for n in a.names]
+        flat = [v for row in key for v in row]
+        tries["named, in reverse order"] = ", ".join(f"{n} = {v}" for n, v in reversed(list(zip(names, flat))))
+        tries["named, two names swapped"] = ", ".join(
+            f"{n} = {v}" for n, v in zip(names[1::-1] + names[2:], flat))
     wrong = [row[:] for row in key]
-    wrong[-1][-1] = fmt(ex.cleaned[-1][-1] + 1)
+    wrong[-1][-1] = fmt(a.cleaned[-1][-1] + 1)
     tries["one entry wrong"] = wrong
     empty = [row[:] for row in key]
     empty[0][0] = ""
@@ -95,7 +109,7 @@ def shaped(ex) -> dict:
     tries["pasted as [[...]]"] = "[" + ", ".join("[" + ", ".join(row) + "]" for row in key) + "]"
     tries["pasted as a b; c d"] = "; ".join(" ".join(row) for row in key)
     tries["pasted, wrong shape"] = "1 2 3 4 5 6 7 8 9 10 11 12 13"
-    for i, slip in enumerate(ex.slips, start=1):
+    for i, slip in enumerate(a.slips, start=1):
         tries[f"slip {i}"] = _grid(slip.value)
     tries["not a grid"] = 5
     return {name: {"answer": text, **attempt(ex, text), **_marked(ex, text)} for name, text in tries.items()}
@@ -106,7 +120,7 @@ def _marked(ex, answer) -> dict:
         data = ex.check(answer).data
     except GradingError:
         return {}
-    return {k: data[k] for k in ("wrong", "invalid") if k in data}
+    return {k: data[k] for k in ("wrong", "invalid", "close") if k in data}
 
 
 # Each formula exercise's slips typed as a learner would, in the order of ex.slips (the slip itself is a
@@ -126,13 +140,14 @@ FORMULA_WRONG = "1 + 0*pi"
 
 def formula(ex) -> dict:
     """A formula answer: the worked formula, the slips, a wrong formula, an unknown name, empty."""
-    tries = {"answer text": ex.answer_text}
+    a = ex.answer
+    tries = {"answer text": a.answer_text, "the Answer line's LaTeX": a.worked_tex()}
     for i, text in enumerate(SLIP_TEXTS[ex.id], start=1):
         tries[f"slip {i}"] = text
     tries["a wrong formula"] = FORMULA_WRONG
-    tries["an unknown name"] = ex.answer_text + " + q7"
+    tries["an unknown name"] = a.answer_text + " + q7"
     tries["empty"] = ""
-    tries["unbalanced"] = "(" + ex.answer_text
+    tries["unbalanced"] = "(" + a.answer_text
     return {name: {"answer": text, **attempt(ex, text)} for name, text in tries.items()}
 
 

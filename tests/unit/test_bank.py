@@ -19,9 +19,7 @@ from pathlib import Path
 import pytest
 
 from workbook import bank
-from workbook.answer_kinds.expression import FormulaDerive
-from workbook.answer_kinds.matrix import MatrixDerive
-from workbook.formula import equivalent
+from workbook.answer_kinds.expression.mark import equivalent
 from workbook.contract import KINDS
 from workbook.kinds.build import Build
 from workbook.kinds.debug import Debug
@@ -124,18 +122,18 @@ def printed_answer(ex: Derive) -> str:
 def test_derive_key_matches_the_printed_derivation(ex: Derive):
     shown = printed_answer(ex)
     decimals = len(shown.split(".")[1]) if "." in shown else 0
-    assert abs(float(shown) - ex.key) <= 0.5 * 10 ** -decimals + 1e-12, (
-        f"{ex.id}: derivation prints {shown}, key is {ex.key!r}"
+    assert abs(float(shown) - ex.answer.key) <= 0.5 * 10 ** -decimals + 1e-12, (
+        f"{ex.id}: derivation prints {shown}, key is {ex.answer.key!r}"
     )
-    text = shown + ("°" if ex.angle == "deg" else "")
+    text = shown + ("°" if ex.answer.angle == "deg" else "")
     assert check(ex, text).status == "correct", f"{ex.id}: the printed answer {text} is not accepted"
-    assert check(ex, repr(ex.key)).status == "correct"
+    assert check(ex, repr(ex.answer.key)).status == "correct"
 
 
 @pytest.mark.parametrize("ex", BY_ANSWER["number"], ids=lambda e: e.id)
 def test_derive_slips_are_reachable(ex: Derive):
-    for slip in ex.slips:
-        assert not math.isclose(slip.value, ex.key, abs_tol=1e-9), f"{ex.id}: a slip equals the key"
+    for slip in ex.answer.slips:
+        assert not math.isclose(slip.value, ex.answer.key, abs_tol=1e-9), f"{ex.id}: a slip equals the key"
         result = check(ex, repr(slip.value))
         assert (result.status, result.tag, result.message) == ("incorrect", "slip", slip.message)
 
@@ -149,7 +147,7 @@ def test_every_derive_answer_kind_is_walked():
 BMATRIX = re.compile(r"\\begin\{bmatrix\}(.*?)\\end\{bmatrix\}", re.S)
 
 
-def printed_matrix(ex: MatrixDerive) -> list[list[str]]:
+def printed_matrix(ex: Derive) -> list[list[str]]:
     """The entries of the last bmatrix on the ``**Answer:**`` line, as printed, row by row."""
     lines = [l for l in BLOCKS[ex.id]["solution"].splitlines() if l.strip().startswith("**Answer:**")]
     assert len(lines) == 1, f"{ex.id}: the derivation needs exactly one '**Answer:**' line"
@@ -164,10 +162,10 @@ def as_text(grid) -> list[list[str]]:
 
 
 @pytest.mark.parametrize("ex", BY_ANSWER["matrix"], ids=lambda e: e.id)
-def test_matrix_key_matches_the_printed_derivation(ex: MatrixDerive):
+def test_matrix_key_matches_the_printed_derivation(ex: Derive):
     shown = printed_matrix(ex)
-    assert [len(row) for row in shown] == [len(row) for row in ex.key], f"{ex.id}: printed shape differs from the key"
-    for i, (row, key_row) in enumerate(zip(shown, ex.key), 1):
+    assert [len(row) for row in shown] == [len(row) for row in ex.answer.key], f"{ex.id}: printed shape differs from the key"
+    for i, (row, key_row) in enumerate(zip(shown, ex.answer.key), 1):
         for j, (text, want) in enumerate(zip(row, key_row), 1):
             assert NUMBER.fullmatch(text), f"{ex.id} ({i},{j}): print a plain number, not {text!r}"
             value = float(text.replace("−", "-"))
@@ -175,14 +173,14 @@ def test_matrix_key_matches_the_printed_derivation(ex: MatrixDerive):
             assert abs(value - want) <= 0.5 * 10 ** -decimals + 1e-12, f"{ex.id} ({i},{j}): prints {text}, key {want!r}"
     assert check(ex, shown).status == "correct", f"{ex.id}: the printed answer is not accepted"
     assert check(ex, ex.worked_text()).status == "correct", f"{ex.id}: the worked text {ex.worked_text()!r}"
-    assert check(ex, as_text(ex.key)).status == "correct"
+    assert check(ex, as_text(ex.answer.key)).status == "correct"
 
 
 @pytest.mark.parametrize("ex", BY_ANSWER["matrix"], ids=lambda e: e.id)
-def test_matrix_slips_are_reachable(ex: MatrixDerive):
-    assert ex.slips, f"{ex.id}: name at least one slip of its own"
-    for slip in ex.slips:
-        assert [len(r) for r in slip.value] == [len(r) for r in ex.key], f"{ex.id}: a slip of another shape"
+def test_matrix_slips_are_reachable(ex: Derive):
+    assert ex.answer.slips, f"{ex.id}: name at least one slip of its own"
+    for slip in ex.answer.slips:
+        assert [len(r) for r in slip.value] == [len(r) for r in ex.answer.key], f"{ex.id}: a slip of another shape"
         assert check(ex, as_text(slip.value)).status != "correct", f"{ex.id}: a slip equals the key"
         result = check(ex, as_text(slip.value))
         assert (result.status, result.tag, result.message) == ("incorrect", "slip", slip.message), ex.id
@@ -190,10 +188,10 @@ def test_matrix_slips_are_reachable(ex: MatrixDerive):
 
 
 @pytest.mark.parametrize("ex", BY_ANSWER["matrix"], ids=lambda e: e.id)
-def test_matrix_transpose_is_named_or_refused(ex: MatrixDerive):
-    t = [list(col) for col in zip(*ex.cleaned)]
+def test_matrix_transpose_is_named_or_refused(ex: Derive):
+    t = [list(col) for col in zip(*ex.answer.cleaned)]
     result = check(ex, as_text(t))
-    if len(t) != len(ex.key):  # a vector or a non-square matrix: the transpose has the wrong shape
+    if len(t) != len(ex.answer.key):  # a vector or a non-square matrix: the transpose has the wrong shape
         assert result.status == "invalid" and "×" in result.message, (ex.id, result)
     elif result.status != "correct":  # a symmetric key is its own transpose
         assert result.status == "incorrect" and result.tag, (ex.id, result)
@@ -202,7 +200,7 @@ def test_matrix_transpose_is_named_or_refused(ex: MatrixDerive):
 
 def test_a_quaternion_and_its_negative_are_both_right():
     ex = bank.get("2.7")
-    negated = [[repr(-v) for v in row] for row in ex.cleaned]
+    negated = [[repr(-v) for v in row] for row in ex.answer.cleaned]
     result = check(ex, negated)
     assert result.status == "correct" and "same rotation" in result.message
 
@@ -223,47 +221,47 @@ def test_every_formula_exercise_has_a_hand_written_equivalent():
 
 
 @pytest.mark.parametrize("ex", BY_ANSWER["expression"], ids=lambda e: e.id)
-def test_formula_answer_and_equivalent_are_right(ex: FormulaDerive):
+def test_formula_answer_and_equivalent_are_right(ex: Derive):
     lines = [l for l in BLOCKS[ex.id]["solution"].splitlines() if l.strip().startswith("**Answer:**")]
     assert len(lines) == 1, f"{ex.id}: the derivation needs exactly one '**Answer:**' line"
-    assert ex.worked_text() == ex.answer_text
-    for text in (ex.answer_text, EQUIVALENT_FORMS[ex.id]):
+    assert ex.worked_text() == ex.answer.answer_text
+    for text in (ex.answer.answer_text, EQUIVALENT_FORMS[ex.id]):
         result = check(ex, text)
         assert result.status == "correct", (ex.id, text, result.message)
         assert result.data["latex"]
 
 
 @pytest.mark.parametrize("ex", BY_ANSWER["expression"], ids=lambda e: e.id)
-def test_formula_slips_are_reachable(ex: FormulaDerive):
-    assert ex.slips
-    for slip in ex.slips:
+def test_formula_slips_are_reachable(ex: Derive):
+    assert ex.answer.slips
+    for slip in ex.answer.slips:
         result = check(ex, slip_text(ex, slip))
         assert (result.status, result.tag, result.message) == ("incorrect", "slip", slip.message), (ex.id, slip.message)
-        assert not equivalent(_formula(ex, slip_text(ex, slip)), ex.key, ex.domain)
+        assert not equivalent(_formula(ex, slip_text(ex, slip)), ex.answer.key, ex.answer.domain)
 
 
 @pytest.mark.parametrize("ex", BY_ANSWER["expression"], ids=lambda e: e.id)
-def test_formula_with_an_unknown_name_is_invalid_and_lists_the_names(ex: FormulaDerive):
-    result = check(ex, ex.answer_text + " + q7")
+def test_formula_with_an_unknown_name_is_invalid_and_lists_the_names(ex: Derive):
+    result = check(ex, ex.answer.answer_text + " + q7")
     assert result.status == "invalid"
-    assert all(name in result.message for name in ex.variables), result.message
+    assert all(name in result.message for name in ex.answer.variables), result.message
     assert "q7" in result.message
 
 
 def _formula(ex, text):
-    from workbook.formula import parse_formula
+    from workbook.expr import parse_formula
 
-    return parse_formula(text, ex.variables)
+    return parse_formula(text, ex.answer.variables)
 
 
 def slip_text(ex, slip) -> str:
-    text = SLIP_TEXTS[ex.id][ex.slips.index(slip)]
-    assert equivalent(_formula(ex, text), slip.value, ex.domain), f"{ex.id}: {text!r} is not the slip it stands for"
+    text = SLIP_TEXTS[ex.id][ex.answer.slips.index(slip)]
+    assert equivalent(_formula(ex, text), slip.value, ex.answer.domain), f"{ex.id}: {text!r} is not the slip it stands for"
     return text
 
 
 def test_every_formula_slip_has_a_typed_form():
-    assert {e.id: len(e.slips) for e in BY_ANSWER["expression"]} == {k: len(v) for k, v in SLIP_TEXTS.items()}
+    assert {e.id: len(e.answer.slips) for e in BY_ANSWER["expression"]} == {k: len(v) for k, v in SLIP_TEXTS.items()}
 
 
 @pytest.mark.parametrize("ex", BY_KIND["build"], ids=lambda e: e.id)
@@ -328,5 +326,6 @@ def test_a_label_does_not_repeat_the_unit_the_widget_adds(ex: Derive):
     """The widget writes the unit after the label ("x (m)"); a label that holds it too read "x (m) (m)"."""
     for seed in (0, 1):
         v = ex.variant(seed)
-        named = {"°": "(degrees)"}.get(v.unit, f"({v.unit})") if v.unit else None
-        assert not named or named not in v.label, (ex.id, seed, v.label)
+        unit = getattr(v.answer, "unit", "")
+        named = {"°": "(degrees)"}.get(unit, f"({unit})") if unit else None
+        assert not named or named not in v.answer.label, (ex.id, seed, v.answer.label)

@@ -5,6 +5,7 @@ import math
 import pytest
 
 from workbook import bank
+from workbook.answer_kinds.number import number
 from workbook.kinds.derive import Derive
 
 
@@ -20,7 +21,7 @@ def test_policy_tolerance():
     ex = bank.get("0.4")  # key 0 -> absolute tolerance 1e-3
     assert grade("0.4", "0.0009").status == "correct"
     assert grade("0.4", "0.0011").status == "incorrect"
-    big = Derive(id="x.1", title="", key=7500.0, label="")
+    big = Derive(id="x.1", title="", answer=number(key=7500.0))
     assert check(big, "7507").status == "correct"  # 1e-3 relative
     assert check(big, "7508").tag == "close"
 
@@ -58,7 +59,7 @@ def test_known_slips_have_their_own_message(ex_id, answer):
 
 
 def test_every_derive_with_a_classic_mistake_names_one():
-    without = [e.id for e in bank.all_exercises() if e.kind == "derive" and not e.slips]
+    without = [e.id for e in bank.all_exercises() if e.kind == "derive" and not e.answer.slips]
     # 5.1 (a count) and 6.1 (a straight arm) are the only ones left without a named slip, if any.
     assert len(without) <= 4, without
 
@@ -104,5 +105,5 @@ def test_keys_come_from_reference_implementations():
     """Spot-check that keys are the reference functions' results, not typed numbers."""
     from workbook.reference.rotation2d import rotate_2d
 
-    assert bank.get("0.4").key == rotate_2d(1, 1, math.pi / 4)[0]
-    assert math.isclose(bank.get("4.2").key, math.degrees(math.atan2(4, 3)))
+    assert bank.get("0.4").answer.key == rotate_2d(1, 1, math.pi / 4)[0]
+    assert math.isclose(bank.get("4.2").answer.key, math.degrees(math.atan2(4, 3)))

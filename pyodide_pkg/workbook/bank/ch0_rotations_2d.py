@@ -2,14 +2,17 @@
 
 import math
 
-from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
-from ..kinds.derive import Derive, Slip
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt, paren
 from ..reference.linalg import add
 from ..reference.rotation2d import compose, det_rot2, rot2, rotate_2d
 from ..tolerance import clean
-from ..variants import Choice, Param, Vary, num, paren
+from ..variants import Choice, Param, Vary
 from . import grid
 
 TURNS = {90: ("quarter turn", "y", "-x"), 180: ("half turn", "-x", "-y"), 270: ("three-quarter turn", "-y", "x")}
@@ -23,7 +26,7 @@ def _quarter_turn(p):
         "key": yr,
         "slips": (Slip(rotate_2d(x, y, -math.pi / 2)[1],
                        "That is a clockwise turn. R(θ) with θ > 0 turns counter-clockwise."),),
-        "values": {"px": paren(x), "py": paren(y), "xr": num(xr), "yr": num(yr)},
+        "values": {"px": paren(x), "py": paren(y), "xr": fmt(xr), "yr": fmt(yr)},
     }
 
 
@@ -33,14 +36,14 @@ def _composed_entry(p):
     key = compose(math.radians(a), math.radians(b))[0][0]
     return {
         "key": key,
-        "label": f"(1,1) entry of R({num(a)}°)·R({num(b)}°)",
+        "label": f"(1,1) entry of R({fmt(a)}°)·R({fmt(b)}°)",
         "slips": (
             Slip(rot2(math.radians(a))[0][0] * rot2(math.radians(b))[0][0],
                  "You multiplied the two (1,1) entries. A matrix product mixes a row with a column: use R(α)R(β) = R(α+β)."),
             Slip(det_rot2(math.radians(a + b)),
                  "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle."),
         ),
-        "values": {"total": num(a + b), "c": num(clean(key))},
+        "values": {"total": fmt(a + b), "c": fmt(clean(key))},
     }
 
 
@@ -51,14 +54,14 @@ def _diagonal_point(p):
     other = "y" if axis == "x" else "x"
     rules = {"x": "cosθ·x − sinθ·y", "y": "sinθ·x + cosθ·y"}
     tex = {"x": r"\cos\theta\,x - \sin\theta\,y", "y": r"\sin\theta\,x + \cos\theta\,y"}
-    r = r"\sqrt2" if a == 1 else rf"{num(a)}\sqrt2"
+    r = r"\sqrt2" if a == 1 else rf"{fmt(a)}\sqrt2"
     key, slip = (xr, yr) if axis == "x" else (yr, xr)
     return {
         "key": key,
-        "title": f"Rotate ({num(a)}, {num(a)}) by 45°",
+        "title": f"Rotate ({fmt(a)}, {fmt(a)}) by 45°",
         "label": f"{axis}-coordinate of the rotated point",
         "slips": (Slip(slip, f"That is the {other}-coordinate. The {axis}-coordinate is {rules[axis]}."),),
-        "values": {"rule": tex[axis], "xr": num(clean(xr)), "yr": num(yr), "r": r, "answer": num(clean(key))},
+        "values": {"rule": tex[axis], "xr": fmt(clean(xr)), "yr": fmt(yr), "r": r, "answer": fmt(clean(key))},
     }
 
 
@@ -67,7 +70,7 @@ def _rotation_det(p):
     theta = p["theta"]
     return {
         "key": det_rot2(math.radians(theta)),
-        "label": f"det R({num(theta)}°)",
+        "label": f"det R({fmt(theta)}°)",
         "slips": (Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ."),),
     }
 
@@ -81,20 +84,20 @@ def _whole_product(p):
     turn, x_to, y_to = TURNS[total]
     return {
         "key": key,
-        "title": f"The whole product R({num(a)}°)·R({num(b)}°)",
-        "label": f"R({num(a)}°)·R({num(b)}°)",
+        "title": f"The whole product R({fmt(a)}°)·R({fmt(b)}°)",
+        "label": f"R({fmt(a)}°)·R({fmt(b)}°)",
         "rotation_angle": math.radians(total),
         "slips": (
             Slip(grid([[u * v for u, v in zip(rowa, rowb)] for rowa, rowb in zip(ra, rb)]),
                  "You multiplied entry by entry. A matrix product takes row i of the left matrix against "
-                 f"column j of the right one: (1,1) is cos{num(a)}°·cos{num(b)}° − "
-                 f"sin{num(a)}°·sin{num(b)}°."),
+                 f"column j of the right one: (1,1) is cos{fmt(a)}°·cos{fmt(b)}° − "
+                 f"sin{fmt(a)}°·sin{fmt(b)}°."),
             Slip(grid(add(ra, rb)),
-                 f"That is the sum R({num(a)}°) + R({num(b)}°). Composing rotations multiplies the matrices; "
+                 f"That is the sum R({fmt(a)}°) + R({fmt(b)}°). Composing rotations multiplies the matrices; "
                  "the angles add, not the matrices."),
         ),
-        "values": {"total": num(total), "turn": turn, "x_to": x_to, "y_to": y_to,
-                   **{f"k{i}{j}": num(clean(v)) for i, row in enumerate(key, 1) for j, v in enumerate(row, 1)}},
+        "values": {"total": fmt(total), "turn": turn, "x_to": x_to, "y_to": y_to,
+                   **{f"k{i}{j}": fmt(clean(v)) for i, row in enumerate(key, 1) for j, v in enumerate(row, 1)}},
     }
 
 
@@ -102,12 +105,13 @@ EXERCISES = (
     Derive(
         id="0.1",
         title="Rotate a point by 90°",
-        label="y-coordinate of the rotated point",
+        answer=number(label="y-coordinate of the rotated point"),
         vary=Vary(_quarter_turn, Param("x", 3, -5, 5, 1, avoid=(0,)), Param("y", 0, -5, 5, 1)),
     ),
     Derive(
         id="0.2",
         title="Compose two rotations",
+        answer=number(),
         vary=Vary(_composed_entry, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°")),
     ),
     Trace(
@@ -128,6 +132,7 @@ EXERCISES = (
     Derive(
         id="0.4",
         title="Rotate (1, 1) by 45°",
+        answer=number(),
         vary=Vary(_diagonal_point, Param("a", 1, 1, 5, 1), Choice("axis", "x", ("x", "y"))),
     ),
     Build(
@@ -156,11 +161,13 @@ EXERCISES = (
     Derive(
         id="0.6",
         title="The determinant of a rotation",
+        answer=number(),
         vary=Vary(_rotation_det, Param("theta", 37, 5, 355, 5, unit="°", avoid=(90, 180, 270))),
     ),
-    MatrixDerive(
+    Derive(
         id="0.7",
         title="The whole product R(30°)·R(60°)",
+        answer=matrix(),
         vary=Vary(_whole_product, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°"),
                   valid=lambda p: p["a"] + p["b"] in TURNS),
     ),

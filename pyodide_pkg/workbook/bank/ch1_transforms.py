@@ -2,14 +2,17 @@
 
 import math
 
-from ..answer_kinds.matrix import MatrixDerive
-from ..kinds.derive import Derive, Slip
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt, paren, signed
 from ..reference.linalg import matvec, transpose
 from ..reference.transform2d import apply, chain, inverse_transform, transform2d
 from ..tolerance import clean
-from ..variants import Param, Vary, num, paren, signed
+from ..variants import Param, Vary
 from . import grid
 
 
@@ -24,7 +27,7 @@ def _terms(coefs, xs, const=None):
     >>> _terms((-1, 0), (2, -2), 2)
     '-1 \\cdot 2 + 0 \\cdot (-2) + 2'
     """
-    parts = [f"{num(c) if k == 0 else signed(c)} \\cdot {paren(x)}" for k, (c, x) in enumerate(zip(coefs, xs))]
+    parts = [f"{fmt(c) if k == 0 else signed(c)} \\cdot {paren(x)}" for k, (c, x) in enumerate(zip(coefs, xs))]
     return " ".join(parts + ([signed(const)] if const is not None else []))
 
 
@@ -33,16 +36,16 @@ def _pure_translation(p):
     tx, ty, px, py = p["tx"], p["ty"], p["px"], p["py"]
     T = transform2d(tx, ty, 0)
     wx, wy = apply(T, px, py)
-    ahead = f"The point is {num(px)} m ahead of it" if py == 0 and px > 0 else \
-        f"The point sits at ({num(px)}, {num(py)}) in its frame"
+    ahead = f"The point is {fmt(px)} m ahead of it" if py == 0 and px > 0 else \
+        f"The point sits at ({fmt(px)}, {fmt(py)}) in its frame"
     return {
         "key": wx,
         "slips": (
             Slip(apply(transform2d(0, 0, 0), px, py)[0],
-                 f"That is the point in the robot frame. The robot sits at ({num(tx)}, {num(ty)}), so add its position."),
+                 f"That is the point in the robot frame. The robot sits at ({fmt(tx)}, {fmt(ty)}), so add its position."),
             Slip(apply(T, 0, 0)[0], f"That is the robot's own x. {ahead}: add the point too."),
         ),
-        "values": {"stx": signed(tx), "sty": signed(ty), "wx": num(wx), "wy": num(wy)},
+        "values": {"stx": signed(tx), "sty": signed(ty), "wx": fmt(wx), "wy": fmt(wy)},
     }
 
 
@@ -53,15 +56,15 @@ def _turn_and_shift(p):
     turned = apply(transform2d(0, 0, math.pi / 2), d, 0)
     shifted = apply(transform2d(tx, ty, 0), d, 0)
     if clean(turned[1]) == clean(shifted[1]):
-        left_out = (Slip(turned[1], f"You left something out: turning ({num(d)}, 0) by 90° alone gives y = {num(turned[1])}, "
-                                    f"and shifting it by ({num(tx)}, {num(ty)}) without turning also gives "
-                                    f"y = {num(shifted[1])}. T rotates first, then adds t."),)
+        left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives y = {fmt(turned[1])}, "
+                                    f"and shifting it by ({fmt(tx)}, {fmt(ty)}) without turning also gives "
+                                    f"y = {fmt(shifted[1])}. T rotates first, then adds t."),)
     else:
-        left_out = (Slip(turned[1], f"You left something out: turning ({num(d)}, 0) by 90° alone gives "
-                                    f"y = {num(turned[1])}. T rotates first, then adds t = ({num(tx)}, {num(ty)})."),
-                    Slip(shifted[1], f"You left something out: shifting ({num(d)}, 0) by ({num(tx)}, {num(ty)}) "
-                                     f"without turning gives y = {num(shifted[1])}. T rotates first, then adds t."))
-    distance = "one metre" if d == 1 else f"{num(d)} metres"
+        left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives "
+                                    f"y = {fmt(turned[1])}. T rotates first, then adds t = ({fmt(tx)}, {fmt(ty)})."),
+                    Slip(shifted[1], f"You left something out: shifting ({fmt(d)}, 0) by ({fmt(tx)}, {fmt(ty)}) "
+                                     f"without turning gives y = {fmt(shifted[1])}. T rotates first, then adds t."))
+    distance = "one metre" if d == 1 else f"{fmt(d)} metres"
     return {
         "key": wy,
         "slips": left_out + (
@@ -69,8 +72,8 @@ def _turn_and_shift(p):
                  "That is a clockwise turn. A heading of +90° turns the robot's x-axis onto the world's +y."),
         ),
         "values": {"distance": distance, "Distance": distance[0].upper() + distance[1:], "stx": signed(tx),
-                   "sty": signed(ty), "wx": num(clean(wx)), "wy": num(clean(wy)),
-                   "ty_turn": num(clean(turned[1])), "sx": num(shifted[0])},
+                   "sty": signed(ty), "wx": fmt(clean(wx)), "wy": fmt(clean(wy)),
+                   "ty_turn": fmt(clean(turned[1])), "sx": fmt(shifted[0])},
     }
 
 
@@ -87,11 +90,11 @@ def _tool_point(p):
             Slip(apply(chain(T_base_tool, T_world_base), d, 0)[0],
                  "The order is reversed. Apply the tool-to-base transform to the point first, then base-to-world."),
             Slip(apply(chain(T_world_base, transform2d(ux, uy, 0)), d, 0)[0],
-                 f"You added the offsets but skipped the tool frame's 90° turn: ({num(d)}, 0) in the tool frame "
+                 f"You added the offsets but skipped the tool frame's 90° turn: ({fmt(d)}, 0) in the tool frame "
                  "points along the base's y-axis."),
         ),
-        "values": {"bpx": num(clean(in_base[0])), "bpy": num(clean(in_base[1])), "wx": num(clean(wx)),
-                   "wy": num(clean(wy)), "verb": verb},
+        "values": {"bpx": fmt(clean(in_base[0])), "bpy": fmt(clean(in_base[1])), "wx": fmt(clean(wx)),
+                   "wy": fmt(clean(wy)), "verb": verb},
     }
 
 
@@ -121,7 +124,7 @@ def _inverse_pose(p):
                  "axes. T⁻¹ needs it in the robot's own axes: −Rᵀt."),
             Slip(_with(RT, RT_t),
                  "The translation has the wrong sign: it is −Rᵀt. Check with the robot's own position: "
-                 f"T⁻¹ must send ({num(tx)}, {num(ty)}) to the origin."),
+                 f"T⁻¹ must send ({fmt(tx)}, {fmt(ty)}) to the origin."),
             Slip(_with(R, [-tx, -ty]),
                  "Negating the translation is not enough: the turn must be undone too, so the rotation block is "
                  "Rᵀ, and the translation becomes −Rᵀt."),
@@ -130,12 +133,12 @@ def _inverse_pose(p):
         "values": {
             "whose": "Exercise 1.2's" if default else "A",
             "check_on": "exercise 1.2's answer" if default else "the point one metre straight ahead of the robot",
-            **{f"t{i}{j}": num(clean(T[i - 1][j - 1])) for i in (1, 2) for j in (1, 2)},
-            "r11": num(clean(c)), "r12": num(clean(s_)), "r21": num(clean(ns)),
+            **{f"t{i}{j}": fmt(clean(T[i - 1][j - 1])) for i in (1, 2) for j in (1, 2)},
+            "r11": fmt(clean(c)), "r12": fmt(clean(s_)), "r21": fmt(clean(ns)),
             "rt1_terms": _terms(RT[0], (tx, ty)), "rt2_terms": _terms(RT[1], (tx, ty)),
-            "rt1": num(clean(RT_t[0])), "rt2": num(clean(RT_t[1])),
-            "k13": num(clean(key[0][2])), "k23": num(clean(key[1][2])),
-            "wx": num(clean(wx)), "wy": num(clean(wy)),
+            "rt1": fmt(clean(RT_t[0])), "rt2": fmt(clean(RT_t[1])),
+            "k13": fmt(clean(key[0][2])), "k23": fmt(clean(key[1][2])),
+            "wx": fmt(clean(wx)), "wy": fmt(clean(wy)),
             "chk1": _terms(key[0][:2], (clean(wx), clean(wy)), clean(key[0][2])),
             "chk2": _terms(key[1][:2], (clean(wx), clean(wy)), clean(key[1][2])),
         },
@@ -154,23 +157,23 @@ EXERCISES = (
     Derive(
         id="1.1",
         title="Pure translation",
-        label="x-coordinate in the world frame",
+        answer=number(label="x-coordinate in the world frame"),
         vary=Vary(_pure_translation, Param("tx", 3, -5, 5, 1, avoid=(0,)), Param("ty", 4, -5, 5, 1),
                   Param("px", 1, -5, 5, 1, avoid=(0,)), Param("py", 0, -5, 5, 1),
-                  valid=lambda p: p["px"] != p["tx"]),  # else the two slips are one number
+                  valid=lambda p: p["px"] != p["tx"]),
     ),
     Derive(
         id="1.2",
         title="Rotation plus translation",
-        label="y-coordinate in the world frame",
+        answer=number(label="y-coordinate in the world frame"),
         vary=Vary(_turn_and_shift, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1, avoid=(0,)),
                   Param("d", 1, 0.5, 3, 0.5, unit=" m"),
-                  valid=lambda p: p["ty"] != 2 * p["d"]),  # else the clockwise turn lands on the turn-alone slip
+                  valid=lambda p: p["ty"] != 2 * p["d"]),
     ),
     Derive(
         id="1.3",
         title="Chain two transforms",
-        label="x-coordinate in the world frame",
+        answer=number(label="x-coordinate in the world frame"),
         vary=Vary(_tool_point, Param("bx", 0, -3, 3, 1), Param("by", 1, -3, 3, 1), Param("ux", 2, -3, 3, 1),
                   Param("uy", 0, -3, 3, 1), Param("d", 1, 1, 3, 1), valid=_tool_point_ok),
     ),
@@ -203,10 +206,10 @@ EXERCISES = (
         ),
         shown=("world", "out", "lidar", "car"),
     ),
-    MatrixDerive(
+    Derive(
         id="1.6",
         title="The inverse transform, whole",
-        label="T⁻¹",
+        answer=matrix(label="T⁻¹"),
         vary=Vary(_inverse_pose, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1),
                   Param("theta", 90, -175, 180, 5, unit="°"), valid=_inverse_pose_ok),
     ),

@@ -2,13 +2,16 @@
 
 import math
 
-from ..answer_kinds.matrix import MatrixDerive
-from ..kinds.derive import Derive, Slip, fmt
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt, paren
 from ..reference.linalg import matvec
 from ..reference.rotation3d import quat_axis_angle, quat_from_axis_angle, quat_norm, rz
 from ..tolerance import clean
-from ..variants import Choice, Param, Vary, num, paren
+from ..variants import Choice, Param, Vary
 from . import column
 
 _AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
@@ -23,7 +26,7 @@ def _axis_text(axis):
 
 def _num4(x):
     """A number with at least 4 significant digits, as the worked answer prints it (0.08716, 0.7071)."""
-    return fmt(clean(x), digits=4)
+    return fmt(clean(x))
 
 
 def _root_half(x, tex):
@@ -35,7 +38,7 @@ def _root_half(x, tex):
 
 def _square(x):
     """A square in the norm check: ``\\tfrac12`` where the text writes it so, else the decimal."""
-    return "\\tfrac12" if math.isclose(x, 0.5) else num(x)
+    return "\\tfrac12" if math.isclose(x, 0.5) else fmt(x)
 
 
 def _yaw_x_axis(p):
@@ -45,8 +48,8 @@ def _yaw_x_axis(p):
     word = "onto" if g == 90 else "towards" if g < 90 else "past"  # where x ends up, seen from y
     return {
         "key": s,
-        "title": f"Yaw by {num(g)}°",
-        "label": f"y-component of Rz({num(g)}°)·(1, 0, 0)ᵀ",
+        "title": f"Yaw by {fmt(g)}°",
+        "label": f"y-component of Rz({fmt(g)}°)·(1, 0, 0)ᵀ",
         "slips": (Slip(matvec(rz(-math.radians(g)), [1, 0, 0])[1],
                        "That is a clockwise yaw. A positive angle about z turns x towards y (right-hand rule)."),),
         "values": {"c": _num4(c), "s": _num4(s), "ms": _num4(-s), "onto": word, "into": "into" if g == 90 else word},
@@ -59,15 +62,15 @@ def _quat_w(p):
     q = quat_from_axis_angle(_AXES[axis], math.radians(t))
     return {
         "key": q[0],
-        "title": f"Quaternion for {num(t)}° about {axis}",
+        "title": f"Quaternion for {fmt(t)}° about {axis}",
         "slips": (Slip(math.cos(math.radians(t)),
-                       f"That is cos {num(t)}°, the full angle. A quaternion uses half the angle: "
-                       f"w = cos(θ/2) = cos {num(t / 2)}°."),),
+                       f"That is cos {fmt(t)}°, the full angle. A quaternion uses half the angle: "
+                       f"w = cos(θ/2) = cos {fmt(t / 2)}°."),),
         "values": {
-            "half": num(t / 2), "n": _axis_text(axis),
+            "half": fmt(t / 2), "n": _axis_text(axis),
             "w_exact": _root_half(q[0], "\\tfrac{\\sqrt2}{2} \\approx 0.7071"),
             "v": ", ".join(map(_num4, q[1:])), "q": ",\\ ".join(map(_num4, q)),
-            "squares": " + ".join(num(c * c) for c in q),
+            "squares": " + ".join(fmt(c * c) for c in q),
         },
     }
 
@@ -98,8 +101,8 @@ def _quat_norm(p):
         "slips": (Slip(sum(q), "That is the sum of the components. The norm squares them first: √(4 · 0.5²)."),),
         "values": {
             "pw": paren(q[0]), "px": paren(q[1]), "py": paren(q[2]), "pz": paren(q[3]),
-            "half": num(theta / 2), "theta": num(theta),
-            "axis": ", ".join(f"{a:.3f}" for a in axis), "signs": ", ".join(num(2 * c) for c in q[1:]),
+            "half": fmt(theta / 2), "theta": fmt(theta),
+            "axis": ", ".join(f"{a:.3f}" for a in axis), "signs": ", ".join(fmt(2 * c) for c in q[1:]),
         },
     }
 
@@ -110,7 +113,7 @@ def _yaw_vector(p):
     turned = matvec(rz(math.pi / 2), v)
     return {
         "key": column(turned),
-        "label": "Rz(90°)·({}, {}, {})ᵀ".format(*map(num, v)),
+        "label": "Rz(90°)·({}, {}, {})ᵀ".format(*map(fmt, v)),
         "slips": (
             Slip(column(matvec(rz(-math.pi / 2), v)),
                  "That is Rz(−90°)·v, a clockwise yaw (the same as multiplying by the transpose of Rz(90°)). "
@@ -118,8 +121,8 @@ def _yaw_vector(p):
             Slip(column((v[1], v[0], v[2])),
                  "You swapped x and y but lost a sign. A quarter turn about z sends (x, y) to (−y, x)."),
         ),
-        "values": {"px": paren(v[0]), "py": paren(v[1]), "x2": num(v[0] ** 2), "y2": num(v[1] ** 2),
-                   "z2": num(v[2] ** 2), "rx": num(turned[0]), "ry": num(turned[1])},
+        "values": {"px": paren(v[0]), "py": paren(v[1]), "x2": fmt(v[0] ** 2), "y2": fmt(v[1] ** 2),
+                   "z2": fmt(v[2] ** 2), "rx": fmt(turned[0]), "ry": fmt(turned[1])},
     }
 
 
@@ -131,24 +134,24 @@ def _quat_whole(p):
     view = "seen from above" if axis == "z" else f"seen from the +{axis} side"
     return {
         "key": column(q),
-        "title": f"The whole quaternion for {num(t)}° about {axis}",
+        "title": f"The whole quaternion for {fmt(t)}° about {axis}",
         "slips": (
             Slip(column(quat_from_axis_angle(n, 2 * rad)),
-                 f"That is the quaternion of a {num(2 * t)}° turn: you used the full angle. A quaternion holds "
+                 f"That is the quaternion of a {fmt(2 * t)}° turn: you used the full angle. A quaternion holds "
                  "half of it: w = cos(θ/2), (x, y, z) = sin(θ/2)·n."),
             Slip(column(q[1:] + q[:1]),
                  "Those are the right numbers in the order (x, y, z, w), scalar last, as some libraries store "
                  "them. This answer asks for (w, x, y, z)."),
             Slip(column(quat_from_axis_angle(n, -rad)),
-                 f"That is the conjugate, a turn of −{num(t)}° (clockwise {view}). For +{num(t)}° about +{axis}, "
-                 f"the {axis} part is +sin {num(t / 2)}°."),
+                 f"That is the conjugate, a turn of −{fmt(t)}° (clockwise {view}). For +{fmt(t)}° about +{axis}, "
+                 f"the {axis} part is +sin {fmt(t / 2)}°."),
         ),
         "values": {
-            "half": num(t / 2), "a": "an" if axis == "x" else "a",  # "an x part", "a z part"
+            "half": fmt(t / 2), "a": "an" if axis == "x" else "a",  # "an x part", "a z part"
             "n": _axis_text(axis), "nx": str(n[0]), "ny": str(n[1]), "nz": str(n[2]),
             **{f"e{c}": _root_half(q[_SLOT[c]], "\\sqrt2/2") for c in "wxyz"},
             **{f"d{c}": _num4(q[_SLOT[c]]) for c in "wxyz"},
-            "w2": _square(q[0] ** 2), "v2": _square(sum(c * c for c in q[1:])), "back": num(360 - t),
+            "w2": _square(q[0] ** 2), "v2": _square(sum(c * c for c in q[1:])), "back": fmt(360 - t),
         },
     }
 
@@ -157,6 +160,7 @@ EXERCISES = (
     Derive(
         id="2.1",
         title="Yaw by 90°",
+        answer=number(),
         vary=Vary(_yaw_x_axis, Param("gamma", 90, 5, 175, 5, unit="°")),
     ),
     Trace(
@@ -182,40 +186,40 @@ EXERCISES = (
     Derive(
         id="2.3",
         title="Quaternion for 90° about z",
-        either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
-        label="w",
-        # θ = 120° is never drawn: there cos θ = −cos(θ/2), so the full-angle slip would be accepted as −w
+        answer=number(
+            either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
+            label="w",
+        ),
         vary=Vary(_quat_w, Param("theta", 90, 10, 170, 10, unit="°", avoid=(120,)),
                   Choice("axis", "z", ("x", "y", "z"))),
     ),
     Derive(
         id="2.4",
         title="Quaternion for 180° about x",
-        label="z",
-        # the asked component lies off the axis: the text explains why it is 0
+        answer=number(label="z"),
         vary=Vary(_half_turn_component, Choice("axis", "x", ("x", "y", "z")), Choice("comp", "z", ("x", "y", "z")),
                   valid=lambda p: p["comp"] != p["axis"]),
     ),
     Derive(
         id="2.5",
         title="The norm of a quaternion",
-        label="‖q‖",
-        # every component is ±0.5, so q stays a rotation ("It is a valid rotation", √(4 · 0.25));
-        # a sum of 1 is never drawn: the sum-of-components slip would be the key
+        answer=number(label="‖q‖"),
         vary=Vary(_quat_norm, *(Param(c, 0.5, -0.5, 0.5, 1) for c in "wxyz"),
                   valid=lambda p: not math.isclose(sum(p.values()), 1.0)),
     ),
-    MatrixDerive(
+    Derive(
         id="2.6",
         title="Yaw a whole vector",
-        # no zero component: x = 0 or y = 0 would make a slip coincide with the key or another slip
+        answer=matrix(),
         vary=Vary(_yaw_vector, *(Param(c, d, -5, 5, 1, avoid=(0,)) for c, d in zip("xyz", (2, 1, 3)))),
     ),
-    MatrixDerive(
+    Derive(
         id="2.7",
         title="The whole quaternion for 90° about z",
-        label="q = (w, x, y, z)ᵀ",
-        either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
+        answer=matrix(
+            label="q = (w, x, y, z)ᵀ",
+            either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
+        ),
         vary=Vary(_quat_whole, Param("theta", 90, 10, 170, 10, unit="°"), Choice("axis", "z", ("x", "y", "z"))),
     ),
 )

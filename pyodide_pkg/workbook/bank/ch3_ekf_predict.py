@@ -3,15 +3,18 @@
 import math
 from fractions import Fraction
 
-from ..answer_kinds.expression import FormulaDerive
-from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.debug import Debug
-from ..kinds.derive import Derive, Slip, fmt
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.expression import formula
+from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt
 from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
 from ..reference.linalg import add, matmul, sub, identity, transpose
 from ..tolerance import agrees, clean
-from ..variants import Choice, Param, Vary, num
+from ..variants import Choice, Param, Vary
 from . import grid
 
 _P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
@@ -23,12 +26,12 @@ _PRINTED_37, _PRINTED_38 = (2, 0.5), (1, 1)  # (v, dt) as the workbook prints 3.
 # ---- helpers for the variants -------------------------------------------------
 def _sig(x: float) -> str:
     """A derived number as the derivation prints it: 4 decimals, 4 significant digits when small."""
-    return fmt(clean(x), digits=4)
+    return fmt(clean(x))
 
 
 def _bm(m) -> str:
     """A matrix in TeX as the chapter writes it: ``\\begin{bmatrix} 1 & 0 \\\\ 0 & 1 \\end{bmatrix}``."""
-    rows = " \\\\ ".join(" & ".join(num(clean(v)) for v in row) for row in m)
+    rows = " \\\\ ".join(" & ".join(fmt(clean(v)) for v in row) for row in m)
     return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
 
 
@@ -38,7 +41,7 @@ def _diag(a: float, b: float, c: float):
 
 def _metres(d: float, one: str) -> str:
     """A distance in words: ``one`` (e.g. "one metre") for exactly 1 m, else "1.5 metres"."""
-    return one if math.isclose(d, 1.0) else f"{num(d)} metres"
+    return one if math.isclose(d, 1.0) else f"{fmt(d)} metres"
 
 
 def _pi_frac(deg: int, tfrac: bool = False) -> str:
@@ -90,15 +93,15 @@ def _drive_east(p):
         slips = [Slip(yn, f"That is y. {east}"),
                  Slip(x0 + dy, f"That leaves x where it started: you used sin for x. {east}")]
     if x0:
-        slips.append(Slip(dx, f"That is the distance driven alone. x′ = x + v·cosθ·dt starts from x = {num(x0)}."))
+        slips.append(Slip(dx, f"That is the distance driven alone. x′ = x + v·cosθ·dt starts from x = {fmt(x0)}."))
     if dt != 1:
         slips.append(Slip(motion_model((x0, y0, _EAST), v, 0, 1)[0],
-                          f"You left out dt. The robot drives for {num(dt)} s, so it covers v·dt = {num(dx)} m, "
-                          f"not {num(v)} m."))
+                          f"You left out dt. The robot drives for {fmt(dt)} s, so it covers v·dt = {fmt(dx)} m, "
+                          f"not {fmt(v)} m."))
     return {
         "key": xn,
         "slips": tuple(slips),
-        "values": {"where": _compass(x0, y0), "xn": num(xn), "yn": num(yn), "dist": _metres(dx, "one metre")},
+        "values": {"where": _compass(x0, y0), "xn": fmt(xn), "yn": fmt(yn), "dist": _metres(dx, "one metre")},
     }
 
 
@@ -116,7 +119,7 @@ def _drive_at_heading(p):
     xn, yn, _ = motion_model((0, 0, theta), v, 0, dt)
     d = v * dt
     slips = [Slip(motion_model((0, 0, theta), v, 0, 1)[1],
-                  f"You left out dt. The robot drives for {num(dt)} s, so it covers v·dt = {num(d)} m, not {num(v)} m.")]
+                  f"You left out dt. The robot drives for {fmt(dt)} s, so it covers v·dt = {fmt(d)} m, not {fmt(v)} m.")]
     if not agrees(clean(xn), clean(yn)):
         slips.append(Slip(xn, "That is x′, the cosine share. The new y takes the sine: y′ = y + v·sinθ·dt."))
     even = math.isclose(abs(math.cos(theta)), abs(math.sin(theta)))
@@ -127,9 +130,9 @@ def _drive_at_heading(p):
         "values": {
             "rad": _pi_frac(deg),
             "targ": arg if deg > 0 else f"\\left({arg}\\right)",
-            "vdt": "" if math.isclose(d, 1.0) else num(d),
+            "vdt": "" if math.isclose(d, 1.0) else fmt(d),
             "sdeg": f"{deg}°" if deg > 0 else f"({deg}°)",
-            "xn": _sig(xn), "yn": _sig(yn), "d": num(d),
+            "xn": _sig(xn), "yn": _sig(yn), "d": fmt(d),
             "split": "evenly" if even else "by the cosine and sine of the heading",
         },
     }
@@ -151,10 +154,10 @@ def _north_f13(p):
         "key": F[0][2],
         "slips": (
             Slip(motion_jacobian((0, 0, _NORTH), v, 0, 1)[0][2],
-                 f"You left out dt: F(1,3) = −v·sinθ·dt, and dt = {num(dt)}."),
+                 f"You left out dt: F(1,3) = −v·sinθ·dt, and dt = {fmt(dt)}."),
             Slip(clean(-F[1][2]), "That uses cos θ. Differentiating v·cosθ·dt with respect to θ gives −v·sinθ·dt."),
         ),
-        "values": {"f13": num(F[0][2])},
+        "values": {"f13": fmt(F[0][2])},
     }
 
 
@@ -175,8 +178,8 @@ def _east_covariance(v, dt, P, Q):
 def _heading_gain(f23: float, p33: float) -> str:
     """What y gains from the heading: ``0.1`` when F₂₃ = 1, else ``0.1 \\cdot F_{23}^2 = 0.4``."""
     if math.isclose(f23, 1.0):
-        return num(p33)
-    return f"{num(p33)} \\cdot F_{{23}}^2 = {num(f23 * f23 * p33)}"
+        return fmt(p33)
+    return f"{fmt(p33)} \\cdot F_{{23}}^2 = {fmt(f23 * f23 * p33)}"
 
 
 _ASKED = {"1,1": (0, "P^-_{11}"), "2,2": (1, "P^-_{22}")}
@@ -192,22 +195,22 @@ def _covariance_entry(p):
     i, asked = _ASKED[entry]
     if entry == "1,1":
         slips = [Slip(Pm[1][1], "That is P⁻(2,2), the y variance. The question asks for the top-left entry."),
-                 Slip(FPF[0][0], f"That is F P Fᵀ alone. Add the process noise Q: its (1,1) entry is {num(Q[0][0])}.")]
+                 Slip(FPF[0][0], f"That is F P Fᵀ alone. Add the process noise Q: its (1,1) entry is {fmt(Q[0][0])}.")]
     else:
         slips = [Slip(Pm[0][0], "That is P⁻(1,1), the x variance. The question asks for the (2,2) entry, the y variance."),
-                 Slip(FPF[1][1], f"That is F P Fᵀ alone. Add the process noise Q: its (2,2) entry is {num(Q[1][1])}."),
+                 Slip(FPF[1][1], f"That is F P Fᵀ alone. Add the process noise Q: its (2,2) entry is {fmt(Q[1][1])}."),
                  Slip(add(P, Q)[1][1], "That is P + Q: you left F out. F passes the heading uncertainty into y: "
-                                       f"add F₂₃²·P₃₃ = {num(f23 * f23 * P[2][2])}.")]
+                                       f"add F₂₃²·P₃₃ = {fmt(f23 * f23 * P[2][2])}.")]
         if not math.isclose(f23, 1.0):
             slips.append(Slip(P[1][1] + f23 * P[2][2] + Q[1][1],
                               f"F₂₃ enters twice, once from F and once from Fᵀ: the heading adds F₂₃²·P₃₃ = "
-                              f"{num(f23 * f23 * P[2][2])}, not F₂₃·P₃₃."))
+                              f"{fmt(f23 * f23 * P[2][2])}, not F₂₃·P₃₃."))
     return {
         "key": Pm[i][i],
         "label": f"P⁻({entry})",
         "slips": tuple(slips),
-        "values": {"f23": num(f23), "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm),
-                   "p22m": num(Pm[1][1]), "p23m": num(Pm[1][2]), "asked": asked, "ans": num(Pm[i][i])},
+        "values": {"f23": fmt(f23), "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm),
+                   "p22m": fmt(Pm[1][1]), "p23m": fmt(Pm[1][2]), "asked": asked, "ans": fmt(Pm[i][i])},
     }
 
 
@@ -236,19 +239,19 @@ def _predicted_covariance(p):
         once = [row[:] for row in Pm]
         once[1][1] = _P[1][1] + f23 * _P[2][2] + _Q[1][1]
         slips.append(Slip(grid(once), "Check P⁻(2,2): F₂₃ enters twice, once from F and once from Fᵀ, so y gains "
-                                      f"F₂₃²·P₃₃ = {num(f23 * f23 * _P[2][2])}, not F₂₃·P₃₃."))
+                                      f"F₂₃²·P₃₃ = {fmt(f23 * f23 * _P[2][2])}, not F₂₃·P₃₃."))
     return {
         "key": grid(Pm),
         "slips": tuple(slips),
         "values": {
             "src": "the numbers of exercise 3.4" if printed else "these numbers",
             "same": "the same" if printed else "with",
-            "pdef": "" if printed else f" = \\operatorname{{diag}}({num(_P[0][0])}, {num(_P[1][1])}, {num(_P[2][2])})",
-            "qdef": "" if printed else f" = \\operatorname{{diag}}({num(_Q[0][0])}, {num(_Q[1][1])}, {num(_Q[2][2])})",
+            "pdef": "" if printed else f" = \\operatorname{{diag}}({fmt(_P[0][0])}, {fmt(_P[1][1])}, {fmt(_P[2][2])})",
+            "qdef": "" if printed else f" = \\operatorname{{diag}}({fmt(_Q[0][0])}, {fmt(_Q[1][1])}, {fmt(_Q[2][2])})",
             "fsrc": "Exercise 3.4's hint gives" if printed else "At this heading and step,",
             "fdef": "" if printed else f" = {_bm(F)}",
-            "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm), "f23": num(f23),
-            "gain": _heading_gain(f23, _P[2][2]), "metres": _metres(f23, "a metre"), "p23m": num(Pm[1][2]),
+            "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm), "f23": fmt(f23),
+            "gain": _heading_gain(f23, _P[2][2]), "metres": _metres(f23, "a metre"), "p23m": fmt(Pm[1][2]),
         },
     }
 
@@ -272,7 +275,7 @@ def _north_jacobian(p):
                  "That is F at θ = 0 (or sin and cos swapped). Facing north, sin θ = 1 and cos θ = 0: the "
                  "heading column is (−v·dt, 0, 1)."),
             Slip(grid(motion_jacobian((0, 0, _NORTH), v, 0, 1)),
-                 f"You left out dt: F(1,3) = −v·sin θ·dt = −{num(v)} · 1 · {num(dt)}."),
+                 f"You left out dt: F(1,3) = −v·sin θ·dt = −{fmt(v)} · 1 · {fmt(dt)}."),
             Slip(grid(sub(F, identity(3))),
                  "That is the derivative of the displacement alone. x′ = x + v cos θ dt also contains x itself, "
                  "so F carries the identity on its diagonal."),
@@ -280,9 +283,9 @@ def _north_jacobian(p):
                  "The sign of F(1,3) is flipped: the derivative of cos θ is −sin θ, so F(1,3) = −v sin θ dt."),
         ),
         "values": {
-            "f13": num(F[0][2]),
+            "f13": fmt(F[0][2]),
             "travel": _metres(d, "one metre"),
-            "dx": "-\\delta\\theta" if math.isclose(d, 1.0) else f"-{num(d)}\\,\\delta\\theta",
+            "dx": "-\\delta\\theta" if math.isclose(d, 1.0) else f"-{fmt(d)}\\,\\delta\\theta",
             "col": "0, 1, 1" if (v, dt) == _PRINTED_37 else "0, v\\,dt, 1",  # 3.4's column as printed
         },
     }
@@ -352,8 +355,8 @@ def _heading_column_formula(p):
         "key": case["key"],
         "answer_text": case["answer_text"],
         "slips": case["slips"],
-        "values": {**case["values"], "rv": num(v), "rth": theta_tex, "rdt": num(dt),
-                   "rval": num(case["key"](v, theta, dt))},
+        "values": {**case["values"], "rv": fmt(v), "rth": theta_tex, "rdt": fmt(dt),
+                   "rval": fmt(case["key"](v, theta, dt))},
     }
 
 
@@ -366,8 +369,7 @@ EXERCISES = (
     Derive(
         id="3.1",
         title="Predict the new position",
-        label="x",
-        unit="m",
+        answer=number(label="x", unit="m"),
         vary=Vary(_drive_east, Param("x0", 0, -3, 3, 1, unit=" m"), Param("y0", 0, -3, 3, 1, unit=" m"),
                   Param("v", 1, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
                   valid=_drive_east_ok),
@@ -375,8 +377,7 @@ EXERCISES = (
     Derive(
         id="3.2",
         title="Predict at a heading",
-        label="y",
-        unit="m",
+        answer=number(label="y", unit="m"),
         vary=Vary(_drive_at_heading, Param("theta", 45, -175, 175, 5, unit="°", avoid=(0, 90, -90)),
                   Param("v", 2, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)),
                   valid=_drive_at_heading_ok),
@@ -384,13 +385,14 @@ EXERCISES = (
     Derive(
         id="3.3",
         title="An entry of the Jacobian F",
-        label="F(1,3)",
+        answer=number(label="F(1,3)"),
         vary=Vary(_north_f13, Param("v", 1, 0.5, 3, 0.5, unit=" m/s"),
                   Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_f13_ok),
     ),
     Derive(
         id="3.4",
         title="Predict the covariance",
+        answer=number(),
         vary=Vary(_covariance_entry, Param("v", 1, 0.5, 2, 0.5, unit=" m/s"), Param("dt", 1, 0.2, 2, 0.2, unit=" s"),
                   Param("p11", 1, 0.5, 2, 0.1), Param("p22", 1, 0.5, 2, 0.1), Param("p33", 0.1, 0.01, 0.2, 0.01),
                   Param("q11", 0.01, 0.01, 0.05, 0.01), Param("q22", 0.01, 0.01, 0.05, 0.01),
@@ -447,25 +449,27 @@ EXERCISES = (
                    "in the θ column."),
         ),
     ),
-    MatrixDerive(
+    Derive(
         id="3.7",
         title="The whole Jacobian F facing north",
-        label="F",
+        answer=matrix(label="F"),
         vary=Vary(_north_jacobian, Param("v", _PRINTED_37[0], 0.5, 3, 0.5, unit=" m/s"),
                   Param("dt", _PRINTED_37[1], 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_jacobian_ok),
     ),
-    MatrixDerive(
+    Derive(
         id="3.8",
         title="The whole predicted covariance",
-        label="P⁻ = F P Fᵀ + Q",
+        answer=matrix(label="P⁻ = F P Fᵀ + Q"),
         vary=Vary(_predicted_covariance, Param("v", _PRINTED_38[0], 0.5, 2, 0.5, unit=" m/s"),
                   Param("dt", _PRINTED_38[1], 0.2, 2, 0.2, unit=" s"), valid=_predicted_covariance_ok),
     ),
-    FormulaDerive(
+    Derive(
         id="3.9",
         title="F(1,3) as a formula",
-        variables=("v", "theta", "dt"),
-        domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},
+        answer=formula(
+            variables=("v", "theta", "dt"),
+            domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},
+        ),
         vary=Vary(_heading_column_formula, Choice("entry", "1,3", ("1,3", "2,3"))),
     ),
 )

@@ -2,13 +2,16 @@
 
 import math
 
-from ..answer_kinds.expression import FormulaDerive
-from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
-from ..kinds.derive import Derive, Slip
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.expression import formula
+from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt, paren
 from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
-from ..variants import Choice, Param, Vary, num, paren
+from ..variants import Choice, Param, Vary
 from . import grid
 
 _POSE = (0, 0, 0)
@@ -35,11 +38,11 @@ def _sighting(p):
     r = range_bearing(pose, landmark)[0]
     return {
         "pose": pose, "landmark": landmark, "dx": dx, "dy": dy, "q": q, "r": r, "whole": whole,
-        "rq_plain": num(r) if whole else f"√{q} ≈ {num(r)}",  # √q in a slip's words
+        "rq_plain": fmt(r) if whole else f"√{q} ≈ {fmt(r)}",  # √q in a slip's words
         "values": {
-            "px": paren(p["x"]), "py": paren(p["y"]), "dx": num(dx), "dy": num(dy),
-            "dx2": num(dx * dx), "dy2": num(dy * dy), "q": num(q), "r": num(r),
-            "rq": num(r) if whole else f"\\sqrt{{{q}}}",  # √q in TeX: exact
+            "px": paren(p["x"]), "py": paren(p["y"]), "dx": fmt(dx), "dy": fmt(dy),
+            "dx2": fmt(dx * dx), "dy2": fmt(dy * dy), "q": fmt(q), "r": fmt(r),
+            "rq": fmt(r) if whole else f"\\sqrt{{{q}}}",  # √q in TeX: exact
             "req": "=" if whole else "\\approx",
         },
     }
@@ -52,7 +55,7 @@ def _predicted_range(p):
     if (a, b) == (3, 4):
         remark = "The familiar 3-4-5 right triangle."
     elif s["whole"]:
-        remark = f"A {a}-{b}-{num(s['r'])} right triangle: the range comes out whole."
+        remark = f"A {a}-{b}-{fmt(s['r'])} right triangle: the range comes out whole."
     else:
         remark = f"A right triangle with legs {a} m and {b} m: the range is its hypotenuse."
     return {
@@ -66,7 +69,7 @@ def _predicted_bearing(p):
     """4.2: the bearing of the landmark (lx, ly) from the robot at (x, y) facing east, in degrees."""
     s = _sighting(p)
     phi = range_bearing(s["pose"], s["landmark"])[1]
-    dx, dy = num(s["dx"]), num(s["dy"])
+    dx, dy = fmt(s["dx"]), fmt(s["dy"])
     return {
         "key": math.degrees(phi),
         "slips": (
@@ -74,7 +77,7 @@ def _predicted_bearing(p):
                  f"The arguments are swapped. atan2 takes (dy, dx): atan2({dy}, {dx}), measured from the x-axis."),
         ),
         "values": {**s["values"], "setup": "Same setup" if p == _DEFAULT_SIGHTING else "New setup",
-                   "rad": num(phi), "deg": _dec(math.degrees(phi), 2)},
+                   "rad": fmt(phi), "deg": _dec(math.degrees(phi), 2)},
     }
 
 
@@ -90,7 +93,7 @@ def _range_slope(p):
             Slip(-s["dx"] / s["q"], f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
                                     "it is the bearing row that divides by q."),
         ),
-        "values": {**s["values"], "h11": num(H[0][0]), "size": num(abs(H[0][0])),
+        "values": {**s["values"], "h11": fmt(H[0][0]), "size": fmt(abs(H[0][0])),
                    "phi": f"{deg}°" if not deg.startswith("-") else f"({deg}°)"},
     }
 
@@ -106,7 +109,7 @@ def _range_innovation(p):
                  "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
             Slip(y[1], "That is the bearing innovation, the second component. The range is the first."),
         ),
-        "values": {"zr1": f"{p['zr']:.1f}", "hr1": f"{p['hr']:.1f}", "yr": num(y[0]), "gap": num(abs(y[0])),
+        "values": {"zr1": f"{p['zr']:.1f}", "hr1": f"{p['hr']:.1f}", "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
                    "closer": "closer" if closer else "farther", "pull": "pull" if closer else "push",
                    "towards": "towards" if closer else "away from"},
     }
@@ -139,9 +142,9 @@ def _whole_jacobian(p):
                  "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
                  "dx = lx − x, so moving the robot by +δx shrinks dx."),
         ),
-        "values": {**s["values"], **{f"h{i}{j}": num(H[i - 1][j - 1]) for i in (1, 2) for j in (1, 2)},
+        "values": {**s["values"], **{f"h{i}{j}": fmt(H[i - 1][j - 1]) for i in (1, 2) for j in (1, 2)},
                    "as_in": "as in exercises 4.1 to 4.3" if p == _DEFAULT_SIGHTING else "a new sighting",
-                   "away": num(s["r"]) if s["whole"] else f"about {s['r']:.1f}"},
+                   "away": fmt(s["r"]) if s["whole"] else f"about {s['r']:.1f}"},
     }
 
 
@@ -239,7 +242,7 @@ def _jacobian_entry_formula(p):
             "at": "At exercise 4.3's numbers" if at_default else
                   f"For a landmark {_LANDMARK[0]} m ahead and {_LANDMARK[1]} m to the left",
             "example": f"{minus}{_LANDMARK[0] if top == 'dx' else _LANDMARK[1]}/{math.isqrt(q0) if i == 0 else q0}",
-            "example_value": num(example), "tail": "the\nentry of 4.7" if at_default else f"the ({entry}) entry of H there",
+            "example_value": fmt(example), "tail": "the\nentry of 4.7" if at_default else f"the ({entry}) entry of H there",
             "move": f"+{var}", "where": where, "condition": condition, "effect": effect, "follows": follows,
         },
     }
@@ -258,32 +261,27 @@ EXERCISES = (
     Derive(
         id="4.1",
         title="Predicted range",
-        label="r",
-        unit="m",
+        answer=number(label="r", unit="m"),
         vary=Vary(_predicted_range, *_SIGHTING, valid=_off_both_axes),
     ),
     Derive(
         id="4.2",
         title="Predicted bearing",
-        label="φ",
-        unit="°",
-        angle="deg",
-        periodic=True,  # a bearing: 413.13° points the same way
+        answer=number(label="φ", unit="°", angle="deg", periodic=True),
         vary=Vary(_predicted_bearing, *_SIGHTING,
                   valid=lambda p: _off_both_axes(p) and p["lx"] - p["x"] != p["ly"] - p["y"]),
     ),
     Derive(
         id="4.3",
         title="An entry of H",
-        label="H(1,1)",
+        answer=number(label="H(1,1)"),
         vary=Vary(_range_slope, *_SIGHTING,
                   valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(p["lx"] - p["x"]) != abs(p["ly"] - p["y"])),
     ),
     Derive(
         id="4.4",
         title="The innovation",
-        label="range innovation",
-        unit="m",
+        answer=number(label="range innovation", unit="m"),
         vary=Vary(_range_innovation,
                   Param("hr", 5, 3, 7, 0.1, unit=" m"), Param("hphi", _H_PRED[1], 0.2273, 1.4273, 0.1, unit=" rad"),
                   Param("zr", 4.8, 2.5, 7.5, 0.1, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),
@@ -328,17 +326,16 @@ EXERCISES = (
                    "$K = P/(P+R)$ never exceeds 1 while $P, R \\ge 0$; at $R = 0$ it is exactly 1."),
         ),
     ),
-    MatrixDerive(
+    Derive(
         id="4.7",
         title="The whole measurement Jacobian H",
-        label="H",
+        answer=matrix(label="H"),
         vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
     ),
-    FormulaDerive(
+    Derive(
         id="4.8",
         title="H(2,1) as a formula",
-        variables=("dx", "dy"),
-        domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)},
+        answer=formula(variables=("dx", "dy"), domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)}),
         vary=Vary(_jacobian_entry_formula, Choice("entry", "2,1", ("1,1", "1,2", "2,1", "2,2"))),
     ),
 )

@@ -2,9 +2,12 @@
 
 import math
 
-from ..answer_kinds.matrix import MatrixDerive
-from ..kinds.derive import Derive, Slip, fmt
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt, paren
 from ..reference.linalg import det2
 from ..reference.pose_graph import (
     edge_error,
@@ -15,7 +18,7 @@ from ..reference.pose_graph import (
     pose_graph_variables,
     relative_pose,
 )
-from ..variants import Param, Vary, num, paren
+from ..variants import Param, Vary
 from . import column, grid
 
 _X1 = (0.0, 0.0, 0.0)
@@ -31,14 +34,14 @@ _TENS = "twenty thirty forty fifty sixty seventy eighty ninety".split()
 
 def _prose(x: float) -> str:
     """A number in running text (outside math): a real minus sign."""
-    return num(x).replace("-", "−")
+    return fmt(x).replace("-", "−")
 
 
 def _times(r: float) -> str:
     """A ratio in words: ``ten`` for 10, ``twenty-five`` for 25, ``12.5`` when not whole."""
     k = round(r)
     if abs(r - k) > 1e-9 or not 0 <= k < 100:
-        return num(r)
+        return fmt(r)
     if k < 20:
         return _WORDS[k]
     tens, ones = divmod(k, 10)
@@ -47,7 +50,7 @@ def _times(r: float) -> str:
 
 def _two(x: float) -> str:
     """An entry to two decimals, as the answer line prints it (66.67, -33.33, 1000)."""
-    return num(round(x, 2))
+    return fmt(round(x, 2))
 
 
 def _pose_count(p):
@@ -60,8 +63,8 @@ def _pose_count(p):
             Slip(pose_graph_variables(n, pose_dof=6),
                  "Six per pose is the 3D case. A planar pose has only x, y and θ."),
         ),
-        "values": {"unknowns": num(pose_graph_variables(n, pose_dof=3)),
-                   "unknowns3d": num(pose_graph_variables(n, pose_dof=6))},
+        "values": {"unknowns": fmt(pose_graph_variables(n, pose_dof=3)),
+                   "unknowns3d": fmt(pose_graph_variables(n, pose_dof=6))},
     }
 
 
@@ -76,12 +79,12 @@ def _odometry_error(p):
             Slip(x2[0] - _X1[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
         ),
         "values": {
-            "dx": num(x2[0] - _X1[0]), "dy": num(x2[1] - _X1[1]), "dt": num(x2[2] - _X1[2]),
-            "ex": num(e[0]), "ey": num(e[1]), "et": num(e[2]),
+            "dx": fmt(x2[0] - _X1[0]), "dy": fmt(x2[1] - _X1[1]), "dt": fmt(x2[2] - _X1[2]),
+            "ex": fmt(e[0]), "ey": fmt(e[1]), "et": fmt(e[2]),
             "sign": "negative" if e[0] < 0 else "positive",
             "gap": _prose(abs(e[0])),
             "apart": "further apart" if e[0] < 0 else "closer together",
-            "exact": num(edge_error(_X1, x2, _Z12)[0]),
+            "exact": fmt(edge_error(_X1, x2, _Z12)[0]),
             "heading": _prose(x2[2]),
         },
     }
@@ -97,7 +100,7 @@ def _information_diagonal(p):
             Slip(s, "That is Σ(1,1), the covariance itself. The information matrix is its inverse, Ω = Σ⁻¹."),
             Slip(omega[2][2], "That is Ω(3,3), the heading entry. The (1,1) entry belongs to x."),
         ),
-        "values": {"wxy": num(omega[0][0]), "wt": num(omega[2][2]), "times": _times(omega[2][2] / omega[0][0])},
+        "values": {"wxy": fmt(omega[0][0]), "wt": fmt(omega[2][2]), "times": _times(omega[2][2] / omega[0][0])},
     }
 
 
@@ -117,8 +120,8 @@ def _hessian_size(p):
                  "That is the number of entries of H. The question asks for its side: one row per unknown."),
             Slip(gauss_newton_size(0, 6, m, 3), f"That counts the landmarks only. Add the {n} poses, 6 numbers each."),
         ),
-        "values": {"poses": num(gauss_newton_size(n, 6)), "marks": num(gauss_newton_size(0, 6, m, 3)),
-                   "size": num(size), "entries": f"{'over' if rest else 'exactly'} {million} million"},
+        "values": {"poses": fmt(gauss_newton_size(n, 6)), "marks": fmt(gauss_newton_size(0, 6, m, 3)),
+                   "size": fmt(size), "entries": f"{'over' if rest else 'exactly'} {million} million"},
     }
 
 
@@ -151,10 +154,10 @@ def _turned_edge_error(p):
                  "odometry reading z₁₂."),
         ),
         "values": {
-            "dx": num(dx), "dy": num(dy), "pdx": paren(dx), "pdy": paren(dy),
-            "hx": num(h[0]), "hy": num(h[1]), "ht": num(h[2]),
-            "ex": num(e[0]), "ey": num(e[1]), "et": num(e[2]),
-            "wx": num(world[0]), "wy": num(world[1]), "wt": num(world[2]),
+            "dx": fmt(dx), "dy": fmt(dy), "pdx": paren(dx), "pdy": paren(dy),
+            "hx": fmt(h[0]), "hy": fmt(h[1]), "ht": fmt(h[2]),
+            "ex": fmt(e[0]), "ey": fmt(e[1]), "et": fmt(e[2]),
+            "wx": fmt(world[0]), "wy": fmt(world[1]), "wt": fmt(world[2]),
             "motion": motion,
         },
     }
@@ -176,7 +179,7 @@ def _correlated_information(p):
         "key": grid(omega),
         "slips": (
             Slip(grid([[1 / sigma[i][i] if i == j else 0.0 for j in range(3)] for i in range(3)]),
-                 f"You inverted the diagonal alone. With the correlation {num(b)} between x and y, the 2×2 block has "
+                 f"You inverted the diagonal alone. With the correlation {fmt(b)} between x and y, the 2×2 block has "
                  "to be inverted as a whole: 1/det times [[d, −b], [−c, a]]."),
             Slip(grid([[1 / v if v else 0.0 for v in row] for row in sigma]),
                  "You took the reciprocal of each entry. The inverse of a matrix is not entry by entry: invert "
@@ -187,8 +190,8 @@ def _correlated_information(p):
                  "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal."),
         ),
         "values": {
-            "det": fmt(det, digits=4), "mb": num(-b),
-            "wt": num(omega[2][2]), "w11": _two(omega[0][0]), "inv_s": num(1 / s),
+            "det": fmt(det), "mb": fmt(-b),
+            "wt": fmt(omega[2][2]), "w11": _two(omega[0][0]), "inv_s": fmt(1 / s),
             "a11": _two(omega[0][0]), "a12": _two(omega[0][1]), "a22": _two(omega[1][1]), "a33": _two(omega[2][2]),
         },
     }
@@ -208,22 +211,20 @@ EXERCISES = (
     Derive(
         id="5.1",
         title="Count the unknowns",
-        label="number of optimisation variables",
-        unit="variables",
+        answer=number(label="number of optimisation variables", unit="variables"),
         vary=Vary(_pose_count, Param("n", 100, 10, 500, 10)),
     ),
     Derive(
         id="5.2",
         title="Odometry edge error",
-        label="x-component of e = z₁₂ − (x₂ − x₁)",
-        unit="m",
+        answer=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
         vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
                   Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"), Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
     ),
     Derive(
         id="5.3",
         title="Information matrix",
-        label="Ω(1,1), the (1,1) entry of Σ⁻¹",
+        answer=number(label="Ω(1,1), the (1,1) entry of Σ⁻¹"),
         vary=Vary(_information_diagonal, Param("s", 0.01, 0.01, 0.05, 0.01, avoid=(0.03,)),
                   Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,))),
     ),
@@ -249,21 +250,21 @@ EXERCISES = (
     Derive(
         id="5.5",
         title="Size of the Gauss–Newton system",
-        label="rows (= columns) of H",
+        answer=number(label="rows (= columns) of H"),
         vary=Vary(_hessian_size, Param("n", 1000, 500, 3000, 100), Param("m", 500, 100, 1000, 100),
                   valid=_distinct_sizes),
     ),
-    MatrixDerive(
+    Derive(
         id="5.6",
         title="Edge error from a turned pose",
-        label="e₁₂ = (eₓ, e_y, e_θ)ᵀ",
+        answer=matrix(label="e₁₂ = (eₓ, e_y, e_θ)ᵀ"),
         vary=Vary(_turned_edge_error, Param("x2", 1.95, 1.9, 2.1, 0.05, unit=" m"),
                   Param("y2", 2.1, 1.7, 2.4, 0.1, unit=" m"), Param("t2", 0.02, 0.01, 0.05, 0.01, unit=" rad")),
     ),
-    MatrixDerive(
+    Derive(
         id="5.7",
         title="Information from a correlated covariance",
-        label="Ω = Σ⁻¹",
+        answer=matrix(label="Ω = Σ⁻¹"),
         vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.01, avoid=(0.03,)),
                   Param("b", 0.01, 0.005, 0.045, 0.005), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
                   valid=_two_places_suffice),

@@ -2,10 +2,13 @@
 
 import math
 
-from ..answer_kinds.expression import FormulaDerive
 from ..kinds.build import Build
-from ..kinds.derive import Derive, Slip
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.expression import formula
+from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt, paren
 from ..reference.arm import (
     cos_elbow,
     forward_kinematics_2link,
@@ -13,14 +16,14 @@ from ..reference.arm import (
     is_reachable,
 )
 from ..tolerance import agrees
-from ..variants import Choice, Param, Vary, num, paren
+from ..variants import Choice, Param, Vary
 
 _T1, _T2 = math.radians(30), math.radians(45)
 
 
 def _four(x):
     """A value to four decimals as the text prints it: 0.8660, but an exact 0.5 stays 0.5."""
-    return num(x) if math.isclose(x, round(x, 4), abs_tol=1e-12) else f"{x:.4f}"
+    return fmt(x) if math.isclose(x, round(x, 4), abs_tol=1e-12) else f"{x:.4f}"
 
 
 def _signed4(x):
@@ -31,7 +34,7 @@ def _signed4(x):
 
 def _words(x):
     """A number in a message, with a true minus sign: −90."""
-    return num(x).replace("-", "−")
+    return fmt(x).replace("-", "−")
 
 
 def _apart(key, values, *, periodic=False):
@@ -52,7 +55,7 @@ def _straight_reach(p):
     return {
         "key": tip,
         "slips": (Slip(elbow, "That is the elbow, the end of link 1. Add link 2, which also points along x."),),
-        "values": {"tip": num(tip)},
+        "values": {"tip": fmt(tip)},
     }
 
 
@@ -67,15 +70,15 @@ def _bent_reach(p):
         "key": x,
         "slips": (
             Slip(forward_kinematics_2link(1, 1, r1, r2 - r1)[0],  # link 2 drawn at θ2 itself
-                 f"You used cos {num(t2)}° for link 2. Its direction is θ1 + θ2 = {num(t1 + t2)}°: joint angles "
+                 f"You used cos {fmt(t2)}° for link 2. Its direction is θ1 + θ2 = {fmt(t1 + t2)}°: joint angles "
                  "add up along the chain."),
             Slip(y, "That is the y-coordinate. For x use the cosines."),
             Slip(c12, f"That is link 2's share alone. Add link 1's L1·cos θ1 = {_four(c1)}."),
         ),
         "values": {
-            "t12": num(t1 + t2), "c1": _four(c1), "s1": _four(s1), "c12": _four(c12), "s12": _four(s12),
+            "t12": fmt(t1 + t2), "c1": _four(c1), "s1": _four(s1), "c12": _four(c12), "s12": _four(s12),
             "c12s": _signed4(c12), "s12s": _signed4(s12), "x": _four(x), "y": _four(y),
-            "r": num(round(math.hypot(x, y), 2)),
+            "r": fmt(round(math.hypot(x, y), 2)),
         },
     }
 
@@ -137,12 +140,12 @@ def _diagonal_ik(p):
         "periodic": asked == "θ1",  # a shoulder angle give or take a whole turn is the same pose
         "slips": tuple(slips),
         "values": {
-            "px": paren(x), "py": paren(y), "phi": num(phi), "t1d": num(t1d), "t1u": num(t1u),
-            "along": _ALONG[elbow], "ex": num(elbow[0]), "ey": num(elbow[1]),
+            "px": paren(x), "py": paren(y), "phi": fmt(phi), "t1d": fmt(t1d), "t1u": fmt(t1u),
+            "along": _ALONG[elbow], "ex": fmt(elbow[0]), "ey": fmt(elbow[1]),
             "rise": _HEADS[(x - elbow[0], y - elbow[1])],
-            "eux": num(elbow_up[0]), "euy": num(elbow_up[1]),
+            "eux": fmt(elbow_up[0]), "euy": fmt(elbow_up[1]),
             "asked_tex": "\\theta_2" if asked == "θ2" else "\\theta_1", "rel_tex": "\\ge" if down else "\\le",
-            "ans": num(key),
+            "ans": fmt(key),
         },
     }
 
@@ -184,28 +187,20 @@ EXERCISES = (
     Derive(
         id="6.1",
         title="FK of the straight arm",
-        label="x-coordinate of the end effector",
-        unit="m",
-        # both links keep one length L: the text writes L1 = L2 and the straight arm along x
+        answer=number(label="x-coordinate of the end effector", unit="m"),
         vary=Vary(_straight_reach, Param("L", 1, 0.5, 2.5, 0.1, unit=" m")),
     ),
     Derive(
         id="6.2",
         title="FK of a bent arm",
-        label="x-coordinate of the end effector",
-        unit="m",
-        # unit links (the derivation adds bare cosines); θ1 > 0 so that link 2 never points at θ2 itself
+        answer=number(label="x-coordinate of the end effector", unit="m"),
         vary=Vary(_bent_reach, Param("t1", 30, 5, 85, 5, unit="°"), Param("t2", 45, 5, 120, 5, unit="°"),
                   valid=_bent_reach_well_posed),
     ),
     Derive(
         id="6.3",
         title="IK: the elbow angle",
-        label="θ2 (elbow-down, θ2 ≥ 0)",
-        unit="°",
-        angle="deg",
-        # the derivation explains a right-angled elbow with unit links: the target stays on a diagonal,
-        # at √2; what varies is its quadrant, the joint asked and the elbow branch
+        answer=number(label="θ2 (elbow-down, θ2 ≥ 0)", unit="°", angle="deg"),
         vary=Vary(_diagonal_ik, Param("x", 1, -1, 1, 2), Param("y", 1, -1, 1, 2),
                   Choice("asked", "θ2", ("θ2", "θ1")), Choice("branch", "elbow-down", ("elbow-down", "elbow-up"))),
     ),
@@ -254,11 +249,13 @@ EXERCISES = (
         random_args=lambda rng: (rng.uniform(0.1, 3), rng.uniform(0.1, 3),
                                  rng.uniform(-math.pi, math.pi), rng.uniform(-math.pi, math.pi)),
     ),
-    FormulaDerive(
+    Derive(
         id="6.6",
         title="FK as a formula",
-        variables=("theta1", "theta2", "L1", "L2"),
-        domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
+        answer=formula(
+            variables=("theta1", "theta2", "L1", "L2"),
+            domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
+        ),
         vary=Vary(_fk_formula, Choice("coord", "x", ("x", "y"))),
     ),
 )

@@ -2,10 +2,13 @@
 
 import math
 
-from ..answer_kinds.expression import FormulaDerive
-from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.debug import Debug
-from ..kinds.derive import Derive, Slip
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.expression import formula
+from ..kinds.derive import Derive
+from ..number_format import fmt, paren, signed
 from ..reference.arm import (
     end_effector_velocity,
     forward_kinematics_2link,
@@ -14,7 +17,7 @@ from ..reference.arm import (
     most_manipulable_theta2,
     velocity_ratio,
 )
-from ..variants import Choice, Param, Vary, num, paren, signed
+from ..variants import Choice, Param, Vary
 from . import grid
 
 _J = jacobian_2link(1, 1, 0, math.pi / 2)  # exercise 7.1's Jacobian, as 7.2 and 7.7 quote it
@@ -34,7 +37,7 @@ def jacobian_2link(L1, L2, t1, t2):
 
 def _angle(deg: float) -> str:
     """An angle as the text writes it: ``0`` bare, any other with its degree sign."""
-    return "0" if deg == 0 else f"{num(deg)}°"
+    return "0" if deg == 0 else f"{fmt(deg)}°"
 
 
 def _sin_arg(deg: float) -> str:
@@ -49,7 +52,7 @@ def _jacobian_entry(p):
     J = jacobian_2link(L, L, math.radians(t1), math.radians(t2))
     s1, c1 = math.sin(math.radians(t1)), math.cos(math.radians(t1))
     slips = [Slip(-J[0][0], "Check the sign, and the entry: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), "
-                  f"negative here (the derivative of cos is −sin). +{num(J[1][0])} is J(2,1), the derivative of y.")]
+                  f"negative here (the derivative of cos is −sin). +{fmt(J[1][0])} is J(2,1), the derivative of y.")]
     if t1 != 0:  # −J(1,1) and J(2,1) part ways: each slip gets its own message
         slips = [
             Slip(-J[0][0], "Check the sign: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), negative here "
@@ -62,10 +65,10 @@ def _jacobian_entry(p):
         "key": J[0][0],
         "slips": tuple(slips),
         "values": {
-            "deg1": "" if t1 == 0 else "°", "t2": num(t2), "a1": _sin_arg(t1), "s1": num(s1),
-            "m1": num(-L * s1), "l1c": num(L * c1),
-            "j11": num(J[0][0]), "j12": num(J[0][1]), "j21": num(J[1][0]),
-            "det": num(jacobian_det(L, L, math.radians(t1), math.radians(t2))),
+            "deg1": "" if t1 == 0 else "°", "t2": fmt(t2), "a1": _sin_arg(t1), "s1": fmt(s1),
+            "m1": fmt(-L * s1), "l1c": fmt(L * c1),
+            "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]),
+            "det": fmt(jacobian_det(L, L, math.radians(t1), math.radians(t2))),
         },
     }
 
@@ -75,15 +78,15 @@ def _tip_velocity(p):
     w = p["w1"]
     v = end_effector_velocity(_J, [w, 0])
     speed = math.hypot(*v)
-    root = "\\sqrt2" if abs(w) == 1 else f"{num(abs(w))}\\sqrt2"
+    root = "\\sqrt2" if abs(w) == 1 else f"{fmt(abs(w))}\\sqrt2"
     return {
         "key": v[0],
         "slips": (
             Slip(v[1], "That is ẏ, from the second row of J. ẋ comes from the first row."),
             Slip(end_effector_velocity(_J, [w, w])[0], "θ̇2 is 0, so the second column of J contributes nothing."),
         ),
-        "values": {"pw": paren(w), "col1": "column 1" if w == 1 else f"{num(w).replace('-', '−')} times column 1", "xd": num(v[0]), "yd": num(v[1]),
-                   "j11": num(_J[0][0]), "j12": num(_J[0][1]), "pj12": paren(_J[0][1]), "j21": num(_J[1][0]), "j22": num(_J[1][1]),
+        "values": {"pw": paren(w), "col1": "column 1" if w == 1 else f"{fmt(w).replace('-', '−')} times column 1", "xd": fmt(v[0]), "yd": fmt(v[1]),
+                   "j11": fmt(_J[0][0]), "j12": fmt(_J[0][1]), "pj12": paren(_J[0][1]), "j21": fmt(_J[1][0]), "j22": fmt(_J[1][1]),
                    "speed": f"{root} \\approx {speed:.2f}"},
     }
 
@@ -113,9 +116,9 @@ def _best_elbow(p):
             Slip(180.0, "At θ2 = 180° the arm is folded back and w = 0: another singularity."),
             Slip(wmax, "That is the largest value of w. The question asks for the angle where it happens."),
         ),
-        "values": {"w2": "" if L == 1 else num(L * L), "wmax": num(wmax),
-                   "j11": num(J[0][0]), "j12": num(J[0][1]), "j21": num(J[1][0]), "j22": num(J[1][1]),
-                   "ratio": num(round(velocity_ratio(J), 1))},
+        "values": {"w2": "" if L == 1 else fmt(L * L), "wmax": fmt(wmax),
+                   "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
+                   "ratio": fmt(round(velocity_ratio(J), 1))},
     }
 
 
@@ -125,7 +128,7 @@ def _link2_direction(deg: float) -> str:
     d = 180 if d == -180 else d
     words = {90: "straight up", -90: "straight down", 0: "straight along the positive x-axis",
              180: "straight along the negative x-axis"}
-    return words.get(d, f"at {num(d).replace('-', '−')}° from the x-axis")
+    return words.get(d, f"at {fmt(d).replace('-', '−')}° from the x-axis")
 
 
 def _unit_jacobian(p):
@@ -140,7 +143,7 @@ def _unit_jacobian(p):
         "slips": (
             Slip(grid([J[0], [J[1][0], 1 * s12]]),
                  "J(2,2) uses sin(θ1 + θ2): that is the bug of exercise 7.5. ∂/∂θ2 of L2 sin(θ1 + θ2) is "
-                 f"L2 cos(θ1 + θ2) = cos {num(t1 + t2)}° = {num(c12)}."),
+                 f"L2 cos(θ1 + θ2) = cos {fmt(t1 + t2)}° = {fmt(c12)}."),
             Slip(grid(jacobian_2link(1, 1, r2, r1)),
                  f"That is J at θ = ({_angle(t2)}, {_angle(t1)}): the two joint angles are swapped. "
                  f"Here θ1 = {_angle(t1)} and θ2 = {_angle(t2)}."),
@@ -148,12 +151,12 @@ def _unit_jacobian(p):
                  f"That is J of the straight arm, θ2 = 0. Put θ2 = {_angle(t2)} into sin(θ1 + θ2) and cos(θ1 + θ2)."),
         ),
         "values": {
-            "deg1": "" if t1 == 0 else "°", "t12": num(t1 + t2),
-            "s1": num(s1), "c1": num(c1), "s12": num(s12), "c12": num(c12),
-            "a11": f"-{num(s1)}" if s1 >= 0 else num(-s1), "b11": signed(-s12), "b21": signed(c12),
-            "j11": num(J[0][0]), "j12": num(J[0][1]), "j21": num(J[1][0]), "j22": num(J[1][1]),
-            "x": num(x), "y": num(y), "link2": _link2_direction(t1 + t2),
-            "det": num(jacobian_det(1, 1, r1, r2)),
+            "deg1": "" if t1 == 0 else "°", "t12": fmt(t1 + t2),
+            "s1": fmt(s1), "c1": fmt(c1), "s12": fmt(s12), "c12": fmt(c12),
+            "a11": f"-{fmt(s1)}" if s1 >= 0 else fmt(-s1), "b11": signed(-s12), "b21": signed(c12),
+            "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
+            "x": fmt(x), "y": fmt(y), "link2": _link2_direction(t1 + t2),
+            "det": fmt(jacobian_det(1, 1, r1, r2)),
             "as71": " as in exercise 7.1" if (t1, t2) == (0, 90) else " a new pose",
         },
     }
@@ -234,7 +237,7 @@ def _jacobian_formula(p):
             "equals": equals,
             "turning": "the base" if joint == 1 else "the elbow",
             "ref71": "Exercise 7.1 is this formula" if (r, c) == (1, 1) else "Exercise 7.1 works this formula out",
-            "at71": num(at71),
+            "at71": fmt(at71),
             "formula": tex.format(s=" "), "formula2": tex.format(s=""),
         },
     }
@@ -244,28 +247,25 @@ EXERCISES = (
     Derive(
         id="7.1",
         title="Jacobian at θ = (0, 90°)",
-        label="J(1,1)",
+        answer=number(label="J(1,1)"),
         vary=Vary(_jacobian_entry, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("t1", 0, -45, 45, 5, unit="°")),
     ),
     Derive(
         id="7.2",
         title="End-effector velocity",
-        label="ẋ",
-        unit="m/s",
+        answer=number(label="ẋ", unit="m/s"),
         vary=Vary(_tip_velocity, Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))),
     ),
     Derive(
         id="7.3",
         title="Spot the singularity",
-        label="det J at θ2 = 0",
+        answer=number(label="det J at θ2 = 0"),
         vary=Vary(_straight_arm_det, Param("L", 1, 0.5, 2.5, 0.1, unit=" m", avoid=(2,))),
     ),
     Derive(
         id="7.4",
         title="Best elbow angle",
-        label="θ2 that maximises w = |det J|",
-        unit="°",
-        angle="deg",
+        answer=number(label="θ2 that maximises w = |det J|", unit="°", angle="deg"),
         vary=Vary(_best_elbow, Param("L", 1, 0.5, 2, 0.1, unit=" m")),
     ),
     Debug(
@@ -290,18 +290,20 @@ EXERCISES = (
         reference=jacobian_2link,
         cases=((1, 1, 0.0, math.pi / 2), (2, 1, 0.3, 0.4), (1, 1, 0.5, -1.2)),
     ),
-    MatrixDerive(
+    Derive(
         id="7.6",
         title="The whole Jacobian at θ = (0, 90°)",
-        label="J",
+        answer=matrix(label="J"),
         vary=Vary(_unit_jacobian, Param("t1", 0, -60, 60, 5, unit="°"), Param("t2", 90, -150, 150, 5, unit="°", avoid=(0,)),
                   valid=_well_posed_jacobian),
     ),
-    FormulaDerive(
+    Derive(
         id="7.7",
         title="J(1,1) as a formula",
-        variables=("theta1", "theta2", "L1", "L2"),
-        domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
+        answer=formula(
+            variables=("theta1", "theta2", "L1", "L2"),
+            domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
+        ),
         vary=Vary(_jacobian_formula, Choice("entry", "(1,1)", ("(1,1)", "(1,2)", "(2,1)", "(2,2)"))),
     ),
 )

@@ -2,18 +2,21 @@
 
 import math
 
-from ..answer_kinds.matrix import MatrixDerive
 from ..kinds.build import Build
-from ..kinds.derive import Derive, Slip
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
+from ..number_format import fmt, paren, signed
 from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step, pid_terms
-from ..variants import Choice, Param, Vary, num, paren, signed
+from ..variants import Choice, Param, Vary
 from . import column
 
 
 def _minus(x):
     """A number in a message, with a typographic minus: −1."""
-    return num(x).replace("-", "−")
+    return fmt(x).replace("-", "−")
 
 
 def _p_step(p):
@@ -24,11 +27,11 @@ def _p_step(p):
         "key": u,
         "slips": (
             Slip(p_term(p["actual"] - p["target"], p["Kp"]),
-                 f"Sign: the error is target − actual = {'+' if e > 0 else '−'}{num(abs(e))}, so the push is "
+                 f"Sign: the error is target − actual = {'+' if e > 0 else '−'}{fmt(abs(e))}, so the push is "
                  f"{'positive' if e > 0 else 'negative'}, toward the target."),
             Slip(e, "That is the error e. The output multiplies it by Kp."),
         ),
-        "values": {"e": num(e), "pe": paren(e), "u": num(u)},
+        "values": {"e": fmt(e), "pe": paren(e), "u": fmt(u)},
     }
 
 
@@ -46,7 +49,7 @@ def _three_steps(p):
     P, I, D = p_term(errors[2], p["Kp"]), i_term(errors, p["Ki"], p["dt"]), d_term(errors[2], errors[1], p["Kd"], p["dt"])
     return {
         "errors": errors, "gains": gains, "P": P, "I": I, "D": D,
-        "values": {"P": num(P), "I": num(I), "D": num(D), "S": num(sum(errors)), "drop": num(errors[1] - errors[2])},
+        "values": {"P": fmt(P), "I": fmt(I), "D": fmt(D), "S": fmt(sum(errors)), "drop": fmt(errors[1] - errors[2])},
     }
 
 
@@ -79,19 +82,19 @@ def _pid_output(p):
     t = _three_steps(p)
     (e0, e1, e2), P, I, D, Ki, dt = t["errors"], t["P"], t["I"], t["D"], p["Ki"], p["dt"]
     u = pid_sequence(t["errors"], **t["gains"])[2]
-    times = f", {num(Ki)} × {num(e0 + e1 + e2)}." if dt == 1 else \
-        f", times dt: {num(Ki)} × {num(e0 + e1 + e2)} × {num(dt)}."
+    times = f", {fmt(Ki)} × {fmt(e0 + e1 + e2)}." if dt == 1 else \
+        f", times dt: {fmt(Ki)} × {fmt(e0 + e1 + e2)} × {fmt(dt)}."
     return {
         "key": u,
         "slips": (
-            Slip(P + I, f"You left out the D term. The error fell from {num(e1)} to {num(e2)}, so "
+            Slip(P + I, f"You left out the D term. The error fell from {fmt(e1)} to {fmt(e2)}, so "
                         f"Kd·(e[2] − e[1])/dt = {_minus(D)}."),
             Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times),
             Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
             Slip(P + Ki * e2 * dt + D,
-                 f"The I term integrates every error so far ({num(e0)} + {num(e1)} + {num(e2)}), not only the current one."),
+                 f"The I term integrates every error so far ({fmt(e0)} + {fmt(e1)} + {fmt(e2)}), not only the current one."),
         ),
-        "values": {**t["values"], "Ds": signed(D), "u": num(u), "pile": num((e0 + e1 + e2) * dt),
+        "values": {**t["values"], "Ds": signed(D), "u": fmt(u), "pile": fmt((e0 + e1 + e2) * dt),
                    "more": ("a little", "as much again", "even more")[_against(I, P) + 1]},
     }
 
@@ -103,12 +106,12 @@ def _falling_error_d_term(p):
     return {
         "key": D,
         "slips": (
-            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {num(ek)} − {num(ep)} = {_minus(ek - ep)}. "
+            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {_minus(ek - ep)}. "
                      "A falling error gives a negative D."),
-            Slip(Kd * (ek - ep), f"You forgot to divide by dt = {num(dt)}."),
+            Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}."),
             Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second."),
         ),
-        "values": {"de": num(ek - ep), "D": num(D), "drop": num(ep - ek), "rate": num((ek - ep) / dt),
+        "values": {"de": fmt(ek - ep), "D": fmt(D), "drop": fmt(ep - ek), "rate": fmt((ek - ep) / dt),
                    "span": _SPANS[dt]},
     }
 
@@ -139,14 +142,14 @@ def _pid_terms(p):
         "key": column(pid_terms(t["errors"], **t["gains"])),
         "slips": (
             Slip(column((P, p["Ki"] * e2 * p["dt"], D)),
-                 f"The I term integrates every error so far, {num(e0)} + {num(e1)} + {num(e2)}, not only the current one."),
+                 f"The I term integrates every error so far, {fmt(e0)} + {fmt(e1)} + {fmt(e2)}, not only the current one."),
             Slip(column((P, I, -D)),
                  "The D term has the wrong sign: it is Kd·(e[2] − e[1])/dt, new minus old, and the error is "
                  "shrinking."),
             Slip(column((P, i_term(t["errors"][:2], p["Ki"], p["dt"]), D)),
-                 f"The I term stops one step short: the integral includes the current error e[2] = {num(e2)}."),
+                 f"The I term stops one step short: the integral includes the current error e[2] = {fmt(e2)}."),
         ),
-        "values": {**t["values"], "u": num(pid_sequence(t["errors"], **t["gains"])[2]), "push": push,
+        "values": {**t["values"], "u": fmt(pid_sequence(t["errors"], **t["gains"])[2]), "push": push,
                    "lead": "Take exercise 8.2 again" if at_default else "Take three PID steps",
                    "total": "exercise 8.2's" if at_default else "the output"},
     }
@@ -156,7 +159,7 @@ EXERCISES = (
     Derive(
         id="8.1",
         title="One step of P control",
-        label="control output u",
+        answer=number(label="control output u"),
         vary=Vary(_p_step, Param("target", 10, 0, 20, 1), Param("actual", 7, 0, 20, 1),
                   Param("Kp", 2, 0.5, 5, 0.5, avoid=(1,)),
                   valid=lambda p: p["target"] != p["actual"]),
@@ -164,7 +167,7 @@ EXERCISES = (
     Derive(
         id="8.2",
         title="PID over three steps",
-        label="u[2]",
+        answer=number(label="u[2]"),
         vary=Vary(_pid_output, *_THREE_STEPS, valid=_converging),
     ),
     Trace(
@@ -237,14 +240,14 @@ EXERCISES = (
     Derive(
         id="8.6",
         title="The sign of the D term",
-        label="D term",
+        answer=number(label="D term"),
         vary=Vary(_falling_error_d_term, Param("ek", 2, 0, 8, 1), Param("ep", 5, 1, 10, 1), Param("Kd", 1, 0.5, 3, 0.5),
                   Choice("dt", 0.1, tuple(_SPANS)), valid=_d_is_a_brake),
     ),
-    MatrixDerive(
+    Derive(
         id="8.7",
         title="The three terms, one by one",
-        label="(P, I, D)ᵀ at step 2",
+        answer=matrix(label="(P, I, D)ᵀ at step 2"),
         vary=Vary(_pid_terms, *_THREE_STEPS, valid=_falling_fast),
     ),
 )

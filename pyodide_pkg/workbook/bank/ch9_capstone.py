@@ -14,12 +14,15 @@ numbers are that exercise's own.
 import math
 from fractions import Fraction
 
-from ..answer_kinds.matrix import MatrixDerive
-from ..kinds.derive import Derive, Slip
+from ..answer_kinds.base import Slip
+from ..answer_kinds.number import number
+from ..answer_kinds.matrix import matrix
+from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
+from ..number_format import fmt
 from ..reference.ekf import ekf_update, motion_jacobian, motion_model, range_bearing
 from ..reference.pid import p_term
-from ..variants import Choice, Param, Vary, num
+from ..variants import Choice, Param, Vary
 from . import column
 
 _START = (5.0, 3.0, math.pi / 6)
@@ -47,7 +50,7 @@ def dec(x: float) -> str:
     ('3.5', '5.8660', '-0.1660', '0.7143')
     """
     if _exact4(x):
-        return num(x)
+        return fmt(x)
     s = f"{x:.4f}"
     return "0.0000" if s == "-0.0000" else s
 
@@ -70,7 +73,7 @@ def approx(x: float) -> str:
     >>> approx(0.5000000000000001), approx(math.cos(math.radians(25)))
     ('= 0.5', '\\\\approx 0.9063')
     """
-    return f"= {num(x)}" if _exact4(x) else f"\\approx {dec(x)}"
+    return f"= {fmt(x)}" if _exact4(x) else f"\\approx {dec(x)}"
 
 
 def dec_paren(x: float) -> str:
@@ -117,7 +120,7 @@ def _predicted_pose(p):
     swapped = (x + v * math.sin(th) * dt, y + v * math.cos(th) * dt)  # the slip: sin and cos swapped
     moved_x, moved_y = pred[0] - x, pred[1] - y
     values = {
-        "deg": num(deg),
+        "deg": fmt(deg),
         "cos": f"= \\sqrt3/2 \\approx {dec(math.cos(th))}" if deg == 30 else approx(math.cos(th)),
         "dx": dec(moved_x), "dy": dec(moved_y),
         "xp": dec(pred[0]), "yp": dec(pred[1]),
@@ -161,7 +164,7 @@ def _new_state(p):
             Slip(column(turned[:2] + (pred[2],)), _turned_first(p)),
             Slip(column(swapped + (pred[2],)), "sin and cos are swapped: x moves by v cos θ dt and y by v sin θ dt."),
             Slip(column(pred[:2] + (_heading(p)[1],)),
-                 f"The heading did not change: θ′ = θ + ω dt, and ω = {num(p['omega'])} rad/s."),
+                 f"The heading did not change: θ′ = θ + ω dt, and ω = {fmt(p['omega'])} rad/s."),
         ),
         "values": values,
     }
@@ -209,7 +212,7 @@ def _predicted_range(p):
         ),
         "values": {
             "dx": dec(dx), "dy": dec(dy), "dx2": dec(dx * dx), "dy2": dec(dy * dy), "q": dec(dx * dx + dy * dy),
-            "r": dec(r), "reading": num(reading), "innovation": f"{reading - r:.2f}",
+            "r": dec(r), "reading": fmt(reading), "innovation": f"{reading - r:.2f}",
         },
     }
 
@@ -230,12 +233,12 @@ def _fused(p):
         "key": x_upd,
         "slips": (
             Slip(ekf_update(x, R, z, P)[0],
-                 f"You swapped P and R: K = P/(P + R) = {num(P)}/{num(P + R)}, "
+                 f"You swapped P and R: K = P/(P + R) = {fmt(P)}/{fmt(P + R)}, "
                  "the share of trust given to the measurement."),
             Slip(x_upd - x, "That is the correction K(z − x). Add it to the prediction."),
         ),
         "values": {
-            "S": num(P + R), "K": dec(K), "innov": dec(z - x), "innov_p": dec_paren(z - x),
+            "S": fmt(P + R), "K": dec(K), "innov": dec(z - x), "innov_p": dec_paren(z - x),
             "corr": dec_signed(K * (z - x)), "xu": dec(x_upd), "pct": f"{round(100 * K)}",
         },
     }
@@ -255,7 +258,7 @@ def _updated_variance(p):
         "key": P_upd,
         "slips": (
             Slip(K * P, "That is K·P, the variance removed. What is left is (1 − K)·P."),
-            Slip(1 - K, f"That is 1 − K. Multiply it by P = {num(P)}."),
+            Slip(1 - K, f"That is 1 − K. Multiply it by P = {fmt(P)}."),
         ),
         "values": {
             "from94": "from exercise 9.4" if (P, K) == (_P, _K) else "from a scalar Kalman update",
@@ -272,7 +275,7 @@ def _command(p):
     return {
         "key": u,
         "slips": (
-            Slip(e, f"That is the position error. The command multiplies it by Kp = {num(Kp)}."),
+            Slip(e, f"That is the position error. The command multiplies it by Kp = {fmt(Kp)}."),
             Slip(-u, "Sign: the error is target − position, positive here, so the robot drives forward."),
         ),
         "values": {"e": dec(e), "u": dec(u)},
@@ -302,51 +305,47 @@ EXERCISES = (
     Derive(
         id="9.2",
         title="The full predict step",
-        label="x′ after one step",
-        unit="m",
+        answer=number(label="x′ after one step", unit="m"),
         vary=Vary(_new_x, *_pose_params(), valid=lambda p: _slips_apart(_new_x(p))),
     ),
     Derive(
         id="9.3",
         title="Predicted range to a landmark",
-        label="predicted range r",
-        unit="m",
+        answer=number(label="predicted range r", unit="m"),
         vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1), valid=_range_well_posed),
     ),
     Derive(
         id="9.4",
         title="Fuse the measurement",
-        label="updated x⁺",
-        unit="m",
+        answer=number(label="updated x⁺", unit="m"),
         vary=Vary(_fused, Param("P", _P, 0.2, 1, 0.1), Param("z", _Z, 4.8, 6.9, 0.1, unit=" m"),
                   Param("R", _R, 0.1, 0.9, 0.1), valid=_fused_well_posed),
     ),
     Derive(
         id="9.5",
         title="Updated covariance",
-        label="P⁺ = (1 − K)·P",
+        answer=number(label="P⁺ = (1 − K)·P"),
         vary=Vary(_updated_variance, Param("P", _P, 0.1, 0.9, 0.1), Param("K", _K, 0.1, 0.9, 0.05, avoid=(0.5,)),
                   valid=lambda p: _slips_apart(_updated_variance(p))),
     ),
     Derive(
         id="9.6",
         title="Velocity command",
-        label="commanded speed u",
-        unit="m/s",
+        answer=number(label="commanded speed u", unit="m/s"),
         vary=Vary(_command, Param("target", _TARGET, 6, 15, 1, unit=" m"), Param("Kp", _KP, 0.1, 1.5, 0.1, avoid=(1,)),
                   valid=lambda p: _slips_apart(_command(p))),
     ),
     Derive(
         id="9.7",
         title="An entry of the Jacobian F",
-        label="F(2,3)",
+        answer=number(label="F(2,3)"),
         vary=Vary(_jacobian_entry, Choice(*_HEADING), Param("v", _V, 0.5, 2, 0.1, unit=" m/s"),
                   Param("dt", _DT, 0.5, 2, 0.5, unit=" s"), valid=lambda p: _slips_apart(_jacobian_entry(p))),
     ),
-    MatrixDerive(
+    Derive(
         id="9.8",
         title="The whole predicted state",
-        label="x′ = (x′, y′, θ′)ᵀ",
+        answer=matrix(label="x′ = (x′, y′, θ′)ᵀ"),
         vary=Vary(_new_state, *_pose_params(), valid=_states_apart),
     ),
 )

@@ -13,7 +13,7 @@ is an :class:`~.grammar.InvalidAnswer` with a message for the learner.
 >>> evaluate(parse_tree("1 m + 20"))
 Traceback (most recent call last):
 ...
-workbook.answers.InvalidAnswer: Give every term its unit, or none: 1 m + 20 cm, not 1 m + 20.
+workbook.expr.InvalidAnswer: Give every term its unit, or none: 1 m + 20 cm, not 1 m + 20.
 """
 
 from __future__ import annotations

@@ -4,7 +4,7 @@
 formula over some variables) and words the message when a name is unknown.
 :class:`InvalidAnswer` is the one error of the expression reader; its public
 home is :mod:`workbook.answers`, so tracebacks name it
-``workbook.answers.InvalidAnswer``.
+``workbook.expr.InvalidAnswer``.
 
 >>> SCALAR.kind("cos"), SCALAR.kind("pi"), SCALAR.kind("km"), SCALAR.kind("x")
 ('func', 'const', 'unit', None)
@@ -32,8 +32,8 @@ class InvalidAnswer(ValueError):
     """The input could not be read as one number; the message says why."""
 
 
-# Its public home: tracebacks and doctests name it workbook.answers.InvalidAnswer, as they always have.
-InvalidAnswer.__module__ = "workbook.answers"
+# Its public home: tracebacks and doctests name it workbook.expr.InvalidAnswer.
+InvalidAnswer.__module__ = "workbook.expr"
 
 
 FUNCTIONS: dict[str, tuple[int, Callable[..., float]]] = {

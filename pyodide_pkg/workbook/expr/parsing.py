@@ -26,7 +26,7 @@ from .grammar import (FUNCTIONS, MAX_DEPTH, MAX_LENGTH, MAX_NODES, SCALAR, Gramm
 from .tokens import check_commas, normalise, tokenize
 
 _MAX_RECURSION = 60  # unary minus chains, powers of powers: far below Python's limit
-_PREFIX = re.compile(r"\s*[^\W\d][\w']*\s*=\s*")
+PREFIX = re.compile(r"\s*[^\W\d][\w']*\s*=\s*")
 
 
 class Parser:
@@ -254,7 +254,7 @@ def parse_tree(text: str, grammar: Grammar = SCALAR) -> tuple:
     if len(text) > MAX_LENGTH:
         raise InvalidAnswer(f"That answer is too long (more than {MAX_LENGTH} characters); one number is expected.")
     s = normalise(text)
-    m = _PREFIX.match(s)
+    m = PREFIX.match(s)
     if m and "=" not in s[m.end():]:
         s = s[m.end():].strip()
         if not s:

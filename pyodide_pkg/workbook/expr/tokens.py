@@ -17,6 +17,7 @@ import re
 import unicodedata
 
 from .grammar import ALIASES, GREEK, Grammar, InvalidAnswer, not_an_expression
+from .latex_input import from_latex
 
 _DEGREE_LIKE = str.maketrans({"\u00ba": "°", "\u02da": "°", "\u2218": "°", "\u00b0": "°"})
 _FRACTIONS = {"\u00bd": "(1/2)", "\u00bc": "(1/4)", "\u00be": "(3/4)", "\u2153": "(1/3)", "\u2154": "(2/3)"}
@@ -25,7 +26,8 @@ _SUPER_RUN = re.compile("[⁰¹²³⁴⁵⁶⁷⁸⁹⁻⁺]+")
 _AFTER_NFKC = str.maketrans({
     "\u2010": "-", "\u2011": "-", "\u2012": "-", "\u2013": "-", "\u2014": "-", "\u2212": "-",
     "\ufe63": "-", "\uff0d": "-", "\u00d7": "*", "\u22c5": "*", "\u00b7": "*", "\u2217": "*",
-    "\u00f7": "/", "\u2044": "/", "\u2215": "/", "\u2248": "=",
+    "\u00f7": "/", "\u2044": "/", "\u2215": "/", "\u2248": "=", "\u2219": "*", "\u2027": "*",
+    "\u2206": "Δ", "\u2032": "'", "\u02b9": "'", "\u2019": "'", "\u2033": "''",
 })
 _TOKEN = re.compile(r"""\s*(?:
     (?P<num>(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)
@@ -54,11 +56,13 @@ def canonical_name(name: str) -> str:
 
 
 def normalise(text: str) -> str:
-    """Unify the many ways of typing the same symbols (minus signs, °, ×, superscripts).
+    """Unify the many ways of typing the same symbols (minus signs, °, ×, superscripts, LaTeX).
 
-    >>> normalise("θ₂ = −45º × 2²")
-    'θ2 = -45° * 2^(2)'
+    >>> normalise("θ₂ = −45º × 2²"), normalise("∆t′"), normalise(r"\\frac{1}{2}")
+    ('θ2 = -45° * 2^(2)', "Δt'", '((1)/(2))')
     """
+    if "\\" in text:
+        text = from_latex(text)
     if text.replace("°", "").isascii():  # nothing below changes ASCII text
         return text.strip()
     s = text.translate(_DEGREE_LIKE)
@@ -77,7 +81,7 @@ def check_commas(s: str) -> None:
     >>> check_commas("2,5")
     Traceback (most recent call last):
     ...
-    workbook.answers.InvalidAnswer: Use a dot for decimals: write 2.5, not 2,5.
+    workbook.expr.InvalidAnswer: Use a dot for decimals: write 2.5, not 2,5.
     """
     m = _COMMA_NUMBER.fullmatch(s)
     if not m:

@@ -4,8 +4,24 @@ import math
 
 import pytest
 
-from workbook.answers import InvalidAnswer
-from workbook.shaped import InvalidEntries, parse_entries, parse_pasted, whole_matrix_slips, wrong_entries
+from workbook.answer_kinds.matrix import matrix
+from workbook.answer_kinds.matrix.slips import whole_matrix_slips
+from workbook.expr import InvalidAnswer, split_matrix as parse_pasted
+
+
+def parse_entries(grid, shape):
+    """The entries' values, as the matrix kind reads them (InvalidAnswer if any cannot be read)."""
+    ans = matrix().build("t.1", key=tuple(tuple(0.0 for _ in range(shape[1])) for _ in range(shape[0])))
+    out = ans.read(grid)
+    if "message" in out:
+        raise InvalidAnswer(out["message"])
+    return out["value"]
+
+
+def wrong_entries(got, key):
+    ans = matrix().build("t.1", key=tuple(map(tuple, key)))
+    verdict = ans.check([[repr(v) for v in row] for row in got])
+    return [tuple(p) for p in verdict.data.get("wrong", [])]
 
 ROT90 = [["0", "-1"], ["1", "0"]]
 
@@ -68,30 +84,28 @@ def test_parse_entries_reads_expressions_and_units():
     got = parse_entries(grid, (2, 2))
     c, s = 0.5, math.sqrt(3) / 2
     assert all(math.isclose(a, b, abs_tol=1e-12) for ra, rb in zip(got, [[c, -s], [s, c]]) for a, b in zip(ra, rb))
-    assert parse_entries([["20 cm"], ["1 m"]], (2, 1), expect="m") == [[0.2], [1.0]]
+    metres = matrix(unit="m").build("t.1", key=((0.2,), (1.0,)))
+    assert metres.read([["20 cm"], ["1 m"]]) == {"value": [[0.2], [1.0]]}
 
 
-def test_parse_entries_collects_every_problem():
-    with pytest.raises(InvalidEntries) as err:
-        parse_entries([["1", ""], ["", "2 s"], ["x", "2,5"]], (3, 2), expect="m")
-    e = err.value
-    assert isinstance(e, InvalidAnswer)
-    assert e.positions == [(1, 2), (2, 1), (2, 2), (3, 1), (3, 2)]
-    message = str(e)
-    assert "Entries (1,2), (2,1) are empty." in message
-    assert "Entry (2,2): This answer is a length in metres; 2 s is a time." in message
-    assert "Entry (3,1): Unknown name “x”" in message
-    assert "Entry (3,2): Use a dot for decimals" in message
+def test_every_unreadable_entry_is_reported_at_once():
+    ans = matrix(unit="m").build("t.1", key=((1.0, 1.0), (1.0, 1.0), (1.0, 1.0)))
+    verdict = ans.check([["1", ""], ["", "2 s"], ["x", "2,5"]])
+    assert verdict.status == "invalid"
+    assert verdict.data["invalid"] == [[1, 2], [2, 1], [2, 2], [3, 1], [3, 2]]
+    assert "Entries (1,2), (2,1) are empty." in verdict.message
+    assert "Entry (2,2): This answer is a length in metres; 2 s is a time." in verdict.message
+    assert "Entry (3,1): Unknown name “x”" in verdict.message
+    assert "Entry (3,2): Use a dot for decimals" in verdict.message
 
 
 def test_one_empty_entry():
-    with pytest.raises(InvalidEntries, match=r"^Entry \(2,1\) is empty\.$") as err:
-        parse_entries([["1", "0"], [" ", "1"]], (2, 2))
-    assert err.value.positions == [(2, 1)]
+    verdict = matrix().build("t.1", key=((1.0, 0.0), (0.0, 1.0))).check([["1", "0"], [" ", "1"]])
+    assert verdict.message == "Entry (2,1) is empty." and verdict.data["invalid"] == [[2, 1]]
 
 
-def test_parse_entries_checks_the_shape():
-    with pytest.raises(InvalidAnswer, match="2×2 matrix"):
+def test_a_grid_of_the_wrong_shape_is_refused():
+    with pytest.raises(InvalidAnswer, match="2×2"):
         parse_entries([["1", "2"]], (2, 2))
 
 

@@ -1,4 +1,4 @@
-"""Read a learner's typed answer: a number, a small math expression, with units.
+"""Read a learner's typed answer as a quantity: a number, a small math expression, with units.
 
 The text is normalised (unicode minus and degree signs, ×, π, √, superscripts,
 subscripts, a leading ``θ2 =``), split into tokens and parsed by a small
@@ -6,14 +6,11 @@ recursive-descent parser into a tree of tuples. Nothing is ever passed to
 ``eval``: only the nodes of :mod:`workbook.expr.parsing` exist, limits on
 length, nesting, node count and exponents are checked while parsing, and all
 arithmetic is done in floats, so no input can run for long or use much memory.
-:mod:`workbook.formula` uses the same parser with variables.
+:mod:`.formula` uses the same parser with variables.
 
-This module is the public entry: :func:`parse_answer`, :func:`parse_quantity`,
-:class:`Answer` and :class:`InvalidAnswer`. The steps live in
-:mod:`workbook.expr`: :mod:`~workbook.expr.grammar` (names, functions,
-limits), :mod:`~workbook.expr.tokens` (text to tokens),
-:mod:`~workbook.expr.parsing` (tokens to a tree) and
-:mod:`~workbook.expr.evaluate` (a tree to a value with its dimension).
+:func:`read_quantity` is what marking uses: the value in the unit asked for,
+with how precisely it was typed (:class:`Reading`) and, for ``cos(90)``, the
+value with the bare angle read as degrees (:mod:`.degrees`).
 
 Units are part of the evaluation: every value carries a dimension (see
 :mod:`workbook.units`), products and quotients combine dimensions, and sums
@@ -53,11 +50,11 @@ How units bind (so that each reading is the one people mean):
 >>> parse_quantity("2 s", "m")
 Traceback (most recent call last):
 ...
-workbook.answers.InvalidAnswer: This answer is a length in metres; 2 s is a time.
+workbook.expr.InvalidAnswer: This answer is a length in metres; 2 s is a time.
 >>> parse_answer("2,5")
 Traceback (most recent call last):
 ...
-workbook.answers.InvalidAnswer: Use a dot for decimals: write 2.5, not 2,5.
+workbook.expr.InvalidAnswer: Use a dot for decimals: write 2.5, not 2,5.
 """
 
 from __future__ import annotations
@@ -67,19 +64,12 @@ import math
 import re
 from dataclasses import dataclass, field
 
-from . import units as U
-from .expr.evaluate import bare, evaluate
-# Re-exported: the names other modules (formula, shaped, kinds) and tests import from here.
-from .expr.grammar import (ALIASES, CONSTANTS, FUNCTIONS, GREEK, MAX_DEPTH, MAX_EXPONENT,
-                           MAX_LENGTH, MAX_NODES, SCALAR, Grammar, InvalidAnswer)
-from .expr.parsing import Parser, parse_tree
-from .expr.tokens import canonical_name, normalise, tokenize
-
-__all__ = [
-    "ALIASES", "CONSTANTS", "FUNCTIONS", "GREEK", "MAX_DEPTH", "MAX_EXPONENT", "MAX_LENGTH", "MAX_NODES",
-    "SCALAR", "Answer", "Grammar", "InvalidAnswer", "Parser", "canonical_name", "normalise",
-    "parse_answer", "parse_quantity", "parse_tree", "tokenize",
-]
+from .. import units as U
+from .degrees import degree_arguments
+from .evaluate import bare, evaluate
+from .grammar import MAX_LENGTH, InvalidAnswer
+from .parsing import parse_tree
+from .precision import typed_precision
 
 
 @dataclass(frozen=True)
@@ -105,25 +95,25 @@ class Answer:
 
 
 _PLAIN = re.compile(r"\s*[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?\s*")
+Parsed = tuple[Answer, "U.Dim | None", "tuple | None"]  # the answer, its dimension, its tree (None: a plain number)
 
 
-def _parse(text: object) -> tuple[Answer, U.Dim | None]:
+def _parse(text: object) -> Parsed:
     if isinstance(text, str) and len(text) <= MAX_LENGTH:
         if _PLAIN.fullmatch(text):  # the common case, a plain number: no parser needed
             value = float(text)
             if math.isfinite(value):
-                return Answer(value=value, unit=None, text=text), None
+                return Answer(value=value, unit=None, text=text), None, None
         return _parse_cached(text)
     return _parse_text(text)
 
 
 @functools.lru_cache(maxsize=512)
-def _parse_cached(text: str) -> tuple[Answer, U.Dim | None]:
+def _parse_cached(text: str) -> Parsed:
     return _parse_text(text)  # errors are raised, not cached
 
 
-def _parse_text(text: object) -> tuple[Answer, U.Dim | None]:
-    tree = parse_tree(text)  # type: ignore[arg-type]
+def _quantity(tree: tuple, text: str) -> tuple[Answer, U.Dim | None]:
     try:
         si, dim, angle = evaluate(tree)
     except (OverflowError, RecursionError):
@@ -135,7 +125,12 @@ def _parse_text(text: object) -> tuple[Answer, U.Dim | None]:
     if dim == U.ANGLE:
         unit = angle or "rad"
         value = si / U.UNITS["°"][0] if unit == "deg" else si
-    return Answer(value=value, unit=unit, text=text, dimension=U.dimension_name(dim), si=si), dim  # type: ignore[arg-type]
+    return Answer(value=value, unit=unit, text=text, dimension=U.dimension_name(dim), si=si), dim
+
+
+def _parse_text(text: object) -> Parsed:
+    tree = parse_tree(text)  # type: ignore[arg-type]
+    return (*_quantity(tree, text), tree)  # type: ignore[arg-type]
 
 
 def parse_answer(text: object) -> Answer:
@@ -149,6 +144,20 @@ def parse_answer(text: object) -> Answer:
     (0.7071, '')
     """
     return _parse(text)[0]
+
+
+def _in_unit(answer: Answer, dim: U.Dim | None, expect: str | None, text: object) -> float:
+    """The value of a parsed answer in the unit asked for, or InvalidAnswer naming the unit expected."""
+    if bare(dim):
+        return answer.value if dim is None else answer.si  # type: ignore[return-value]
+    shown = str(text).strip()
+    shown = shown if len(shown) <= 24 else "what you typed"
+    if expect is None:
+        raise InvalidAnswer(f"This answer is a plain number, without a unit; {shown} is {U.describe(dim)}.")
+    factor, want, words = U.EXPECT[expect]
+    if dim != want:
+        raise InvalidAnswer(f"This answer is {words}; {shown} is {U.describe(dim)}.")
+    return answer.si / factor  # type: ignore[operator]
 
 
 def parse_quantity(text: object, expect: str | None) -> float:
@@ -166,18 +175,61 @@ def parse_quantity(text: object, expect: str | None) -> float:
     >>> parse_quantity("3 m", None)
     Traceback (most recent call last):
     ...
-    workbook.answers.InvalidAnswer: This answer is a plain number, without a unit; 3 m is a length.
+    workbook.expr.InvalidAnswer: This answer is a plain number, without a unit; 3 m is a length.
+    """
+    return read_quantity(text, expect).value
+
+
+@dataclass(frozen=True)
+class Reading:
+    """A learner's number in the unit asked for, and how precisely it was typed.
+
+    ``figures`` and ``half_unit`` are set when the answer is one decimal number
+    (with a unit, or after ``θ2 =``): its significant figures, and half a unit
+    of its last digit in the unit asked for. ``bare``: no unit was written.
+    """
+
+    value: float
+    bare: bool
+    figures: int | None = None
+    half_unit: float | None = None
+    tree: tuple | None = field(default=None, repr=False, compare=False)
+    expect: str | None = field(default=None, repr=False, compare=False)
+
+    def with_degree_arguments(self) -> float | None:
+        """The value with ``cos(90)``'s 90 read as degrees, or None when no such argument was typed."""
+        tree = degree_arguments(self.tree) if self.tree is not None else None
+        if tree is None:
+            return None
+        try:
+            answer, dim = _quantity(tree, "")
+            return _in_unit(answer, dim, self.expect, "")
+        except InvalidAnswer:
+            return None
+
+
+def read_quantity(text: object, expect: str | None) -> Reading:
+    """Read ``text`` in the unit ``expect`` (see :func:`parse_quantity`), with its precision.
+
+    >>> r = read_quantity("0.143", None); r.value, r.figures, r.half_unit
+    (0.143, 3, 0.0005)
+    >>> r = read_quantity("14.3 cm", "m"); round(r.value, 9), r.figures, round(r.half_unit, 12)
+    (0.143, 3, 0.0005)
+    >>> read_quantity("sqrt(2)/2", None).figures is None, read_quantity("2 m", "m").bare
+    (True, False)
     """
     if expect is not None and expect not in U.EXPECT:
         raise ValueError(f"expect must be one of {sorted(U.EXPECT)} or None, not {expect!r}")
-    answer, dim = _parse(text)
-    if bare(dim):
-        return answer.value if dim is None else answer.si  # type: ignore[return-value]
-    shown = str(text).strip()
-    shown = shown if len(shown) <= 24 else "what you typed"
-    if expect is None:
-        raise InvalidAnswer(f"This answer is a plain number, without a unit; {shown} is {U.describe(dim)}.")
-    factor, want, words = U.EXPECT[expect]
-    if dim != want:
-        raise InvalidAnswer(f"This answer is {words}; {shown} is {U.describe(dim)}.")
-    return answer.si / factor  # type: ignore[operator]
+    answer, dim, tree = _parse(text)
+    value = _in_unit(answer, dim, expect, text)
+    figures, half = typed_precision(tree if tree is not None else ("num", answer.value), str(text))
+    if half is not None and tree is not None and tree[0] != "num":  # typed with a unit: scale to the unit asked
+        literal = _literal(tree)
+        half = abs(half * value / literal) if literal else None
+    return Reading(value=value, bare=bare(dim), figures=figures, half_unit=half, tree=tree, expect=expect)
+
+
+def _literal(tree: tuple) -> float:
+    while tree[0] in ("unit", "neg"):
+        tree = tree[1]
+    return float(tree[1]) if tree[0] == "num" else 0.0

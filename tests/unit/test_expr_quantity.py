@@ -6,7 +6,7 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from workbook.answers import MAX_LENGTH, InvalidAnswer, parse_answer
+from workbook.expr import MAX_LENGTH, InvalidAnswer, parse_answer
 
 ACCEPTED = {
     "3": 3.0, "-0.5": -0.5, "−1/2": -0.5, "sqrt(2)/2": math.sqrt(2) / 2, "√2/2": math.sqrt(2) / 2,
@@ -88,7 +88,7 @@ def test_limits_are_checked_before_parsing():
 
 # --------------------------------------------------------------------------- units in the evaluation
 
-from workbook.answers import parse_quantity  # noqa: E402
+from workbook.expr import parse_quantity  # noqa: E402
 
 DEG = math.pi / 180
 

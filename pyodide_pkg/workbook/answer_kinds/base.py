@@ -1,0 +1,117 @@
+"""What every answer kind shares: its options, its slips, and what a Derive exercise asks of it.
+
+An answer kind (``number``, ``matrix``, ``expression``) is a package of its own:
+``__init__.py`` (the options, as the fields of a frozen dataclass), ``read.py``
+(text to values, through :mod:`workbook.expr`), ``mark.py`` (values to a
+verdict, slips included) and ``show.py`` (the worked answer, the Answer line's
+TeX, the label and the input's HTML). A Derive exercise holds one
+(``answer=number(label=...)``); the bank writes the kind's factory, and the
+exercise builds it, so an option the kind does not have fails the build with
+the exercise's id.
+
+>>> spec = AnswerSpec(AnswerKind, {"label": "x"})
+>>> spec.build("0.1", key=2.0).key
+2.0
+>>> spec.build("0.1", periodic=True)
+Traceback (most recent call last):
+...
+ValueError: exercise 0.1: an answer of kind '' has no option 'periodic' (its options: key, label, slips)
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from dataclasses import dataclass
+from typing import Any, ClassVar, Mapping
+
+from ..verdict import GradingError, Verdict
+
+
+@dataclass(frozen=True)
+class Slip:
+    """A known wrong answer with its own message, matched like the key (a number, rows, or a function)."""
+
+    value: Any
+    message: str
+
+
+@dataclass(frozen=True)
+class AnswerKind:
+    """Base of the answer kinds; a subclass's fields are its options, and it honours every one."""
+
+    key: Any = None
+    label: str = ""
+    slips: tuple[Slip, ...] = ()
+    kind: ClassVar[str] = ""
+
+    def check(self, answer: object) -> Verdict:
+        raise NotImplementedError
+
+    def read(self, answer: object) -> dict:
+        """How ``answer`` is read before it is checked (the ``read`` op): ``{value}``, ``{latex}`` or ``{message}``."""
+        raise NotImplementedError
+
+    def split(self, text: object) -> dict:
+        """A pasted vector or matrix (the ``split`` op); only shaped answers have entries."""
+        raise GradingError("wrong-op", "This exercise takes one value, not a vector or matrix.")
+
+    def worked_text(self) -> str:
+        """The answer as a learner would type it."""
+        raise NotImplementedError
+
+    def worked_tex(self) -> str:
+        """The answer in TeX, for the derivation's Answer line (the ``{{worked}}`` placeholder)."""
+        raise NotImplementedError
+
+    def worked_html(self) -> str:
+        """The end of the revealed derivation: the answer, typed out (``worked-answer``)."""
+        raise NotImplementedError
+
+    def typed(self, value: Any) -> Any:
+        """A value (the key or a slip) as a learner would type it."""
+        raise NotImplementedError
+
+    def label_html(self) -> str:
+        raise NotImplementedError
+
+    def widget(self, base: str, page: Any) -> str:
+        raise NotImplementedError
+
+    def attributes(self) -> dict[str, str]:
+        return {}
+
+    def degenerate(self) -> str | None:
+        """Why these numbers do not make a fair question (the worked answer refused, a slip
+        that cannot be told apart), or None."""
+        verdict = self.check(self.typed(self.key))
+        if verdict.status != "correct":
+            return f"its worked answer {self.typed(self.key)!r} is graded {verdict.status}"
+        for slip in self.slips:
+            said = self.check(self.typed(slip.value))
+            if said.message != slip.message:
+                return f"the slip {str(self.typed(slip.value))[:60]!r} is graded {said.status}: {said.message!r}"
+        return None
+
+
+@dataclass(frozen=True)
+class AnswerSpec:
+    """What the bank writes: an answer kind and some of its options; the exercise builds it."""
+
+    cls: type[AnswerKind]
+    options: Mapping[str, Any]
+
+    @property
+    def kind(self) -> str:
+        return self.cls.kind
+
+    def build(self, exercise_id: str, **more: Any) -> AnswerKind:
+        """The answer kind with these options and ``more`` (a variant's ``make()``); unknown names are errors."""
+        names = [f.name for f in dataclasses.fields(self.cls)]
+        for name in list(self.options) + list(more):
+            if name not in names:
+                raise ValueError(f"exercise {exercise_id}: an answer of kind {self.cls.kind!r} has no option "
+                                 f"{name!r} (its options: {', '.join(names)})")
+        try:
+            return self.cls(**{**self.options, **more})
+        except (TypeError, ValueError) as err:
+            raise ValueError(f"exercise {exercise_id}: {err}") from None

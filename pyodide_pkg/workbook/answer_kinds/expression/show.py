@@ -1,0 +1,49 @@
+"""Showing a formula answer: the worked formula, its TeX, the label (variables typeset) and the input."""
+
+from __future__ import annotations
+
+from html import escape
+from typing import TYPE_CHECKING
+
+from ...contract import ROLE, role_attr
+from ...expr import parse_formula
+from ...expr.latex_output import variable_latex
+from ...kinds.base import check_button, form
+
+if TYPE_CHECKING:
+    from . import FormulaAnswer
+
+
+def worked_tex(ans: "FormulaAnswer") -> str:
+    return parse_formula(ans.answer_text, ans.variables).latex
+
+
+def worked_html(ans: "FormulaAnswer") -> str:
+    return (f'<p class="wb-worked">Type it as: <code {role_attr(ROLE.worked_answer)}>'
+            f"{escape(ans.answer_text)}</code></p>")
+
+
+def label_html(ans: "FormulaAnswer") -> str:
+    # one math span per name: the page typesets a span whose whole text is a single inline formula
+    names = ", ".join(f'<span class="arithmatex">\\({variable_latex(v)}\\)</span>' for v in ans.variables)
+    return f"{escape(ans.label)}: a formula in {names}"
+
+
+def placeholder(ans: "FormulaAnswer") -> str:
+    """An example of the notation in this exercise's own variables (never the answer): ``e.g. 2*v*cos(theta)``."""
+    plain = [v for v in ans.variables if not v.startswith(("theta", "phi", "omega", "alpha", "beta"))]
+    angles = [v for v in ans.variables if v not in plain]
+    first = plain[0] if plain else "2"
+    inner = angles[0] if angles else (plain[-1] if len(plain) > 1 else "pi/4")
+    return f"e.g. 2*{first}*sin({inner})"
+
+
+def widget(ans: "FormulaAnswer", base: str) -> str:
+    return form("derive", (
+        f'<label class="wb-label" for="{base}-answer">{label_html(ans)}</label>'
+        f'<span class="wb-answer-row"><input id="{base}-answer" class="wb-answer wb-formula" '
+        f'{role_attr(ROLE.answer)} type="text" inputmode="text" autocomplete="off" autocapitalize="off" '
+        f'spellcheck="false" placeholder="{escape(placeholder(ans))}" aria-describedby="{base}-reading {base}-feedback">'
+        f"{check_button()}</span>"
+        f'<p class="wb-reading" id="{base}-reading" aria-live="polite"></p>'
+    ))
