@@ -163,3 +163,13 @@ def pi_frac(degrees: float, tex: bool = True) -> str:
     f = abs(f)
     top = pi if f.numerator == 1 else f"{f.numerator}{pi}"
     return sign + (top if f.denominator == 1 else f"{top}/{f.denominator}")
+
+
+def bmatrix(rows) -> str:
+    """A matrix (a sequence of rows) in TeX, each entry printed by :func:`fmt`.
+
+    >>> bmatrix([[1, 0.5], [0, 1 / 3]])
+    '\\\\begin{bmatrix} 1 & 0.5 \\\\\\\\ 0 & 0.3333 \\\\end{bmatrix}'
+    """
+    body = " \\\\ ".join(" & ".join(fmt(v) for v in row) for row in rows)
+    return f"\\begin{{bmatrix}} {body} \\end{{bmatrix}}"

@@ -1,0 +1,40 @@
+"""Checks the chapters' generators share: is a draw a fair question?
+
+A generator's ``valid(p)`` rejects a draw whose key and slips cannot be told
+apart, or whose words would turn false. These are the common tests; each
+chapter adds the ones only it needs.
+
+>>> from workbook.answer_kinds.base import Slip
+>>> apart(1.0, 1.0001), apart(1.0, 1.1, 2.0)
+(False, True)
+>>> slips_apart({"key": 2.0, "slips": (Slip(2.0004, "?"),)}), slips_apart({"key": ((1.0,), (2.0,)), "slips": (Slip(((1.0,), (2.1,)), "?"),)})
+(False, True)
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+from ..tolerance import agrees, clean
+
+APART = 3e-3  # relatively: far enough apart that 3 significant figures tell them apart
+
+
+def _same(a: Any, b: Any, rel: float, turn: float | None) -> bool:
+    if isinstance(a, (tuple, list)):
+        return all(_same(x, y, rel, turn) for x, y in zip(a, b))
+    a, b = clean(float(a)), clean(float(b))
+    shifts = (-turn, 0.0, turn) if turn else (0.0,)
+    return any(agrees(a + k, b, rel=rel) or agrees(b, a + k, rel=rel) for k in shifts)
+
+
+def apart(*values: Any, rel: float = APART, turn: float | None = None) -> bool:
+    """No two of the values (numbers, or rows of numbers) are the same answer within ``rel``;
+    with ``turn`` (360 or 2π), angles a whole turn apart are the same."""
+    return not any(_same(values[i], values[j], rel, turn)
+                   for i in range(len(values)) for j in range(i + 1, len(values)))
+
+
+def slips_apart(made: dict, rel: float = APART, turn: float | None = None) -> bool:
+    """A ``make()`` result's key and slips are all told apart (see :func:`apart`)."""
+    return apart(made["key"], *(s.value for s in made.get("slips", ())), rel=rel, turn=turn)

@@ -1,0 +1,106 @@
+"""Printed = accepted, and printed arithmetic adds up: 1,000 variants of every Derive exercise.
+
+For every distinct draw among variants 0–999 of every Derive exercise, read
+from the page's rendered text (the templates filled as the page and the
+worker's ``draw`` fill them):
+
+- the derivation's ``**Answer:**`` line ends with the worked answer itself
+  (the ``{{worked}}`` placeholder, which the answer kind fills), and the grader
+  accepts what it prints;
+- "Type it as" (the worked answer) is accepted;
+- every relation ``A = B`` or ``A ≈ B`` between two numeric sides, in the
+  statement, the hint and the derivation, holds to the printed precision
+  (``printed_math.check_formula``).
+
+``python tests/unit/test_printed.py`` prints the counts (draws, relations
+checked) and every failure, for a closing note.
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from pathlib import Path
+
+import pytest
+
+from workbook import bank
+
+from exercise_text import load_all  # docs/hooks/exercise_text.py
+from printed_math import check_formula, math_of, relations, read_side
+
+ROOT = Path(__file__).resolve().parents[2]
+SEEDS = range(1000)
+DERIVE = [ex for ex in bank.all_exercises() if ex.kind == "derive"]
+TEXTS = load_all(ROOT)
+ANSWER_LINE = re.compile(r"<p>\s*<strong>Answer:</strong>(.*?)</p>", re.S)
+
+
+def draws(ex):
+    """The distinct variants among the seeds (many seeds share a draw on a small grid)."""
+    seen = set()
+    for seed in SEEDS:
+        v = ex.variant(seed)
+        key = tuple(sorted(v.values.items()))
+        if key not in seen:
+            seen.add(key)
+            yield seed, v
+
+
+def answer_line_problems(v, solution_html: str) -> list[str]:
+    found = ANSWER_LINE.findall(solution_html)
+    if len(found) != 1:
+        return [f"the derivation has {len(found)} Answer lines"]
+    formulas = math_of(found[0])
+    if not formulas:
+        return ["the Answer line has no formula"]
+    chains = relations(formulas[-1])
+    printed = chains[-1][-1][0] if chains else formulas[-1].strip()
+    out = []
+    if printed.rstrip(". ") != v.answer.worked_tex():
+        out.append(f"the Answer line ends with {printed!r}, not the worked answer {v.answer.worked_tex()!r}")
+    verdict = v.check(printed)
+    if verdict.status != "correct":
+        out.append(f"the Answer line's {printed!r} is graded {verdict.status}: {verdict.message}")
+    return out
+
+
+def problems_of(ex) -> tuple[list[str], int, int]:
+    """Every failure over the draws, the number of draws, and the number of relations checked."""
+    problems, n_draws, n_checked = [], 0, 0
+    for seed, v in draws(ex):
+        n_draws += 1
+        filled = TEXTS[ex.id].filled(v.values)
+        here = [f"Answer line: {p}" for p in answer_line_problems(v, filled.solution)]
+        worked = v.check(v.worked_text() if v.answer_kind != "matrix" else v.answer.typed(v.answer.key))
+        if worked.status != "correct":
+            here.append(f"type it as {v.worked_text()!r}: {worked.status}")
+        if v.answer_kind == "matrix" and v.check(v.worked_text()).status != "correct":
+            here.append(f"the worked grid {v.worked_text()!r} is not accepted")
+        for part in (filled.title, filled.prompt, filled.hint, filled.solution):
+            for tex in math_of(part):
+                n_checked += sum(1 for chain in relations(tex) for (a, _), (b, rel) in zip(chain, chain[1:])
+                                 if rel in ("=", "\\approx") and read_side(a) and read_side(b))
+                here += check_formula(tex)
+        problems += [f"{ex.id} variant {seed}: {p}" for p in here]
+    return problems, n_draws, n_checked
+
+
+@pytest.mark.parametrize("ex", DERIVE, ids=lambda ex: ex.id)
+def test_printed_is_accepted_and_adds_up(ex):
+    problems, _, _ = problems_of(ex)
+    assert not problems, f"{len(problems)} problems, e.g.\n" + "\n".join(problems[:12])
+
+
+if __name__ == "__main__":
+    sys.path[:0] = [str(ROOT / "pyodide_pkg"), str(ROOT / "docs" / "hooks")]
+    total = [0, 0, 0]
+    for ex in DERIVE:
+        problems, n, checked = problems_of(ex)
+        total[0] += n
+        total[1] += checked
+        total[2] += len(problems)
+        print(f"{ex.id}: {n} draws, {checked} relations checked, {len(problems)} problems")
+        for p in problems[:3]:
+            print("   ", p)
+    print(f"all: {total[0]} draws, {total[1]} relations checked, {total[2]} problems")
