@@ -33,10 +33,11 @@ def _join(left: str, right: str) -> str:
 
 
 def variable_latex(name: str) -> str:
-    r"""How a variable shows: ``theta1`` → ``\theta_{1}``, ``dt`` → ``\Delta t``, ``L_2`` → ``L_{2}``.
+    r"""How a variable shows, as the chapters write it: ``theta1`` → ``\theta_{1}``, ``dt`` → ``dt``
+    (a small step, as in ``v\,dt``; ``Δt`` typed is read as ``dt`` too), ``L_2`` → ``L_{2}``.
 
-    >>> variable_latex("theta1"), variable_latex("dt"), variable_latex("omega"), variable_latex("Kp")
-    ('\\theta_{1}', '\\Delta t', '\\omega', 'K_{p}')
+    >>> variable_latex("theta1"), variable_latex("dt"), variable_latex("dtheta"), variable_latex("Kp")
+    ('\\theta_{1}', 'dt', 'd\\theta', 'K_{p}')
     """
     m = re.fullmatch(r"([A-Za-z]+?)_?([0-9]*)", name)
     if not m:
@@ -45,7 +46,7 @@ def variable_latex(name: str) -> str:
     if base in _GREEK_ASCII:
         out = "\\" + base
     elif len(base) > 1 and base[0] == "d" and (base[1:] in _GREEK_ASCII or len(base) == 2):
-        out = r"\Delta " + ("\\" + base[1:] if base[1:] in _GREEK_ASCII else base[1:])
+        out = "d" + ("\\" + base[1:] if base[1:] in _GREEK_ASCII else base[1:])
     elif len(base) == 2 and base[0].isupper() and not sub:
         out, sub = base[0], base[1]
     elif len(base) > 1:

@@ -30,12 +30,10 @@ def label_html(ans: "FormulaAnswer") -> str:
 
 
 def placeholder(ans: "FormulaAnswer") -> str:
-    """An example of the notation in this exercise's own variables (never the answer): ``e.g. 2*v*cos(theta)``."""
-    plain = [v for v in ans.variables if not v.startswith(("theta", "phi", "omega", "alpha", "beta"))]
-    angles = [v for v in ans.variables if v not in plain]
-    first = plain[0] if plain else "2"
-    inner = angles[0] if angles else (plain[-1] if len(plain) > 1 else "pi/4")
-    return f"e.g. 2*{first}*sin({inner})"
+    """An example of the notation in this exercise's own variables, shaped unlike any answer in the
+    workbook: ``e.g. v^2/2 + sqrt(dt)``."""
+    names = list(ans.variables) or ["x"]
+    return f"e.g. {names[0]}^2/2 + sqrt({names[-1]})" if len(names) > 1 else f"e.g. {names[0]}^2/2 + 1"
 
 
 def widget(ans: "FormulaAnswer", base: str) -> str:
