@@ -74,11 +74,14 @@ def agrees(value: float, key: float, rel: float = REL, exact: bool = False, half
     return abs(value - key) <= rel * abs(key) * (1 + 1e-12)
 
 
-def is_close_miss(value: float, key: float, rel: float = REL) -> bool:
-    """Not accepted, but within 2 % of a non-zero key (or 5 floors of a zero key).
+def is_close_miss(value: float, key: float, rel: float = REL, half_unit: float | None = None) -> bool:
+    """Not accepted, but within 2 % of a non-zero key (or 5 floors of a zero key), or the key
+    rounded to the figures typed (``half_unit``: half a unit of the last digit typed, however few).
 
     >>> is_close_miss(0.1438, 1 / 7), is_close_miss(0.1429, 1 / 7), is_close_miss(0.2, 1 / 7)
     (True, False, False)
+    >>> is_close_miss(0.12, 0.12341), is_close_miss(0.12, 0.12341, half_unit=0.005)  # 2 figures, rounded right
+    (False, True)
     >>> is_close_miss(-0.1429, 1 / 7)  # a sign slip is not "close"
     False
     >>> is_close_miss(0.003, 0.0), is_close_miss(0.02, 1e-17), is_close_miss(0.0005, 0.0)
@@ -87,6 +90,8 @@ def is_close_miss(value: float, key: float, rel: float = REL) -> bool:
     if not (math.isfinite(value) and math.isfinite(key)) or agrees(value, key, rel):
         return False
     key = clean(key)
+    if half_unit is not None and key != 0.0 and abs(value - key) <= half_unit * (1 + 1e-9):
+        return True
     if key == 0.0:
         return abs(value) <= 5 * ZERO_FLOOR
     return abs(value - key) <= CLOSE * abs(key)

@@ -167,11 +167,14 @@ def choices(ex) -> dict:
     return {json.dumps(a, ensure_ascii=False): attempt(ex, a) for a in answers}
 
 
+REPLAYS = {"number": derive, "matrix": shaped, "expression": formula}  # one per answer kind
+
+
 def transcript() -> dict:
     out = {}
     for ex in bank.all_exercises():
         if ex.kind == "derive":
-            replay = {"matrix": shaped, "expression": formula}.get(ex.answer_kind, derive)
+            replay = REPLAYS[ex.answer_kind]
         else:
             replay = build if ex.kind == "build" else choices
         out[ex.id] = {"kind": ex.kind, "title": ex.title, "said": replay(ex)}

@@ -167,3 +167,44 @@ def test_any_text_gives_a_formula_or_a_message(text):
         assert str(err)
     else:
         assert isinstance(f.latex, str) and f.names <= set(ARM + ("dt", "x"))
+
+
+# ---------------------------------------------------------------- LaTeX, look-alikes, degrees, the printed form
+
+from workbook.answer_kinds.expression import formula as formula_kind  # noqa: E402
+
+
+def arm_x_answer():
+    return formula_kind(label="x", key=lambda theta1, theta2, L1, L2: L1 * math.cos(theta1) + L2 * math.cos(theta1 + theta2),
+                        variables=("theta1", "theta2", "L1", "L2"),
+                        domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.5, 2.0), "L2": (0.5, 2.0)},
+                        answer_text="L1*cos(theta1) + L2*cos(theta1 + theta2)").build("t.1")
+
+
+@pytest.mark.parametrize("text", [
+    r"L_1\cos\theta_1 + L_2\cos(\theta_1 + \theta_2)",
+    r"L_{1}\cos\theta_{1} + L_{2}\cos\left(\theta_{1} + \theta_{2}\right)",
+    r"$L_1 \cos(\theta_1) + L_2 \cdot \cos(\theta_1+\theta_2)$",
+    r"x = L_1\cos\theta_1 + L_2\cos(\theta_1 + \theta_2)",
+    "L₁ cos θ₁ + L₂ cos(θ₁ + θ₂)",
+])
+def test_a_formula_in_latex_and_in_unicode(text):
+    assert arm_x_answer().check(text).status == "correct", (text, arm_x_answer().check(text))
+
+
+def test_the_delta_macos_types_and_dt():
+    step = formula_kind(label="dx", key=lambda v, dt: v * dt, variables=("v", "dt"),
+                        domain={"v": (0.5, 2.0), "dt": (0.1, 1.0)}, answer_text="v*dt").build("t.1")
+    for text in ("v ∆t", "v Δt", "v*dt", r"v\,\Delta t", "v·Δt"):
+        assert step.check(text).status == "correct", text
+
+
+def test_degrees_inside_a_formula_are_named():
+    verdict = arm_x_answer().check("L1*cos(theta1) + L2*sin(theta1 + theta2 + 90)")
+    assert (verdict.status, verdict.tag) == ("incorrect", "degrees"), verdict
+    assert arm_x_answer().check("L1*cos(theta1) + L2*sin(theta1 + theta2 + 90°)").status == "correct"
+
+
+def test_the_worked_formula_typeset_is_accepted_back():
+    ans = arm_x_answer()
+    assert ans.check(ans.worked_tex()).status == "correct"

@@ -175,3 +175,124 @@ def test_any_paste_gives_a_matrix_or_a_message(text):
         assert str(err)
     else:
         assert len(values) == 2 and all(len(row) == 2 and all(math.isfinite(v) for v in row) for row in values)
+
+
+# ---------------------------------------------------------------- the page's own notations, names, units
+
+from workbook.answer_kinds.matrix import matrix as matrix_kind  # noqa: E402
+
+POSE = ((5.866,), (3.5,), (0.6236,))
+
+
+def pose(**options):
+    return matrix_kind(label="x′", names=("x", "y", "theta|th"), **options).build("t.1", key=POSE)
+
+
+@pytest.mark.parametrize("text", [
+    r"\begin{bmatrix} 5.866 \\ 3.5 \\ 0.6236 \end{bmatrix}",
+    r"\mathbf{x}' = \begin{bmatrix} 5.866 \\ 3.5 \\ 0.6236 \end{bmatrix}",
+    r"\begin{pmatrix} 5.866 & 3.5 & 0.6236 \end{pmatrix}^\top",
+    r"$\left[\begin{array}{c} 5.866 \\ 3.5 \\ 0.6236 \end{array}\right]$",
+    "(5.866, 3.5, 0.6236)ᵀ", "[5.866 3.5 0.6236]^T", "[5.866 3.5 0.6236]'", "(5.866, 3.5, 0.6236)",
+    "x = 5.866, y = 3.5, θ = 0.6236", "θ = 0.6236; x = 5.866; y = 3.5", "y' = 3.5, theta' = 0.6236, x' = 5.866",
+    "x′ = 5.866\ny′ = 3.5\nθ′ = 0.6236", r"\theta = 0.6236, x = 5.866, y = 3.5",
+])
+def test_a_vector_in_every_notation_a_learner_pastes(text):
+    assert pose().check(text).status == "correct", (text, pose().check(text))
+
+
+@pytest.mark.parametrize("text", [r"\begin{vmatrix} 0 & -1 \\ 1 & 0 \end{vmatrix}", r"\begin{bmatrix}0&-1\\1&0\end{bmatrix}",
+                                  "[[0, 1], [-1, 0]]ᵀ", r"\begin{bmatrix} \cos 90^\circ & -\sin 90^\circ \\ \sin 90^\circ & \cos 90^\circ \end{bmatrix}"])
+def test_a_latex_matrix_and_its_entries(text):
+    ans = matrix_kind(label="R").build("t.1", key=((0.0, -1.0), (1.0, 0.0)))
+    assert ans.check(text).status == "correct", text
+
+
+def test_a_transposed_matrix_is_transposed():
+    ans = matrix_kind(label="M").build("t.1", key=((1.0, 2.0), (3.0, 4.0)))
+    assert ans.check("[[1, 3], [2, 4]]ᵀ").status == "correct"
+    assert ans.check("[[1, 2], [3, 4]]ᵀ").tag == "transpose"
+
+
+def test_names_are_read_by_name_never_by_position():
+    right = pose().check("y = 3.5, x = 5.866, θ = 0.6236")
+    swapped_values = pose().check("x = 3.5, y = 5.866, θ = 0.6236")
+    assert right.status == "correct"
+    assert swapped_values.status == "incorrect" and swapped_values.data["wrong"] == [[1, 1], [2, 1]]
+
+
+@pytest.mark.parametrize("text,fragment", [
+    ("x = 5.866, z = 3.5, θ = 0.6236", "no entry named “z”"),
+    ("x = 5.866, x = 3.5, θ = 0.6236", "given twice"),
+    ("x = 5.866, θ = 0.6236", "y is missing"),
+    ("x = 5.866, 3.5, θ = 0.6236", "every entry its name, or none"),
+])
+def test_names_that_do_not_fit_are_refused_with_a_message(text, fragment):
+    verdict = pose().check(text)
+    assert verdict.status == "invalid" and fragment in verdict.message, verdict
+
+
+def test_names_where_the_answer_has_none_are_refused():
+    ans = matrix_kind(label="v").build("t.1", key=((1.0,), (2.0,)))
+    verdict = ans.check("a = 1, b = 2")
+    assert verdict.status == "invalid" and "no names" in verdict.message
+
+
+def test_names_typed_in_the_boxes_are_placed_by_name():
+    assert pose().check([["y = 3.5"], ["x = 5.866"], ["θ = 0.6236"]]).status == "correct"
+    partly = pose().check([["y = 3.5"], [""], [""]])
+    assert partly.status == "invalid" and partly.data["invalid"] == [[1, 1], [3, 1]]
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.permutations([0, 1, 2]), st.lists(st.sampled_from([5.866, 3.5, 0.6236, 1.0, -2.0]), min_size=3, max_size=3))
+def test_any_order_of_named_components_gives_the_verdict_of_reading_order(order, values):
+    names = ("x", "y", "θ")
+    in_order = pose().check(", ".join(f"{n} = {v}" for n, v in zip(names, values)))
+    shuffled = pose().check(", ".join(f"{names[k]} = {values[k]}" for k in order))
+    assert (shuffled.status, shuffled.tag, shuffled.message, shuffled.data) == \
+        (in_order.status, in_order.tag, in_order.message, in_order.data)
+
+
+def test_one_value_pasted_into_one_box_stays_in_that_box():
+    ans = matrix_kind(label="R").build("t.1", key=((0.0, -1.0), (1.0, 0.0)))
+    assert ans.split("cos(30°) - sin(30°)") == {"cell": "cos(30°) - sin(30°)"}
+    assert ans.split(r"\frac{\sqrt{3}}{2}") == {"cell": r"\frac{\sqrt{3}}{2}"}
+    assert ans.split("0 -1; 1 0") == {"entries": [["0", "-1"], ["1", "0"]]}
+
+
+def test_entries_with_units_are_converted_and_a_wrong_unit_is_named():
+    ans = matrix_kind(label="x′", units=("m", "m", "rad")).build("t.1", key=POSE)
+    assert ans.check([["586.6 cm"], ["3.5 m"], ["35.73°"]]).status == "correct"
+    wrong = ans.check([["5.866 s"], ["3.5"], ["0.6236"]])
+    assert wrong.status == "invalid" and "Entry (1,1): This answer is a length in metres; 5.866 s is a time." in wrong.message
+
+
+def test_close_entries_are_told_apart_from_wrong_ones():
+    key = tuple(tuple(v / 7 for v in row) for row in ((1, 2, 3), (4, 5, 6), (7, 8, 9)))
+    ans = matrix_kind(label="M").build("t.1", key=key)
+    assert ans.check([[f"{v:.3g}" for v in row] for row in key]).status == "correct"
+    rough = [[f"{v:.2g}" for v in row] for row in key]
+    verdict = ans.check(rough)
+    assert verdict.status == "incorrect" and "close" in verdict.message and verdict.data["close"]
+    assert "3 significant figures" in verdict.message
+    rough[0][0] = "9"
+    mixed = ans.check(rough)
+    assert "1 more is wrong" in mixed.message or "more are wrong" in mixed.message
+
+
+def test_degrees_typed_in_an_entry_are_named():
+    th = math.radians(30)
+    ans = matrix_kind(label="R(30°)", rotation_angle=th).build("t.1", key=tuple(map(tuple, rot(th))))
+    verdict = ans.check([["cos(30)", "-sin(30°)"], ["sin(30°)", "cos(30°)"]])
+    assert (verdict.status, verdict.tag) == ("incorrect", "degrees") and "entry (1,1)" in verdict.message
+
+
+@settings(max_examples=150, deadline=None)
+@given(st.lists(st.lists(st.floats(min_value=-1e3, max_value=1e3, allow_nan=False), min_size=2, max_size=2),
+                min_size=2, max_size=2))
+def test_any_printed_matrix_reads_back(rows):
+    ans = matrix_kind(label="M").build("t.1", key=tuple(map(tuple, rows)))
+    assert ans.check(ans.worked_text()).status == "correct"
+    assert ans.check(ans.worked_tex()).status == "correct"
+    assert ans.check(ans.typed(ans.key)).status == "correct"

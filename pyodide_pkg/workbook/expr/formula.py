@@ -32,7 +32,7 @@ Implicit products, and what is refused (so that no reading is a guess):
 >>> f.evaluate({"theta1": 0.0, "theta2": 0.0, "L1": 1.0, "L2": 1.0})
 2.0
 >>> parse_formula("v*Δt*cos(ω)", ("v", "omega", "dt")).latex
-'v\\\\Delta t\\\\cos\\\\omega'
+'v dt\\\\cos\\\\omega'
 """
 
 from __future__ import annotations

@@ -116,6 +116,10 @@ def _convert(s: str) -> str:
         elif name in _SIZES:
             if i < len(s) and s[i] == ".":
                 i += 1  # \left. is an invisible delimiter
+        elif name == "Delta":  # \Delta t is one name, Δt (read as dt)
+            while i < len(s) and s[i] == " ":
+                i += 1
+            out.append(" Δ")
         elif name in _LETTERS:
             out.append(" " + _LETTERS[name] + " " if name in ("pi", "tau") else " " + _LETTERS[name])
         elif name in _FUNCTIONS:

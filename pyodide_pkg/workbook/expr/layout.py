@@ -159,7 +159,7 @@ def _latex_matrix(text: str) -> Grid:
     return grid
 
 
-_NAME = re.compile(r"^\s*([^\W\d][\w'′⁻⁺^{}\-+\\]*?)\s*[=≈]\s*(?![=])")
+_NAME = re.compile(r"^\s*(\\?[^\W\d][\w'′⁻⁺^{}\-+\\]*?)\s*[=≈]\s*(?![=])")
 
 
 def _strip_name(s: str) -> str:
@@ -245,7 +245,10 @@ def is_one_value(text: object) -> bool:
     """
     if not isinstance(text, str) or "\\begin" in text or "\n" in text.strip():
         return False
-    s = normalise(text) if "\\" not in text else text
+    try:
+        s = normalise(text)
+    except InvalidAnswer:
+        return False
     if any(ch in s for ch in ",;[]{}&") or named_entry(s):
         return False
     return len(_split_row(s)) == 1

@@ -1,7 +1,8 @@
 // A vector or matrix answer: a grid of entries. Arrow keys move between entries
 // (left and right once the caret is at the edge), Tab goes in reading order, and a
-// whole matrix pasted into any entry is split by the grader and fills the grid.
-import { ATTR, ROLE, findRoles } from "../contract.js";
+// whole matrix pasted into any entry is split by the grader and fills the grid; one
+// value pasted (even a long expression) stays in the entry it was pasted into.
+import { ATTR, ROLE, TAG, findRoles } from "../contract.js";
 import { showMessage } from "../feedback.js";
 
 export function init(ctx) {
@@ -32,8 +33,12 @@ export function init(ctx) {
       const text = event.clipboardData?.getData("text") ?? "";
       if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim())) return; // one value: paste as usual
       event.preventDefault();
+      const at = [input.selectionStart ?? input.value.length, input.selectionEnd ?? input.value.length];
       const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, text });
-      if (reply.ok && reply.value.entries) fill(reply.value.entries);
+      if (reply.ok && typeof reply.value.cell === "string") {
+        input.setRangeText(reply.value.cell, at[0], at[1], "end");
+        input.dispatchEvent(new Event("input", { bubbles: true }));
+      } else if (reply.ok && reply.value.entries) fill(reply.value.entries);
       else showMessage(ctx.el, reply.ok ? reply.value.message : reply.error.message);
     });
   }
@@ -46,15 +51,20 @@ export function init(ctx) {
       for (const input of entries) {
         input.value = "";
         input.removeAttribute("aria-invalid");
+        input.removeAttribute(ATTR.tag);
       }
     },
     show(reply) {
       const data = (reply.ok && reply.value.data) || {};
-      const marked = new Set([...(data.wrong || []), ...(data.invalid || [])].map(([r, c]) => `${r},${c}`));
+      const positions = (list) => new Set((list || []).map(([r, c]) => `${r},${c}`));
+      const marked = positions([...(data.wrong || []), ...(data.invalid || [])]);
+      const close = positions(data.close);
       for (const input of entries) {
         const key = `${input.getAttribute(ATTR.row)},${input.getAttribute(ATTR.col)}`;
         if (marked.has(key)) input.setAttribute("aria-invalid", "true");
         else input.removeAttribute("aria-invalid");
+        if (close.has(key)) input.setAttribute(ATTR.tag, TAG.close); // near the key: rounded too far
+        else input.removeAttribute(ATTR.tag);
       }
     },
   };

@@ -73,7 +73,8 @@ def mark(ans: "MatrixAnswer", readings: list[list[Reading]]) -> Verdict:
         return said
     for tag, message in whole_matrix_slips(values, key, rotation_angle=ans.rotation_angle):
         return Verdict("incorrect", message, tag=tag, data=data)
-    close = [[i, j] for i, j in wrong if is_close_miss(values[i - 1][j - 1], key[i - 1][j - 1], rel=ans.rel_tol)]
+    close = [[i, j] for i, j in wrong if is_close_miss(values[i - 1][j - 1], key[i - 1][j - 1], rel=ans.rel_tol,
+                                                         half_unit=readings[i - 1][j - 1].half_unit)]
     n = ans.shape[0] * ans.shape[1]
     right = n - len(wrong)
     if close:

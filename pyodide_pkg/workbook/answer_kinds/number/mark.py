@@ -71,6 +71,6 @@ def mark(ans: "NumberAnswer", reading: Reading) -> Verdict:
     if is_sign_slip(value, key, rel=ans.rel_tol) or (half and key and agrees(-value, key, half_unit=half)):
         return Verdict("incorrect", "The size is right but the sign is wrong. Check which way the quantity points.",
                        tag=TAG.sign)
-    if not ans.exact and is_close_miss(value, key, rel=ans.rel_tol):
+    if not ans.exact and is_close_miss(value, key, rel=ans.rel_tol, half_unit=reading.half_unit):
         return Verdict("incorrect", close_message(reading), tag=TAG.close)
     return Verdict("incorrect", "Not quite. Try the hint, or work the derivation one line at a time.")
