@@ -7,7 +7,7 @@ from urllib.parse import urlsplit
 from playwright.sync_api import Locator, Page
 
 from workbook.contract import ATTR, ROLE
-from workbook.kinds.derive import fmt
+from workbook.number_format import fmt
 
 
 def role(name: str, extra: str = "") -> str:
@@ -175,7 +175,7 @@ def solve(page: Page, ex) -> str:
     el.scroll_into_view_if_needed()
     if ex.kind == "derive":
         if ex.answer_kind == "matrix":
-            fill_matrix(el, [[fmt(v, digits=4) for v in row] for row in ex.cleaned])
+            fill_matrix(el, [[fmt(v) for v in row] for row in ex.answer.cleaned])
             return check(el)
         return answer_derive(el, ex.worked_text())
     if ex.kind == "trace":

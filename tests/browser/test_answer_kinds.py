@@ -27,17 +27,21 @@ from playwright.sync_api import expect
 
 from workbook import bank
 from workbook.contract import ATTR, ROLE, STATE, TAG
-from workbook.kinds.derive import fmt
-from workbook.shaped import wrong_entries
+from workbook.number_format import fmt
 
 
 def grid_text(rows) -> list[list[str]]:
-    return [[fmt(v, digits=4) for v in row] for row in rows]
+    return [[fmt(v) for v in row] for row in rows]
+
+
+def wrong_entries(ex, rows) -> set[tuple[int, int]]:
+    """The entries the grader marks wrong when ``rows`` is typed (its own judgement, not re-derived here)."""
+    return {tuple(p) for p in ex.check(grid_text(rows)).data.get("wrong", [])}
 
 
 def test_a_matrix_is_filled_by_keyboard_and_graded_correct(page, site_url):
     ex = bank.get("0.7")  # R(30°)·R(60°), 2×2
-    key = grid_text(ex.cleaned)
+    key = grid_text(ex.answer.cleaned)
     open_chapter(page, site_url, 0)
     el = exercise(page, ex.id)
     assert el.get_attribute(ATTR.answerShape) == "2x2"
@@ -64,8 +68,8 @@ def test_a_matrix_is_filled_by_keyboard_and_graded_correct(page, site_url):
 
 def test_a_wrong_matrix_marks_exactly_the_wrong_entries_and_names_the_slip(page, site_url):
     ex = bank.get("3.7")  # F facing north, 3×3; its transpose differs in two entries
-    transposed = [list(col) for col in zip(*ex.cleaned)]
-    expected = set(wrong_entries(transposed, ex.cleaned))
+    transposed = [list(col) for col in zip(*ex.answer.cleaned)]
+    expected = wrong_entries(ex, transposed)
     assert len(expected) == 2
     open_chapter(page, site_url, 3)
     el = exercise(page, ex.id)
@@ -75,14 +79,14 @@ def test_a_wrong_matrix_marks_exactly_the_wrong_entries_and_names_the_slip(page,
     assert marked_entries(el) == expected
     assert el.get_attribute(ATTR.tag) == TAG.transpose
 
-    slip = ex.slips[1]  # dt left out: one entry differs
+    slip = ex.answer.slips[1]  # dt left out: one entry differs
     fill_matrix(el, grid_text(slip.value))
     assert check(el) == STATE.incorrect
-    assert marked_entries(el) == set(wrong_entries(slip.value, ex.cleaned))
+    assert marked_entries(el) == wrong_entries(ex, slip.value)
     assert el.get_attribute(ATTR.tag) == TAG.slip
     assert slip.message in el.locator(role("feedback")).inner_text()
 
-    fill_matrix(el, grid_text(ex.cleaned))
+    fill_matrix(el, grid_text(ex.answer.cleaned))
     assert check(el) == STATE.correct
     assert marked_entries(el) == set()  # the marks go once the entries are right
 
@@ -91,7 +95,7 @@ def test_an_empty_entry_is_marked_and_costs_no_attempt(page, site_url):
     ex = bank.get("0.7")
     open_chapter(page, site_url, 0)
     el = exercise(page, ex.id)
-    rows = grid_text(ex.cleaned)
+    rows = grid_text(ex.answer.cleaned)
     rows[1][0] = ""
     fill_matrix(el, rows)
     assert check(el) == STATE.invalid
@@ -100,7 +104,7 @@ def test_an_empty_entry_is_marked_and_costs_no_attempt(page, site_url):
 
 def test_a_pasted_matrix_fills_the_grid(page, site_url):
     ex = bank.get("3.8")  # P⁻, 3×3
-    key = grid_text(ex.cleaned)
+    key = grid_text(ex.answer.cleaned)
     open_chapter(page, site_url, 3)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
@@ -183,7 +187,7 @@ def test_a_derivation_ends_with_the_answer_as_typed(page, site_url):
 
 def test_a_matrix_answer_comes_back_after_a_reload_and_through_a_progress_file(page, site_url):
     ex = bank.get("0.7")
-    key = grid_text(ex.cleaned)
+    key = grid_text(ex.answer.cleaned)
     open_chapter(page, site_url, 0)
     el = exercise(page, ex.id)
     fill_matrix(el, key)
