@@ -139,9 +139,9 @@ def test_a_formula_is_read_back_typeset_and_an_equivalent_form_is_right(page, si
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
     assert el.get_attribute(ATTR.answerKind) == "expression"
-    assert el.get_attribute(ATTR.variables) == ",".join(ex.variables)
+    assert el.get_attribute(ATTR.variables) == ",".join(ex.answer.variables)
     label = el.locator(f'label[for="{el.locator(role("answer")).get_attribute("id")}"]')
-    expect(label.locator(".katex")).to_have_count(len(ex.variables))  # each variable typeset, none in error
+    expect(label.locator(".katex")).to_have_count(len(ex.answer.variables))  # each variable typeset, none in error
     assert el.locator(".katex-error").count() == 0
     answer = el.locator(role("answer"))
     answer.click()
@@ -171,7 +171,7 @@ def test_a_derivation_ends_with_the_answer_as_typed(page, site_url):
     cells = last.locator(role("worked-entry")).evaluate_all(
         "(els, a) => els.map(e => [Number(e.getAttribute(a.row)), Number(e.getAttribute(a.col)), e.textContent])",
         {"row": ATTR.row, "col": ATTR.col})
-    key = grid_text(shaped.cleaned)
+    key = grid_text(shaped.answer.cleaned)
     assert cells == [[i, j, key[i - 1][j - 1]] for i in (1, 2) for j in (1, 2)]
 
     formula = bank.get("7.7")
@@ -180,7 +180,7 @@ def test_a_derivation_ends_with_the_answer_as_typed(page, site_url):
     panel = reveal(el)
     last = panel.locator(":scope > *").last
     worked = last.locator(role("worked-answer"))
-    assert worked.inner_text() == formula.answer_text
+    assert worked.inner_text() == formula.answer.answer_text
     el.locator(role("answer")).fill(worked.inner_text())
     assert check(el) == STATE.correct
 
