@@ -208,3 +208,23 @@ def test_degrees_inside_a_formula_are_named():
 def test_the_worked_formula_typeset_is_accepted_back():
     ans = arm_x_answer()
     assert ans.check(ans.worked_tex()).status == "correct"
+
+
+from workbook.expr import InvalidAnswer as _Invalid  # noqa: E402
+
+_PIECES = st.sampled_from(["theta1", "theta2", "L1", "L2", "2", "0.5", "pi", "+", "-", "*", "/", "^2", "(", ")",
+                           "cos(", "sin(", "sqrt(", " ", "atan2(theta1, L1)", "cos theta1", "sin L2"])
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.lists(_PIECES, min_size=1, max_size=14).map("".join))
+def test_any_formula_shown_as_latex_reads_back_as_the_same_formula(text):
+    names = ("theta1", "theta2", "L1", "L2")
+    try:
+        read = parse_formula(text, names)
+    except _Invalid:
+        return
+    again = parse_formula(read.latex, names)
+    domain = {"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.5, 2.0), "L2": (0.5, 2.0)}
+    same = equivalent(again, lambda **env: read.evaluate(env), domain)
+    assert same is not False, (text, read.latex)

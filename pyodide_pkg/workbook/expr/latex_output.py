@@ -2,6 +2,8 @@
 
 >>> from workbook.expr.grammar import Grammar
 >>> from workbook.expr.parsing import parse_tree
+>>> latex(parse_tree("-v*sin(theta)*dt", Grammar(variables=frozenset({"v", "theta", "dt"}))))
+'-v\\\\sin\\\\theta \\\\cdot dt'
 >>> latex(parse_tree("L1 cos(theta1)/2", Grammar(variables=frozenset({"L1", "theta1"}))))
 '\\\\frac{L_{1}\\\\cos\\\\theta_{1}}{2}'
 """
@@ -119,6 +121,8 @@ def _latex_raw(node: tuple) -> str:
         return f"{_latex(a, 5)}^{{{_latex(b, 0)}}}"
     if op == "*":
         left, right = _latex(a, 2), _latex(b, 3)
+        if _ends_with_bare_call(a):  # \sin\theta \cdot dt: read back, "\sin\theta dt" would be ambiguous
+            return rf"{left} \cdot {right}"
         if _prec(b) == 3:
             return rf"{left} \cdot {_paren(right)}"
         if b[0] == "num" or (b[0] == "unit" and b[1][0] == "num"):
@@ -131,6 +135,21 @@ def _latex_raw(node: tuple) -> str:
     if _prec(b) == 3:
         right = _paren(right)
     return f"{left} {op} {right}"
+
+
+def _ends_with_bare_call(node: tuple) -> bool:
+    """The node, printed, ends with a function whose argument has no parentheses (``\\cos\\theta``)."""
+    while True:
+        if node[0] == "bin" and node[1] in "*^" and not (node[1] == "^" and node[2][0] == "call"):
+            node = node[3]
+        elif node[0] == "bin" and node[1] == "^":
+            node = node[2]
+        elif node[0] == "neg":
+            node = node[1]
+        else:
+            break
+    return (node[0] == "call" and node[1] in _FUNC_LATEX
+            and _func_arg(node[2][0]) == _latex(node[2][0], 0))
 
 
 def _func_arg(arg: tuple) -> str:

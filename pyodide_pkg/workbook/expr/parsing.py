@@ -251,7 +251,7 @@ def parse_tree(text: str, grammar: Grammar = SCALAR) -> tuple:
         raise InvalidAnswer("Type your answer as text, for example 0.5 or sqrt(2)/2.")
     if not text.strip():
         raise InvalidAnswer("Type an answer first: a number such as 0.5, or an expression such as sqrt(2)/2.")
-    if len(text) > MAX_LENGTH:
+    if len(text) > MAX_LENGTH * (3 if "\\" in text else 1):  # LaTeX says the same thing at greater length
         raise InvalidAnswer(f"That answer is too long (more than {MAX_LENGTH} characters); one number is expected.")
     s = normalise(text)
     m = PREFIX.match(s)

@@ -61,7 +61,7 @@ def normalise(text: str) -> str:
     >>> normalise("θ₂ = −45º × 2²"), normalise("∆t′"), normalise(r"\\frac{1}{2}")
     ('θ2 = -45° * 2^(2)', "Δt'", '((1)/(2))')
     """
-    if "\\" in text:
+    if "\\" in text or "_{" in text or "^{" in text:  # LaTeX: commands, or braced sub- and superscripts
         text = from_latex(text)
     if text.replace("°", "").isascii():  # nothing below changes ASCII text
         return text.strip()
