@@ -173,3 +173,20 @@ def bmatrix(rows) -> str:
     """
     body = " \\\\ ".join(" & ".join(fmt(v) for v in row) for row in rows)
     return f"\\begin{{bmatrix}} {body} \\end{{bmatrix}}"
+
+
+def relation_all(results, from_printed=None) -> str:
+    """:func:`relation` for a printed vector or matrix (numbers, or rows of numbers):
+    ``"="`` when every entry stands in that relation, else ``"\\approx"``.
+
+    >>> relation_all([[0, -1], [1, 0]]), relation_all([0.5, 2 ** 0.5])
+    ('=', '\\\\approx')
+    >>> relation_all((3.3460252, 1), (3.346, 1)), relation_all((3.3460652, 1), (3.346, 1))
+    ('=', '\\\\approx')
+    """
+    def flat(xs):
+        return [v for x in xs for v in (flat(x) if isinstance(x, (list, tuple)) else [x])]
+
+    values = flat(results)
+    printed = flat(from_printed) if from_printed is not None else [None] * len(values)
+    return "=" if all(relation(r, p) == "=" for r, p in zip(values, printed)) else "\\approx"

@@ -8,10 +8,9 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt, paren
+from ..number_format import fmt, paren, relation, shown
 from ..reference.linalg import add
 from ..reference.rotation2d import compose, det_rot2, rot2, rotate_2d
-from ..tolerance import clean
 from ..variants import Choice, Param, Vary
 from . import grid
 
@@ -43,7 +42,7 @@ def _composed_entry(p):
             Slip(det_rot2(math.radians(a + b)),
                  "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle."),
         ),
-        "values": {"total": fmt(a + b), "c": fmt(clean(key))},
+        "values": {"total": fmt(a + b), "c": fmt(key)},
     }
 
 
@@ -56,12 +55,14 @@ def _diagonal_point(p):
     tex = {"x": r"\cos\theta\,x - \sin\theta\,y", "y": r"\sin\theta\,x + \cos\theta\,y"}
     r = r"\sqrt2" if a == 1 else rf"{fmt(a)}\sqrt2"
     key, slip = (xr, yr) if axis == "x" else (yr, xr)
+    c = shown(math.cos(math.pi / 4))  # the statement's 0.7071, which the derivation multiplies
     return {
         "key": key,
         "title": f"Rotate ({fmt(a)}, {fmt(a)}) by 45°",
         "label": f"{axis}-coordinate of the rotated point",
         "slips": (Slip(slip, f"That is the {other}-coordinate. The {axis}-coordinate is {rules[axis]}."),),
-        "values": {"rule": tex[axis], "xr": fmt(clean(xr)), "yr": fmt(yr), "r": r, "answer": fmt(clean(key))},
+        "values": {"rule": tex[axis], "c": fmt(c), "xr": fmt(xr), "xrel": relation(xr, c * a - c * a), "yr": fmt(yr),
+                   "yrel": relation(yr, c * a + c * a), "r": r},
     }
 
 
@@ -96,8 +97,7 @@ def _whole_product(p):
                  f"That is the sum R({fmt(a)}°) + R({fmt(b)}°). Composing rotations multiplies the matrices; "
                  "the angles add, not the matrices."),
         ),
-        "values": {"total": fmt(total), "turn": turn, "x_to": x_to, "y_to": y_to,
-                   **{f"k{i}{j}": fmt(clean(v)) for i, row in enumerate(key, 1) for j, v in enumerate(row, 1)}},
+        "values": {"total": fmt(total), "turn": turn, "x_to": x_to, "y_to": y_to},
     }
 
 

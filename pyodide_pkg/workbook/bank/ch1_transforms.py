@@ -8,12 +8,12 @@ from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt, paren, signed
+from ..number_format import fmt, paren, relation_all, shown, signed
 from ..reference.linalg import matvec, transpose
 from ..reference.transform2d import apply, chain, inverse_transform, transform2d
-from ..tolerance import clean
 from ..variants import Param, Vary
 from . import grid
+from .checks import apart
 
 
 def _with(rot, t):
@@ -22,13 +22,15 @@ def _with(rot, t):
 
 
 def _terms(coefs, xs, const=None):
-    r"""A dot product written out in TeX, as the derivations print it: ``0 \cdot 2 + 1 \cdot 1 - 1``.
+    r"""A dot product written out in TeX, as the derivations print it: ``0 \cdot 2 + 1 \cdot 1 - 1``,
+    and its value computed from the numbers as printed.
 
     >>> _terms((-1, 0), (2, -2), 2)
-    '-1 \\cdot 2 + 0 \\cdot (-2) + 2'
+    ('-1 \\cdot 2 + 0 \\cdot (-2) + 2', 0.0)
     """
     parts = [f"{fmt(c) if k == 0 else signed(c)} \\cdot {paren(x)}" for k, (c, x) in enumerate(zip(coefs, xs))]
-    return " ".join(parts + ([signed(const)] if const is not None else []))
+    value = sum(shown(c) * shown(x) for c, x in zip(coefs, xs)) + (shown(const) if const is not None else 0.0)
+    return " ".join(parts + ([signed(const)] if const is not None else [])), value
 
 
 def _pure_translation(p):
@@ -55,7 +57,7 @@ def _turn_and_shift(p):
     wx, wy = apply(transform2d(tx, ty, math.pi / 2), d, 0)
     turned = apply(transform2d(0, 0, math.pi / 2), d, 0)
     shifted = apply(transform2d(tx, ty, 0), d, 0)
-    if clean(turned[1]) == clean(shifted[1]):
+    if not apart(turned[1], shifted[1]):
         left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives y = {fmt(turned[1])}, "
                                     f"and shifting it by ({fmt(tx)}, {fmt(ty)}) without turning also gives "
                                     f"y = {fmt(shifted[1])}. T rotates first, then adds t."),)
@@ -72,8 +74,7 @@ def _turn_and_shift(p):
                  "That is a clockwise turn. A heading of +90° turns the robot's x-axis onto the world's +y."),
         ),
         "values": {"distance": distance, "Distance": distance[0].upper() + distance[1:], "stx": signed(tx),
-                   "sty": signed(ty), "wx": fmt(clean(wx)), "wy": fmt(clean(wy)),
-                   "ty_turn": fmt(clean(turned[1])), "sx": fmt(shifted[0])},
+                   "sty": signed(ty), "wx": fmt(wx), "wy": fmt(wy), "ty_turn": fmt(turned[1]), "sx": fmt(shifted[0])},
     }
 
 
@@ -93,8 +94,7 @@ def _tool_point(p):
                  f"You added the offsets but skipped the tool frame's 90° turn: ({fmt(d)}, 0) in the tool frame "
                  "points along the base's y-axis."),
         ),
-        "values": {"bpx": fmt(clean(in_base[0])), "bpy": fmt(clean(in_base[1])), "wx": fmt(clean(wx)),
-                   "wy": fmt(clean(wy)), "verb": verb},
+        "values": {"bpx": fmt(in_base[0]), "bpy": fmt(in_base[1]), "wx": fmt(wx), "wy": fmt(wy), "verb": verb},
     }
 
 
@@ -116,6 +116,8 @@ def _inverse_pose(p):
     wx, wy = apply(T, 1, 0)  # the point 1 m ahead of the robot, in the world
     (c, s_), (ns, _) = RT
     default = (tx, ty, theta) == (2, 1, 90)
+    rt = [_terms(row, (tx, ty)) for row in RT]  # R^T t written out, and its value from the printed entries
+    chk = [_terms(row[:2], (wx, wy), row[2]) for row in key[:2]]  # T^-1 applied to the point ahead
     return {
         "key": key,
         "slips": (
@@ -131,16 +133,15 @@ def _inverse_pose(p):
             Slip(grid(T), "That is T itself, the robot's pose. The question asks for the transform that undoes it."),
         ),
         "values": {
-            "whose": "Exercise 1.2's" if default else "A",
-            "check_on": "exercise 1.2's answer" if default else "the point one metre straight ahead of the robot",
-            **{f"t{i}{j}": fmt(clean(T[i - 1][j - 1])) for i in (1, 2) for j in (1, 2)},
-            "r11": fmt(clean(c)), "r12": fmt(clean(s_)), "r21": fmt(clean(ns)),
-            "rt1_terms": _terms(RT[0], (tx, ty)), "rt2_terms": _terms(RT[1], (tx, ty)),
-            "rt1": fmt(clean(RT_t[0])), "rt2": fmt(clean(RT_t[1])),
-            "k13": fmt(clean(key[0][2])), "k23": fmt(clean(key[1][2])),
-            "wx": fmt(clean(wx)), "wy": fmt(clean(wy)),
-            "chk1": _terms(key[0][:2], (clean(wx), clean(wy)), clean(key[0][2])),
-            "chk2": _terms(key[1][:2], (clean(wx), clean(wy)), clean(key[1][2])),
+            "whose": "Exercise 1.2's robot, with the workbook's numbers," if default else "A robot",
+            "check_on": "exercise 1.2's answer with the workbook's numbers" if default
+                        else "the point one metre straight ahead of the robot",
+            **{f"t{i}{j}": fmt(T[i - 1][j - 1]) for i in (1, 2) for j in (1, 2)},
+            "r11": fmt(c), "r12": fmt(s_), "r21": fmt(ns),
+            "rt1_terms": rt[0][0], "rt2_terms": rt[1][0],
+            "rt_rel": relation_all(RT_t, [v for _, v in rt]), "rt1": fmt(RT_t[0]), "rt2": fmt(RT_t[1]),
+            "k13": fmt(key[0][2]), "k23": fmt(key[1][2]), "wx": fmt(wx), "wy": fmt(wy),
+            "chk1": chk[0][0], "chk2": chk[1][0], "chk_rel": relation_all((1, 0), [v for _, v in chk]),
         },
     }
 
@@ -152,6 +153,7 @@ def _inverse_pose_ok(p):
         return False
     c, s = math.cos(math.radians(p["theta"])), math.sin(math.radians(p["theta"]))
     return all(abs(v) < 1e-9 or abs(v) >= 0.5 for v in (c * p["tx"] + s * p["ty"], -s * p["tx"] + c * p["ty"]))
+
 
 EXERCISES = (
     Derive(

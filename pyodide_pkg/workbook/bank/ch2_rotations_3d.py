@@ -7,10 +7,9 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt, paren
+from ..number_format import fmt, paren, relation, relation_all, shown
 from ..reference.linalg import matvec
 from ..reference.rotation3d import quat_axis_angle, quat_from_axis_angle, quat_norm, rz
-from ..tolerance import clean
 from ..variants import Choice, Param, Vary
 from . import column
 
@@ -24,21 +23,15 @@ def _axis_text(axis):
     return ", ".join(map(str, _AXES[axis]))
 
 
-def _num4(x):
-    """A number with at least 4 significant digits, as the worked answer prints it (0.08716, 0.7071)."""
-    return fmt(clean(x))
+def _or_exact(x, value, tex):
+    """``tex``, the text's exact form of ``value`` (√2/2, ½), where x is that value; else x as printed."""
+    return tex if math.isclose(x, value) else fmt(x)
 
 
-def _root_half(x, tex):
-    """``tex`` (the text's exact form of √2/2) where x is ±√2/2, else the decimal."""
-    if math.isclose(abs(x), _QUARTER):
-        return tex if x > 0 else "-" + tex
-    return _num4(x)
-
-
-def _square(x):
-    """A square in the norm check: ``\\tfrac12`` where the text writes it so, else the decimal."""
-    return "\\tfrac12" if math.isclose(x, 0.5) else fmt(x)
+def _norm_check(q):
+    """The squares of q's components as printed, and = or ≈ before the 1 their root is said to be."""
+    squares = [c * c for c in q]
+    return squares, relation(1.0, math.sqrt(sum(map(shown, squares))))
 
 
 def _yaw_x_axis(p):
@@ -52,7 +45,7 @@ def _yaw_x_axis(p):
         "label": f"y-component of Rz({fmt(g)}°)·(1, 0, 0)ᵀ",
         "slips": (Slip(matvec(rz(-math.radians(g)), [1, 0, 0])[1],
                        "That is a clockwise yaw. A positive angle about z turns x towards y (right-hand rule)."),),
-        "values": {"c": _num4(c), "s": _num4(s), "ms": _num4(-s), "onto": word, "into": "into" if g == 90 else word},
+        "values": {"c": fmt(c), "s": fmt(s), "ms": fmt(-s), "onto": word, "into": "into" if g == 90 else word},
     }
 
 
@@ -60,6 +53,7 @@ def _quat_w(p):
     """2.3: the unit quaternion of θ about a coordinate axis; asked: its scalar part w."""
     t, axis = p["theta"], p["axis"]
     q = quat_from_axis_angle(_AXES[axis], math.radians(t))
+    squares, norm_rel = _norm_check(q)
     return {
         "key": q[0],
         "title": f"Quaternion for {fmt(t)}° about {axis}",
@@ -68,9 +62,9 @@ def _quat_w(p):
                        f"w = cos(θ/2) = cos {fmt(t / 2)}°."),),
         "values": {
             "half": fmt(t / 2), "n": _axis_text(axis),
-            "w_exact": _root_half(q[0], "\\tfrac{\\sqrt2}{2} \\approx 0.7071"),
-            "v": ", ".join(map(_num4, q[1:])), "q": ",\\ ".join(map(_num4, q)),
-            "squares": " + ".join(fmt(c * c) for c in q),
+            "w_surd": "\\tfrac{\\sqrt2}{2} \\approx " if math.isclose(q[0], _QUARTER) else "",
+            "w": fmt(q[0]), "v": ", ".join(map(fmt, q[1:])), "q": ",\\ ".join(map(fmt, q)),
+            "squares": " + ".join(map(fmt, squares)), "norm_rel": norm_rel,
         },
     }
 
@@ -102,7 +96,8 @@ def _quat_norm(p):
         "values": {
             "pw": paren(q[0]), "px": paren(q[1]), "py": paren(q[2]), "pz": paren(q[3]),
             "half": fmt(theta / 2), "theta": fmt(theta),
-            "axis": ", ".join(f"{a:.3f}" for a in axis), "signs": ", ".join(fmt(2 * c) for c in q[1:]),
+            "axis_rel": relation_all(axis), "axis": ", ".join(map(fmt, axis)),
+            "signs": ", ".join(fmt(2 * c) for c in q[1:]),
         },
     }
 
@@ -122,7 +117,7 @@ def _yaw_vector(p):
                  "You swapped x and y but lost a sign. A quarter turn about z sends (x, y) to (−y, x)."),
         ),
         "values": {"px": paren(v[0]), "py": paren(v[1]), "x2": fmt(v[0] ** 2), "y2": fmt(v[1] ** 2),
-                   "z2": fmt(v[2] ** 2), "rx": fmt(turned[0]), "ry": fmt(turned[1])},
+                   "z2": fmt(v[2] ** 2)},
     }
 
 
@@ -131,6 +126,7 @@ def _quat_whole(p):
     t, axis = p["theta"], p["axis"]
     n, rad = _AXES[axis], math.radians(t)
     q = quat_from_axis_angle(n, rad)
+    squares, norm_rel = _norm_check(q)
     view = "seen from above" if axis == "z" else f"seen from the +{axis} side"
     return {
         "key": column(q),
@@ -149,9 +145,9 @@ def _quat_whole(p):
         "values": {
             "half": fmt(t / 2), "a": "an" if axis == "x" else "a",  # "an x part", "a z part"
             "n": _axis_text(axis), "nx": str(n[0]), "ny": str(n[1]), "nz": str(n[2]),
-            **{f"e{c}": _root_half(q[_SLOT[c]], "\\sqrt2/2") for c in "wxyz"},
-            **{f"d{c}": _num4(q[_SLOT[c]]) for c in "wxyz"},
-            "w2": _square(q[0] ** 2), "v2": _square(sum(c * c for c in q[1:])), "back": fmt(360 - t),
+            **{f"e{c}": _or_exact(q[_SLOT[c]], _QUARTER, "\\sqrt2/2") for c in "wxyz"},
+            "w2": _or_exact(squares[0], 0.5, "\\tfrac12"), "v2": _or_exact(sum(squares[1:]), 0.5, "\\tfrac12"),
+            "norm_rel": norm_rel, "back": fmt(360 - t),
         },
     }
 
@@ -210,7 +206,7 @@ EXERCISES = (
     Derive(
         id="2.6",
         title="Yaw a whole vector",
-        answer=matrix(),
+        answer=matrix(names=("x", "y", "z")),
         vary=Vary(_yaw_vector, *(Param(c, d, -5, 5, 1, avoid=(0,)) for c, d in zip("xyz", (2, 1, 3)))),
     ),
     Derive(
@@ -218,6 +214,7 @@ EXERCISES = (
         title="The whole quaternion for 90° about z",
         answer=matrix(
             label="q = (w, x, y, z)ᵀ",
+            names=("w", "x", "y", "z"),
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
         ),
         vary=Vary(_quat_whole, Param("theta", 90, 10, 170, 10, unit="°"), Choice("axis", "z", ("x", "y", "z"))),

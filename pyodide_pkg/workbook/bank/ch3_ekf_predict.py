@@ -1,7 +1,6 @@
 """Chapter 3 · EKF prediction step."""
 
 import math
-from fractions import Fraction
 
 from ..kinds.debug import Debug
 from ..answer_kinds.base import Slip
@@ -10,31 +9,22 @@ from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt
+from ..number_format import bmatrix, fmt, pi_frac, relation
 from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
 from ..reference.linalg import add, matmul, sub, identity, transpose
-from ..tolerance import agrees, clean
+from ..tolerance import clean
 from ..variants import Choice, Param, Vary
 from . import grid
+from .checks import apart, slips_apart
+from .heading_column import heading_column_formula
 
 _P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
 _Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
 _EAST, _NORTH = 0.0, math.pi / 2
-_PRINTED_37, _PRINTED_38 = (2, 0.5), (1, 1)  # (v, dt) as the workbook prints 3.7 and 3.8 (variant 0)
+_PRINTED_38 = (1, 1)  # (v, dt) as the workbook prints 3.8 (variant 0): exercise 3.4's
 
 
 # ---- helpers for the variants -------------------------------------------------
-def _sig(x: float) -> str:
-    """A derived number as the derivation prints it: 4 decimals, 4 significant digits when small."""
-    return fmt(clean(x))
-
-
-def _bm(m) -> str:
-    """A matrix in TeX as the chapter writes it: ``\\begin{bmatrix} 1 & 0 \\\\ 0 & 1 \\end{bmatrix}``."""
-    rows = " \\\\ ".join(" & ".join(fmt(clean(v)) for v in row) for row in m)
-    return f"\\begin{{bmatrix}} {rows} \\end{{bmatrix}}"
-
-
 def _diag(a: float, b: float, c: float):
     return [[a, 0, 0], [0, b, 0], [0, 0, c]]
 
@@ -44,30 +34,14 @@ def _metres(d: float, one: str) -> str:
     return one if math.isclose(d, 1.0) else f"{fmt(d)} metres"
 
 
-def _pi_frac(deg: int, tfrac: bool = False) -> str:
-    """An angle in degrees as a multiple of π in TeX: 45 -> ``\\pi/4`` (or ``\\tfrac{\\pi}{4}``), -30 -> ``-\\pi/6``.
+def _tfrac(deg: int) -> str:
+    """An angle of whole degrees as a small fraction of π in TeX: 45 -> ``\\tfrac{\\pi}{4}`` (``pi_frac`` prints it).
 
-    >>> _pi_frac(45), _pi_frac(-35), _pi_frac(45, tfrac=True), _pi_frac(180)
-    ('\\\\pi/4', '-7\\\\pi/36', '\\\\tfrac{\\\\pi}{4}', '\\\\pi')
+    >>> _tfrac(45), _tfrac(-35), _tfrac(180)
+    ('\\\\tfrac{\\\\pi}{4}', '-\\\\tfrac{7\\\\pi}{36}', '\\\\pi')
     """
-    f = Fraction(int(deg), 180)
-    sign, n, d = "-" if f < 0 else "", abs(f.numerator), f.denominator
-    top = "\\pi" if n == 1 else f"{n}\\pi"
-    if d == 1:
-        return sign + top
-    return f"{sign}\\tfrac{{{top}}}{{{d}}}" if tfrac else f"{sign}{top}/{d}"
-
-
-def _apart(key, slips) -> bool:
-    """No slip agrees with the key or with another slip (numbers or matrices), in either direction."""
-    def same(a, b) -> bool:
-        if isinstance(a, (tuple, list)):
-            return all(same(x, y) for x, y in zip(a, b))
-        a, b = clean(a), clean(b)
-        return agrees(a, b) or agrees(b, a)
-
-    values = [key, *(s.value for s in slips)]
-    return not any(same(values[i], values[j]) for i in range(len(values)) for j in range(i + 1, len(values)))
+    top, _, bottom = pi_frac(abs(deg)).partition("/")
+    return ("-" if deg < 0 else "") + (f"\\tfrac{{{top}}}{{{bottom}}}" if bottom else top)
 
 
 # ---- 3.1 ------------------------------------------------------------------------
@@ -107,8 +81,7 @@ def _drive_east(p):
 
 def _drive_east_ok(p) -> bool:
     """The slips (y′, sin for x, no start, no dt) are told apart from the key and each other."""
-    f = _drive_east(p)
-    return _apart(f["key"], f["slips"])
+    return slips_apart(_drive_east(p))
 
 
 # ---- 3.2 ------------------------------------------------------------------------
@@ -120,19 +93,19 @@ def _drive_at_heading(p):
     d = v * dt
     slips = [Slip(motion_model((0, 0, theta), v, 0, 1)[1],
                   f"You left out dt. The robot drives for {fmt(dt)} s, so it covers v·dt = {fmt(d)} m, not {fmt(v)} m.")]
-    if not agrees(clean(xn), clean(yn)):
+    if apart(xn, yn):
         slips.append(Slip(xn, "That is x′, the cosine share. The new y takes the sine: y′ = y + v·sinθ·dt."))
     even = math.isclose(abs(math.cos(theta)), abs(math.sin(theta)))
-    arg = _pi_frac(deg, tfrac=True)
+    arg = _tfrac(deg)
     return {
         "key": yn,
         "slips": tuple(slips),
         "values": {
-            "rad": _pi_frac(deg),
+            "rad": pi_frac(deg),
             "targ": arg if deg > 0 else f"\\left({arg}\\right)",
             "vdt": "" if math.isclose(d, 1.0) else fmt(d),
-            "sdeg": f"{deg}°" if deg > 0 else f"({deg}°)",
-            "xn": _sig(xn), "yn": _sig(yn), "d": fmt(d),
+            "sdeg": f"{fmt(deg)}°" if deg > 0 else f"({fmt(deg)}°)",
+            "xn": fmt(xn), "yn": fmt(yn), "x_rel": relation(xn), "y_rel": relation(yn), "d": fmt(d),
             "split": "evenly" if even else "by the cosine and sine of the heading",
         },
     }
@@ -140,9 +113,8 @@ def _drive_at_heading(p):
 
 def _drive_at_heading_ok(p) -> bool:
     """Neither coordinate is zero (no heading along an axis), and the slips stay apart."""
-    f = _drive_at_heading(p)
     x, y = motion_model((0, 0, math.radians(p["theta"])), p["v"], 0, p["dt"])[:2]
-    return abs(x) >= 0.01 and abs(y) >= 0.01 and _apart(f["key"], f["slips"])
+    return abs(x) >= 0.01 and abs(y) >= 0.01 and slips_apart(_drive_at_heading(p))
 
 
 # ---- 3.3 ------------------------------------------------------------------------
@@ -163,8 +135,7 @@ def _north_f13(p):
 
 def _north_f13_ok(p) -> bool:
     """Leaving out dt must give another number (dt ≠ 1 is also excluded from the grid)."""
-    f = _north_f13(p)
-    return _apart(f["key"], f["slips"])
+    return slips_apart(_north_f13(p))
 
 
 # ---- 3.4 and 3.8 ------------------------------------------------------------------
@@ -209,8 +180,8 @@ def _covariance_entry(p):
         "key": Pm[i][i],
         "label": f"P⁻({entry})",
         "slips": tuple(slips),
-        "values": {"f23": fmt(f23), "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm),
-                   "p22m": fmt(Pm[1][1]), "p23m": fmt(Pm[1][2]), "asked": asked, "ans": fmt(Pm[i][i])},
+        "values": {"f23": fmt(f23), "FP": bmatrix(FP), "FPF": bmatrix(FPF), "Pm": bmatrix(Pm),
+                   "p22m": fmt(Pm[1][1]), "p23m": fmt(Pm[1][2]), "asked": asked},
     }
 
 
@@ -218,8 +189,7 @@ def _covariance_entry_ok(p) -> bool:
     """y grows more than x (the derivation says so), and the slips stay apart."""
     if not p["q22"] + (p["v"] * p["dt"]) ** 2 * p["p33"] > p["q11"]:
         return False
-    f = _covariance_entry(p)
-    return _apart(f["key"], f["slips"])
+    return slips_apart(_covariance_entry(p))
 
 
 def _predicted_covariance(p):
@@ -244,13 +214,11 @@ def _predicted_covariance(p):
         "key": grid(Pm),
         "slips": tuple(slips),
         "values": {
-            "src": "the numbers of exercise 3.4" if printed else "these numbers",
-            "same": "the same" if printed else "with",
-            "pdef": "" if printed else f" = \\operatorname{{diag}}({fmt(_P[0][0])}, {fmt(_P[1][1])}, {fmt(_P[2][2])})",
-            "qdef": "" if printed else f" = \\operatorname{{diag}}({fmt(_Q[0][0])}, {fmt(_Q[1][1])}, {fmt(_Q[2][2])})",
-            "fsrc": "Exercise 3.4's hint gives" if printed else "At this heading and step,",
-            "fdef": "" if printed else f" = {_bm(F)}",
-            "FP": _bm(FP), "FPF": _bm(FPF), "Pm": _bm(Pm), "f23": fmt(f23),
+            "src": "the workbook's numbers of exercise 3.4" if printed else "these numbers",
+            "pdef": f"\\operatorname{{diag}}({fmt(_P[0][0])}, {fmt(_P[1][1])}, {fmt(_P[2][2])})",
+            "qdef": f"\\operatorname{{diag}}({fmt(_Q[0][0])}, {fmt(_Q[1][1])}, {fmt(_Q[2][2])})",
+            **{f"q{i}{i}": fmt(_Q[i - 1][i - 1]) for i in (1, 2, 3)},
+            "F": bmatrix(F), "FP": bmatrix(FP), "FPF": bmatrix(FPF), "f23": fmt(f23),
             "gain": _heading_gain(f23, _P[2][2]), "metres": _metres(f23, "a metre"), "p23m": fmt(Pm[1][2]),
         },
     }
@@ -258,8 +226,7 @@ def _predicted_covariance(p):
 
 def _predicted_covariance_ok(p) -> bool:
     """The slips (no Q, no F, Fᵀ P F, F₂₃ once) stay apart from the key and from each other."""
-    f = _predicted_covariance(p)
-    return _apart(f["key"], f["slips"])
+    return slips_apart(_predicted_covariance(p))
 
 
 # ---- 3.7 ------------------------------------------------------------------------
@@ -286,78 +253,14 @@ def _north_jacobian(p):
             "f13": fmt(F[0][2]),
             "travel": _metres(d, "one metre"),
             "dx": "-\\delta\\theta" if math.isclose(d, 1.0) else f"-{fmt(d)}\\,\\delta\\theta",
-            "col": "0, 1, 1" if (v, dt) == _PRINTED_37 else "0, v\\,dt, 1",  # 3.4's column as printed
+            "vdt": fmt(d),
         },
     }
 
 
 def _north_jacobian_ok(p) -> bool:
     """Leaving out dt must change F (dt ≠ 1 is also excluded from the grid); the slips stay apart."""
-    f = _north_jacobian(p)
-    return _apart(f["key"], f["slips"])
-
-
-# ---- 3.9 ------------------------------------------------------------------------
-def _f13(v, theta, dt):
-    return motion_jacobian((0.0, 0.0, theta), v, 0.0, dt)[0][2]
-
-
-def _f23(v, theta, dt):
-    return motion_jacobian((0.0, 0.0, theta), v, 0.0, dt)[1][2]
-
-
-_HEADING_COLUMN = {
-    "1,3": {
-        "key": _f13, "answer_text": "-v*sin(theta)*dt",
-        "values": {"Fij": "F_{13}", "coord": "x", "model": "x' = x + v\\cos\\theta\\,dt",
-                   "rhs": "x + v\\cos\\theta\\,dt", "deriv": "-v\\sin\\theta\\,dt", "trig": "\\cos\\theta",
-                   "ref": "Exercise 3.3"},
-        "at": (1, math.pi / 2, 0.5, "\\pi/2"),
-        "slips": (
-            Slip(lambda v, theta, dt: v * math.sin(theta) * dt,
-                 "The sign is flipped: the derivative of cos θ is −sin θ."),
-            Slip(lambda v, theta, dt: -v * math.cos(theta) * dt,
-                 "That differentiates to cos θ. x′ contains v cos θ dt, whose derivative by θ is −v sin θ dt."),
-            Slip(lambda v, theta, dt: -v * math.sin(theta),
-                 "You left out dt: the robot drives for dt seconds, so every displacement carries a factor dt."),
-            Slip(lambda v, theta, dt: v * math.cos(theta) * dt,
-                 "That is F(2,3), the derivative of y′. F(1,3) is the derivative of x′ = x + v cos θ dt."),
-        ),
-    },
-    "2,3": {
-        "key": _f23, "answer_text": "v*cos(theta)*dt",
-        "values": {"Fij": "F_{23}", "coord": "y", "model": "y' = y + v\\sin\\theta\\,dt",
-                   "rhs": "y + v\\sin\\theta\\,dt", "deriv": "v\\cos\\theta\\,dt", "trig": "\\sin\\theta",
-                   "ref": "The (2,3) entry of exercise 3.4's F"},
-        "at": (1, 0.0, 1, "0"),
-        "slips": (
-            Slip(lambda v, theta, dt: -v * math.cos(theta) * dt,
-                 "The sign is flipped: the derivative of sin θ is +cos θ, with no minus."),
-            Slip(lambda v, theta, dt: v * math.sin(theta) * dt,
-                 "That is the term itself, not its derivative. y′ contains v sin θ dt, whose derivative by θ "
-                 "is v cos θ dt."),
-            Slip(lambda v, theta, dt: v * math.cos(theta),
-                 "You left out dt: the robot drives for dt seconds, so every displacement carries a factor dt."),
-            Slip(lambda v, theta, dt: -v * math.sin(theta) * dt,
-                 "That is F(1,3), the derivative of x′. F(2,3) is the derivative of y′ = y + v sin θ dt."),
-        ),
-    },
-}
-
-
-def _heading_column_formula(p):
-    """3.9: an entry of F's heading column, F(1,3) or F(2,3), as a formula in v, θ, dt."""
-    case = _HEADING_COLUMN[p["entry"]]
-    v, theta, dt, theta_tex = case["at"]
-    return {
-        "title": f"F({p['entry']}) as a formula",
-        "label": f"F({p['entry']})",
-        "key": case["key"],
-        "answer_text": case["answer_text"],
-        "slips": case["slips"],
-        "values": {**case["values"], "rv": fmt(v), "rth": theta_tex, "rdt": fmt(dt),
-                   "rval": fmt(case["key"](v, theta, dt))},
-    }
+    return slips_apart(_north_jacobian(p))
 
 
 def _predict_pose(x, y, theta, v, omega, dt):
@@ -453,8 +356,8 @@ EXERCISES = (
         id="3.7",
         title="The whole Jacobian F facing north",
         answer=matrix(label="F"),
-        vary=Vary(_north_jacobian, Param("v", _PRINTED_37[0], 0.5, 3, 0.5, unit=" m/s"),
-                  Param("dt", _PRINTED_37[1], 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_jacobian_ok),
+        vary=Vary(_north_jacobian, Param("v", 2, 0.5, 3, 0.5, unit=" m/s"),
+                  Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_jacobian_ok),
     ),
     Derive(
         id="3.8",
@@ -470,6 +373,6 @@ EXERCISES = (
             variables=("v", "theta", "dt"),
             domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},
         ),
-        vary=Vary(_heading_column_formula, Choice("entry", "1,3", ("1,3", "2,3"))),
+        vary=Vary(heading_column_formula, Choice("entry", "1,3", ("1,3", "2,3"))),
     ),
 )
