@@ -9,7 +9,7 @@ from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt, paren
+from ..number_format import fixed, fmt, paren, relation, shown
 from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
 from ..variants import Choice, Param, Vary
 from . import grid
@@ -22,12 +22,6 @@ _H_PRED = range_bearing(_POSE, _LANDMARK)
 _SIGHTING = (Param("x", 0, -2, 2, 1), Param("y", 0, -2, 2, 1), Param("lx", 3, -5, 5, 1), Param("ly", 4, -5, 5, 1))
 
 
-def _dec(x, places):
-    """``x`` to at most ``places`` decimals, without trailing zeros (53.13, 45, -135)."""
-    s = f"{x:.{places}f}".rstrip("0").rstrip(".")
-    return "0" if s in ("-0", "") else s
-
-
 def _sighting(p):
     """The offsets and distances of a sighting, and the strings every derivation of it prints."""
     pose, landmark = (p["x"], p["y"], 0), (p["lx"], p["ly"])
@@ -38,12 +32,12 @@ def _sighting(p):
     r = range_bearing(pose, landmark)[0]
     return {
         "pose": pose, "landmark": landmark, "dx": dx, "dy": dy, "q": q, "r": r, "whole": whole,
-        "rq_plain": fmt(r) if whole else f"√{q} ≈ {fmt(r)}",  # √q in a slip's words
+        "rq_plain": fmt(r) if whole else f"√{fmt(q)} ≈ {fmt(r)}",  # √q in a slip's words
         "values": {
             "px": paren(p["x"]), "py": paren(p["y"]), "dx": fmt(dx), "dy": fmt(dy),
             "dx2": fmt(dx * dx), "dy2": fmt(dy * dy), "q": fmt(q), "r": fmt(r),
             "rq": fmt(r) if whole else f"\\sqrt{{{q}}}",  # √q in TeX: exact
-            "req": "=" if whole else "\\approx",
+            "req": relation(r),
         },
     }
 
@@ -69,15 +63,16 @@ def _predicted_bearing(p):
     """4.2: the bearing of the landmark (lx, ly) from the robot at (x, y) facing east, in degrees."""
     s = _sighting(p)
     phi = range_bearing(s["pose"], s["landmark"])[1]
+    deg = math.degrees(phi)
     dx, dy = fmt(s["dx"]), fmt(s["dy"])
     return {
-        "key": math.degrees(phi),
+        "key": deg,
         "slips": (
             Slip(math.degrees(math.atan2(s["dx"], s["dy"])),
                  f"The arguments are swapped. atan2 takes (dy, dx): atan2({dy}, {dx}), measured from the x-axis."),
         ),
-        "values": {**s["values"], "setup": "Same setup" if p == _DEFAULT_SIGHTING else "New setup",
-                   "rad": fmt(phi), "deg": _dec(math.degrees(phi), 2)},
+        "values": {**s["values"], "rad": fmt(phi), "rad_rel": relation(phi), "deg": fmt(deg),
+                   "deg_rel": relation(deg, math.degrees(shown(phi)))},
     }
 
 
@@ -85,7 +80,7 @@ def _range_slope(p):
     """4.3: H(1,1) = −dx/√q, how fast the range changes as the robot steps along x."""
     s = _sighting(p)
     H = measurement_jacobian(s["pose"], s["landmark"])
-    deg = _dec(math.degrees(range_bearing(s["pose"], s["landmark"])[1]), 2)
+    deg = math.degrees(range_bearing(s["pose"], s["landmark"])[1])
     return {
         "key": H[0][0],
         "slips": (
@@ -94,7 +89,8 @@ def _range_slope(p):
                                     "it is the bearing row that divides by q."),
         ),
         "values": {**s["values"], "h11": fmt(H[0][0]), "size": fmt(abs(H[0][0])),
-                   "phi": f"{deg}°" if not deg.startswith("-") else f"({deg}°)"},
+                   "cos_rel": relation(abs(H[0][0]), math.cos(math.radians(shown(deg)))),
+                   "phi": f"{fmt(deg)}°" if deg >= 0 else f"({fmt(deg)}°)"},
     }
 
 
@@ -109,7 +105,7 @@ def _range_innovation(p):
                  "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
             Slip(y[1], "That is the bearing innovation, the second component. The range is the first."),
         ),
-        "values": {"zr1": f"{p['zr']:.1f}", "hr1": f"{p['hr']:.1f}", "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
+        "values": {"zr1": fixed(p["zr"], 1), "hr1": fixed(p["hr"], 1), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
                    "closer": "closer" if closer else "farther", "pull": "pull" if closer else "push",
                    "towards": "towards" if closer else "away from"},
     }
@@ -134,7 +130,7 @@ def _whole_jacobian(p):
                  "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
                  f"the range row divides by √q = {s['rq_plain']} (only the bearing row divides by q)."),
             Slip(grid([H[0], [dy / q ** 0.5, -dx / q ** 0.5, -1.0]]),
-                 f"The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = {q}."),
+                 f"The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = {fmt(q)}."),
             Slip(grid([H[0], [H[1][0], H[1][1], 0.0]]),
                  "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
                  "it by −δθ."),
@@ -142,13 +138,10 @@ def _whole_jacobian(p):
                  "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
                  "dx = lx − x, so moving the robot by +δx shrinks dx."),
         ),
-        "values": {**s["values"], **{f"h{i}{j}": fmt(H[i - 1][j - 1]) for i in (1, 2) for j in (1, 2)},
-                   "as_in": "as in exercises 4.1 to 4.3" if p == _DEFAULT_SIGHTING else "a new sighting",
-                   "away": fmt(s["r"]) if s["whole"] else f"about {s['r']:.1f}"},
+        "values": {**s["values"],
+                   "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{q}}} {relation(s['r'])} {fmt(s['r'])}"},
     }
 
-
-_DEFAULT_SIGHTING = {q.name: q.default for q in _SIGHTING}
 
 
 def _over_q(sign, top):
@@ -226,9 +219,9 @@ def _jacobian_entry_formula(p):
         f_tex, f_def, f_of = r"\phi", f"\\phi = {_ATAN2} - \\theta", _ATAN2
         inner = "-dy/(dx^2 + dy^2)" if j == 0 else "dx/(dx^2 + dy^2)"
         inner_frac = "\\frac{-dy}{dx^2 + dy^2}" if j == 0 else "\\frac{dx}{dx^2 + dy^2}"
-    example = measurement_jacobian((0.0, 0.0, 0.0), _LANDMARK)[i][j]  # at 4.3's numbers, dx = 3 and dy = 4
+    example = measurement_jacobian((0.0, 0.0, 0.0), _LANDMARK)[i][j]  # dx = 3, dy = 4
     q0 = _LANDMARK[0] ** 2 + _LANDMARK[1] ** 2
-    at_default = entry == "2,1"
+    shown_as = f"{minus}{_LANDMARK[0] if top == 'dx' else _LANDMARK[1]}/{math.isqrt(q0) if i == 0 else q0}"
     return {
         "key": lambda dx, dy: measurement_jacobian((0.0, 0.0, 0.0), (dx, dy))[i][j],
         "answer_text": f"{minus}{top}/{den}",
@@ -238,11 +231,8 @@ def _jacobian_entry_formula(p):
             "ij": f"{i + 1}{j + 1}", "fn": f_tex, "var": var, "dvar": dvar,
             "what": "range" if i == 0 else "bearing", "fdef": f_def, "fop": f_of, "inner": inner,
             "inner_frac": inner_frac, "result": f"{minus}\\frac{{{top}}}{{{den_tex}}}",
-            "answer": f"{minus}\\dfrac{{{top}}}{{{den_tex}}}",
-            "at": "At exercise 4.3's numbers" if at_default else
-                  f"For a landmark {_LANDMARK[0]} m ahead and {_LANDMARK[1]} m to the left",
-            "example": f"{minus}{_LANDMARK[0] if top == 'dx' else _LANDMARK[1]}/{math.isqrt(q0) if i == 0 else q0}",
-            "example_value": fmt(example), "tail": "the\nentry of 4.7" if at_default else f"the ({entry}) entry of H there",
+            "ahead": fmt(_LANDMARK[0]), "left": fmt(_LANDMARK[1]),
+            "example": shown_as, "example_rel": relation(example), "example_value": fmt(example),
             "move": f"+{var}", "where": where, "condition": condition, "effect": effect, "follows": follows,
         },
     }

@@ -7,7 +7,7 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt, paren
+from ..number_format import bmatrix, fmt, is_exact, paren, relation
 from ..reference.linalg import det2
 from ..reference.pose_graph import (
     edge_error,
@@ -25,16 +25,9 @@ _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
 # Exercise 5.6: pose 1 sits at (2, 1) facing north; the prose turns the motion with R(90°).
 _XI = (2.0, 1.0, math.pi / 2)
-# Exercise 5.2's own numbers: 5.6's derivation says when it is that motion.
-_H52 = (1.1, 0.05, 0.02)
 _WORDS = ("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen "
           "sixteen seventeen eighteen nineteen").split()
 _TENS = "twenty thirty forty fifty sixty seventy eighty ninety".split()
-
-
-def _prose(x: float) -> str:
-    """A number in running text (outside math): a real minus sign."""
-    return fmt(x).replace("-", "−")
 
 
 def _times(r: float) -> str:
@@ -46,11 +39,6 @@ def _times(r: float) -> str:
         return _WORDS[k]
     tens, ones = divmod(k, 10)
     return _TENS[tens - 2] + (f"-{_WORDS[ones]}" if ones else "")
-
-
-def _two(x: float) -> str:
-    """An entry to two decimals, as the answer line prints it (66.67, -33.33, 1000)."""
-    return fmt(round(x, 2))
 
 
 def _pose_count(p):
@@ -72,6 +60,8 @@ def _odometry_error(p):
     """5.2: e = z₁₂ − (x₂ − x₁) for pose 1 at the origin; asked: its x-component."""
     x2 = (p["x2"], p["y2"], p["t2"])
     e = edge_error_simple(_X1, x2, _Z12)
+    exact = edge_error(_X1, x2, _Z12)[0]
+    change = abs(exact - e[0]) / abs(e[0])
     return {
         "key": e[0],
         "slips": (
@@ -82,10 +72,11 @@ def _odometry_error(p):
             "dx": fmt(x2[0] - _X1[0]), "dy": fmt(x2[1] - _X1[1]), "dt": fmt(x2[2] - _X1[2]),
             "ex": fmt(e[0]), "ey": fmt(e[1]), "et": fmt(e[2]),
             "sign": "negative" if e[0] < 0 else "positive",
-            "gap": _prose(abs(e[0])),
+            "gap": fmt(abs(e[0])),
             "apart": "further apart" if e[0] < 0 else "closer together",
-            "exact": fmt(edge_error(_X1, x2, _Z12)[0]),
-            "heading": _prose(x2[2]),
+            "exact": fmt(exact),
+            "heading": fmt(x2[2]),
+            "changes": "barely changes it" if change < 0.01 else f"changes it by about {round(100 * change)} %",
         },
     }
 
@@ -137,9 +128,6 @@ def _turned_edge_error(p):
     h = relative_pose(_XI, xj)
     e = edge_error_relative(_XI, xj, _Z12)
     world = edge_error_simple(_XI, xj, _Z12)
-    same = all(abs(a - b) < 1e-9 for a, b in zip(h, _H52))
-    motion = ("exercise 5.2's motion" if same else
-              f"the motion of exercise 5.2 with x₂ = [{', '.join(_prose(v) for v in h)}]")
     return {
         "key": column(e),
         "slips": (
@@ -158,7 +146,6 @@ def _turned_edge_error(p):
             "hx": fmt(h[0]), "hy": fmt(h[1]), "ht": fmt(h[2]),
             "ex": fmt(e[0]), "ey": fmt(e[1]), "et": fmt(e[2]),
             "wx": fmt(world[0]), "wy": fmt(world[1]), "wt": fmt(world[2]),
-            "motion": motion,
         },
     }
 
@@ -175,6 +162,7 @@ def _correlated_information(p):
     s, b, t = p["s"], p["b"], p["t"]
     omega = information_matrix(sigma)
     det = det2([row[:2] for row in sigma[:2]])
+    block = [row[:2] for row in omega[:2]]
     return {
         "key": grid(omega),
         "slips": (
@@ -190,9 +178,9 @@ def _correlated_information(p):
                  "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal."),
         ),
         "values": {
-            "det": fmt(det), "mb": fmt(-b),
-            "wt": fmt(omega[2][2]), "w11": _two(omega[0][0]), "inv_s": fmt(1 / s),
-            "a11": _two(omega[0][0]), "a12": _two(omega[0][1]), "a22": _two(omega[1][1]), "a33": _two(omega[2][2]),
+            "det": fmt(det), "mb": fmt(-b), "wt": fmt(omega[2][2]), "inv_s": fmt(1 / s),
+            "w11": fmt(omega[0][0]), "w11_rel": relation(omega[0][0]),
+            "block": bmatrix(block), "block_rel": "=" if all(is_exact(v) for row in block for v in row) else "\\approx",
         },
     }
 
@@ -257,7 +245,7 @@ EXERCISES = (
     Derive(
         id="5.6",
         title="Edge error from a turned pose",
-        answer=matrix(label="e₁₂ = (eₓ, e_y, e_θ)ᵀ"),
+        answer=matrix(label="e₁₂ = (eₓ, e_y, e_θ)ᵀ", names=("e_x|x", "e_y|y", "e_θ|θ"), units=("m", "m", "rad")),
         vary=Vary(_turned_edge_error, Param("x2", 1.95, 1.9, 2.1, 0.05, unit=" m"),
                   Param("y2", 2.1, 1.7, 2.4, 0.1, unit=" m"), Param("t2", 0.02, 0.01, 0.05, 0.01, unit=" rad")),
     ),

@@ -8,43 +8,17 @@ from ..answer_kinds.number import number
 from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt, paren
+from ..number_format import approx, fmt, paren, relation, shown, signed
 from ..reference.arm import (
     cos_elbow,
     forward_kinematics_2link,
     inverse_kinematics_2link,
     is_reachable,
 )
-from ..tolerance import agrees
 from ..variants import Choice, Param, Vary
+from .checks import apart, slips_apart
 
 _T1, _T2 = math.radians(30), math.radians(45)
-
-
-def _four(x):
-    """A value to four decimals as the text prints it: 0.8660, but an exact 0.5 stays 0.5."""
-    return fmt(x) if math.isclose(x, round(x, 4), abs_tol=1e-12) else f"{x:.4f}"
-
-
-def _signed4(x):
-    """A following term to four decimals: ``+ 0.2588`` or ``- 0.3420``."""
-    s = _four(x)
-    return f"- {s[1:]}" if s.startswith("-") else f"+ {s}"
-
-
-def _words(x):
-    """A number in a message, with a true minus sign: −90."""
-    return fmt(x).replace("-", "−")
-
-
-def _apart(key, values, *, periodic=False):
-    """True when no two of key, *values are the same answer (angles in degrees: give or take whole turns)."""
-    seen = [key]
-    for v in values:
-        if any(agrees(v + 360 * k, s) for s in seen for k in ((-1, 0, 1) if periodic else (0,))):
-            return False
-        seen.append(v)
-    return True
 
 
 def _straight_reach(p):
@@ -73,25 +47,24 @@ def _bent_reach(p):
                  f"You used cos {fmt(t2)}° for link 2. Its direction is θ1 + θ2 = {fmt(t1 + t2)}°: joint angles "
                  "add up along the chain."),
             Slip(y, "That is the y-coordinate. For x use the cosines."),
-            Slip(c12, f"That is link 2's share alone. Add link 1's L1·cos θ1 = {_four(c1)}."),
+            Slip(c12, f"That is link 2's share alone. Add link 1's L1·cos θ1 = {fmt(c1)}."),
         ),
         "values": {
-            "t12": fmt(t1 + t2), "c1": _four(c1), "s1": _four(s1), "c12": _four(c12), "s12": _four(s12),
-            "c12s": _signed4(c12), "s12s": _signed4(s12), "x": _four(x), "y": _four(y),
-            "r": fmt(round(math.hypot(x, y), 2)),
+            "t12": fmt(t1 + t2), "c1": fmt(c1), "s1": fmt(s1), "c12": fmt(c12), "s12": fmt(s12),
+            "c12s": signed(c12), "s12s": signed(s12), "x": fmt(x), "y": fmt(y), "xp": paren(x), "yp": paren(y),
+            "r": fmt(math.hypot(x, y)), "r_rel": relation(math.hypot(x, y), math.hypot(shown(x), shown(y))),
         },
     }
 
 
 def _bent_reach_well_posed(p):
-    """6.2: the tip's x is not near 0; every slip lies well away from the key and from each other; and the
-    four-decimal values the statement gives add up to the four-decimal x and y the derivation prints."""
+    """6.2: the tip's x is not near 0; the key and the slips are told apart; and the four-decimal
+    values the statement gives add up to the x and y the derivation prints (the worked answer)."""
     made = _bent_reach(p)
-    v, answers = made["values"], [made["key"], *(s.value for s in made["slips"])]
-    adds_up = all(_four(float(v[a]) + float(v[b])) == v[total] for a, b, total in (("c1", "c12", "x"),
-                                                                                    ("s1", "s12", "y")))
-    return adds_up and abs(made["key"]) >= 0.1 and all(
-        abs(a - b) > 0.01 for i, a in enumerate(answers) for b in answers[i + 1:])
+    v = {name: shown(float(text)) for name, text in made["values"].items() if name in ("c1", "s1", "c12", "s12")}
+    x, y = forward_kinematics_2link(1, 1, math.radians(p["t1"]), math.radians(p["t2"]))
+    adds_up = relation(x, v["c1"] + v["c12"]) == relation(y, v["s1"] + v["s12"]) == "="
+    return adds_up and abs(made["key"]) >= 0.1 and slips_apart(made)
 
 
 _ALONG = {(1, 0): "x", (0, 1): "y", (-1, 0): "-x", (0, -1): "-y"}  # link 1's direction, as the text names it
@@ -104,6 +77,14 @@ def _unit(angle):
     return round(math.cos(angle)), round(math.sin(angle))
 
 
+def _elbow_side(target, elbow):
+    """Where the elbow sits, seen from the base looking at the target: left or right of that line,
+    and above or below it (the target is never straight above the base here)."""
+    (x, y), (ex, ey) = target, elbow
+    side = "left" if x * ey - y * ex > 0 else "right"
+    return side, "above" if ey > y / x * ex else "below"
+
+
 def _diagonal_ik(p):
     """6.3: unit links reaching a diagonal target (±1, ±1); asked: θ2 or θ1 of one elbow branch, in degrees."""
     x, y, asked, branch = p["x"], p["y"], p["asked"], p["branch"]
@@ -111,41 +92,43 @@ def _diagonal_ik(p):
     down = branch == "elbow-down"
     mine, twin = (sol.elbow_down, sol.elbow_up) if down else (sol.elbow_up, sol.elbow_down)
     other, rel = ("elbow-up", "≥") if down else ("elbow-down", "≤")
-    t1d, t1u = math.degrees(sol.elbow_down[0]), math.degrees(sol.elbow_up[0])
+    t1, t2 = math.degrees(mine[0]), math.degrees(mine[1])
     phi = math.degrees(math.atan2(y, x))
-    elbow, elbow_up = _unit(sol.elbow_down[0]), _unit(sol.elbow_up[0])
-    target = f"atan2({_words(y)}, {_words(x)})"
+    share = phi - t1  # the angle the elbow adds: atan2(L2 sin θ2, L1 + L2 cos θ2)
+    elbow, elbow_twin = _unit(mine[0]), _unit(twin[0])
+    side, above = _elbow_side((x, y), elbow)
+    target = f"atan2({fmt(y)}, {fmt(x)})"
     if asked == "θ2":
-        key = math.degrees(mine[1])
+        key = t2
         slips = [
             Slip(cos_elbow(1, 1, x, y), "That is cos θ2. The angle whose cosine is 0 is what is asked."),
-            Slip(math.degrees(twin[1]), f"{_words(math.degrees(twin[1]))}° is a valid pose too: the {other} solution. "
+            Slip(math.degrees(twin[1]), f"{fmt(math.degrees(twin[1]))}° is a valid pose too: the {other} solution. "
                                         f"This exercise asks for the {branch} one, θ2 {rel} 0."),
-            Slip(phi, f"{_words(phi)}° is the direction of the target, {target}; it goes into θ1, not θ2."),
+            Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}; it goes into θ1, not θ2."),
         ]
     else:
-        key, share = math.degrees(mine[0]), phi - math.degrees(mine[0])
+        key = t1
         slips = [
-            Slip(math.degrees(twin[0]), f"{_words(math.degrees(twin[0]))}° is θ1 of the {other} pose. "
+            Slip(math.degrees(twin[0]), f"{fmt(math.degrees(twin[0]))}° is θ1 of the {other} pose. "
                                         f"This exercise asks for the {branch} one, θ2 {rel} 0."),
-            Slip(phi, f"{_words(phi)}° is the direction of the target, {target}. θ1 also takes away the angle the "
-                      f"elbow adds: atan2(L2 sin θ2, L1 + L2 cos θ2) = {_words(share)}°."),
+            Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}. θ1 also takes away the angle the "
+                      f"elbow adds: atan2(L2 sin θ2, L1 + L2 cos θ2) = {fmt(share)}°."),
         ]
-        theta2 = math.degrees(mine[1])
-        if _apart(key, [s.value for s in slips] + [theta2], periodic=True):
-            slips.append(Slip(theta2, "That is θ2, the elbow angle. This asks for θ1, the shoulder angle."))
+        if apart(key, *(s.value for s in slips), t2, turn=360):
+            slips.append(Slip(t2, "That is θ2, the elbow angle. This asks for θ1, the shoulder angle."))
     return {
         "key": key,
         "label": f"{asked} ({branch}, θ2 {rel} 0)",
         "periodic": asked == "θ1",  # a shoulder angle give or take a whole turn is the same pose
         "slips": tuple(slips),
         "values": {
-            "px": paren(x), "py": paren(y), "phi": fmt(phi), "t1d": fmt(t1d), "t1u": fmt(t1u),
+            "px": paren(x), "py": paren(y), "phi": fmt(phi), "pm": "" if down else "-",
+            "t1": fmt(t1), "t2": fmt(t2), "s2": fmt(math.sin(mine[1])), "minus_share": signed(-share),
             "along": _ALONG[elbow], "ex": fmt(elbow[0]), "ey": fmt(elbow[1]),
-            "rise": _HEADS[(x - elbow[0], y - elbow[1])],
-            "eux": fmt(elbow_up[0]), "euy": fmt(elbow_up[1]),
+            "rise": _HEADS[(x - elbow[0], y - elbow[1])], "side": side, "above": above,
+            "other": other, "t1o": fmt(math.degrees(twin[0])), "t2o": fmt(math.degrees(twin[1])),
+            "eox": fmt(elbow_twin[0]), "eoy": fmt(elbow_twin[1]),
             "asked_tex": "\\theta_2" if asked == "θ2" else "\\theta_1", "rel_tex": "\\ge" if down else "\\le",
-            "ans": fmt(key),
         },
     }
 
@@ -174,7 +157,8 @@ def _fk_formula(p):
                  "That puts both links at θ1 + θ2. Link 1 points at θ1 alone."),
         ),
         "values": {"fn": "\\" + fn, "identity": identity,
-                   "at62": _four(forward_kinematics_2link(1, 1, _T1, _T2)[i])},
+                   "at62": fmt(forward_kinematics_2link(1, 1, _T1, _T2)[i]),
+                   "at62_rel": relation(forward_kinematics_2link(1, 1, _T1, _T2)[i])},
     }
 
 # Exercise 6.4: the arm L1 = 2, L2 = 1 reaches the annulus 1 ≤ r ≤ 3.
@@ -216,10 +200,10 @@ EXERCISES = (
                    "Reachable, just: it is exactly $|L_1 - L_2| = 1$ away, the inner edge, reached with the elbow folded back "
                    "($\\theta_2 = 180°$)."),
             Option("c", "$(2, 1)$",
-                   "Reachable: $\\sqrt{4 + 1} \\approx 2.24$ lies between 1 and 3, inside the annulus, so there are two "
+                   f"Reachable: $\\sqrt{{4 + 1}} {approx(math.sqrt(5))}$ lies between 1 and 3, inside the annulus, so there are two "
                    "elbow solutions."),
             Option("d", "$(3, 1)$",
-                   "Right. $\\sqrt{9 + 1} = \\sqrt{10} \\approx 3.16 > L_1 + L_2 = 3$: beyond full stretch. "
+                   f"Right. $\\sqrt{{9 + 1}} = \\sqrt{{10}} {approx(math.sqrt(10))} > L_1 + L_2 = 3$: beyond full stretch. "
                    "$\\cos\\theta_2$ would come out above 1, which no angle has."),
         ),
     ),
