@@ -133,6 +133,13 @@ def _diagonal_ik(p):
     }
 
 
+def _elbow_as_defined(p):
+    """6.3: the chapter's definition holds: elbow-down (θ2 ≥ 0) keeps the elbow right of the base-target
+    line, elbow-up (θ2 ≤ 0) left of it; the derivation says so in words."""
+    made = _diagonal_ik(p)
+    return made["values"]["side"] == ("right" if p["branch"] == "elbow-down" else "left")
+
+
 def _fk_formula(p):
     """6.6: the tip's x or y as a formula in θ1, θ2, L1, L2."""
     coord = p["coord"]
@@ -186,7 +193,8 @@ EXERCISES = (
         title="IK: the elbow angle",
         answer=number(label="θ2 (elbow-down, θ2 ≥ 0)", unit="°", angle="deg"),
         vary=Vary(_diagonal_ik, Param("x", 1, -1, 1, 2), Param("y", 1, -1, 1, 2),
-                  Choice("asked", "θ2", ("θ2", "θ1")), Choice("branch", "elbow-down", ("elbow-down", "elbow-up"))),
+                  Choice("asked", "θ2", ("θ2", "θ1")), Choice("branch", "elbow-down", ("elbow-down", "elbow-up")),
+                  valid=_elbow_as_defined),
     ),
     Trace(
         id="6.4",
