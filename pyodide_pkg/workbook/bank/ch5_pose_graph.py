@@ -7,7 +7,7 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import bmatrix, fmt, is_exact, paren, relation
+from ..number_format import bmatrix, fmt, paren, relation, relation_all
 from ..reference.linalg import det2
 from ..reference.pose_graph import (
     edge_error,
@@ -180,7 +180,7 @@ def _correlated_information(p):
         "values": {
             "det": fmt(det), "mb": fmt(-b), "wt": fmt(omega[2][2]), "inv_s": fmt(1 / s),
             "w11": fmt(omega[0][0]), "w11_rel": relation(omega[0][0]),
-            "block": bmatrix(block), "block_rel": "=" if all(is_exact(v) for row in block for v in row) else "\\approx",
+            "block": bmatrix(block), "block_rel": relation_all(block),
         },
     }
 
