@@ -119,6 +119,15 @@ def approx(x: float) -> str:
     return f"{relation(x)} {fmt(x)}"
 
 
+def prose(x: float) -> str:
+    """A number in running text or a message, with a true minus sign: ``−0.5``.
+
+    >>> prose(-0.5), prose(2)
+    ('−0.5', '2')
+    """
+    return fmt(x).replace("-", "\u2212")
+
+
 def paren(x: float) -> str:
     """A number as a factor in TeX: negative ones in parentheses.
 

@@ -296,3 +296,8 @@ def test_any_printed_matrix_reads_back(rows):
     assert ans.check(ans.worked_text()).status == "correct"
     assert ans.check(ans.worked_tex()).status == "correct"
     assert ans.check(ans.typed(ans.key)).status == "correct"
+
+
+def test_swapped_components_of_a_named_vector_are_named():
+    verdict = pose().check("x = 3.5, y = 5.866, θ = 0.6236")
+    assert verdict.tag == "rows-swapped" and verdict.message == "The values of x and y are swapped."

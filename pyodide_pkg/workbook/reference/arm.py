@@ -75,8 +75,8 @@ def inverse_kinematics_2link(L1: float, L2: float, x: float, y: float) -> IKSolu
     θ2 = ±acos(cos θ2) and θ1 = atan2(y, x) − atan2(L2 sin θ2, L1 + L2 cos θ2).
     ``elbow_down`` takes θ2 ≥ 0 and ``elbow_up`` θ2 ≤ 0: seen from the base
     looking at the target, the elbow then sits to the right, respectively the
-    left, of the line to the target (above it for targets in the upper half
-    plane). At the edge of the workspace the two coincide.
+    left, of the line to the target (so elbow-up is above that line for a target
+    to the right of the base, x > 0). At the edge of the workspace the two coincide.
 
     Raises ``ValueError`` when the target is out of reach.
 

@@ -71,7 +71,8 @@ def mark(ans: "MatrixAnswer", readings: list[list[Reading]]) -> Verdict:
     said = _trig_degrees(ans, readings, wrong)
     if said:
         return said
-    for tag, message in whole_matrix_slips(values, key, rotation_angle=ans.rotation_angle):
+    names = tuple(name.split("|")[0] for name in ans.names)
+    for tag, message in whole_matrix_slips(values, key, rotation_angle=ans.rotation_angle, names=names):
         return Verdict("incorrect", message, tag=tag, data=data)
     close = [[i, j] for i, j in wrong if is_close_miss(values[i - 1][j - 1], key[i - 1][j - 1], rel=ans.rel_tol,
                                                          half_unit=readings[i - 1][j - 1].half_unit)]

@@ -60,9 +60,11 @@ def _degrees_as_radians(key: Matrix, theta: float) -> Matrix | None:
     return out if changed else None
 
 
-def whole_matrix_slips(got: Matrix, key: Matrix, *, rotation_angle: float | None = None) -> list[tuple[str, str]]:
+def whole_matrix_slips(got: Matrix, key: Matrix, *, rotation_angle: float | None = None,
+                       names: tuple[str, ...] = ()) -> list[tuple[str, str]]:
     """Known whole-matrix slips that ``got`` matches, most specific first: ``(tag, message)``.
 
+    ``names`` are a vector's components' names, in reading order (the swap then names them).
     Tags: transpose, inverse, sine-sign, degrees, rows-swapped, columns-swapped,
     negated. Each is tried only where it differs from the key by more than the
     tolerance. ``rotation_angle`` (radians) is the angle the key was built from;
@@ -101,13 +103,16 @@ def whole_matrix_slips(got: Matrix, key: Matrix, *, rotation_angle: float | None
         candidates.append(("degrees", "Those values come from the angle in degrees read as radians: set the "
                            "calculator to degrees, or multiply by π/180 first.",
                            lambda: _degrees_as_radians(key, theta)))
+    def swapped(what: str, a: int, b: int) -> str:  # a vector's components by their names
+        return (f"The values of {names[a]} and {names[b]} are swapped." if names
+                else f"{what} {a + 1} and {b + 1} are swapped.")
+
     for a in range(n_rows):
         for b in range(a + 1, n_rows):
-            candidates.append(("rows-swapped", f"Rows {a + 1} and {b + 1} are swapped.",
-                               lambda a=a, b=b: _swap_rows(key, a, b)))
+            candidates.append(("rows-swapped", swapped("Rows", a, b), lambda a=a, b=b: _swap_rows(key, a, b)))
     for a in range(n_cols):
         for b in range(a + 1, n_cols):
-            candidates.append(("columns-swapped", f"Columns {a + 1} and {b + 1} are swapped.",
+            candidates.append(("columns-swapped", swapped("Columns", a, b),
                                lambda a=a, b=b: _swap_columns(key, a, b)))
     candidates.append(("negated", "Every sign is flipped: the whole matrix is negated.",
                        lambda: [[-v for v in row] for row in key]))
