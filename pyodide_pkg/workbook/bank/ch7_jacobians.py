@@ -8,7 +8,7 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
-from ..number_format import fmt, paren, signed
+from ..number_format import approx, bmatrix, fmt, paren, relation, shown, signed
 from ..reference.arm import (
     end_effector_velocity,
     forward_kinematics_2link,
@@ -19,8 +19,6 @@ from ..reference.arm import (
 )
 from ..variants import Choice, Param, Vary
 from . import grid
-
-_J = jacobian_2link(1, 1, 0, math.pi / 2)  # exercise 7.1's Jacobian, as 7.2 and 7.7 quote it
 
 _BUGGY = """\
 import math
@@ -35,14 +33,11 @@ def jacobian_2link(L1, L2, t1, t2):
 """
 
 
-def _angle(deg: float) -> str:
-    """An angle as the text writes it: ``0`` bare, any other with its degree sign."""
-    return "0" if deg == 0 else f"{fmt(deg)}°"
-
-
-def _sin_arg(deg: float) -> str:
-    """The argument of sin/cos in TeX: ``0``, ``30°``, ``(-30°)``."""
-    return f"({_angle(deg)})" if deg < 0 else _angle(deg)
+def _angle(deg: float, argument: bool = False) -> str:
+    """An angle as the chapter writes it: ``0`` bare, any other with its degree sign; as the
+    argument of sin or cos (``argument=True``), a negative one in parentheses: ``(-30°)``."""
+    s = "0" if deg == 0 else f"{fmt(deg)}°"
+    return f"({s})" if argument and deg < 0 else s
 
 
 def _jacobian_entry(p):
@@ -51,6 +46,7 @@ def _jacobian_entry(p):
     t2 = 90 - t1
     J = jacobian_2link(L, L, math.radians(t1), math.radians(t2))
     s1, c1 = math.sin(math.radians(t1)), math.cos(math.radians(t1))
+    det = jacobian_det(L, L, math.radians(t1), math.radians(t2))
     slips = [Slip(-J[0][0], "Check the sign, and the entry: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), "
                   f"negative here (the derivative of cos is −sin). +{fmt(J[1][0])} is J(2,1), the derivative of y.")]
     if t1 != 0:  # −J(1,1) and J(2,1) part ways: each slip gets its own message
@@ -65,29 +61,34 @@ def _jacobian_entry(p):
         "key": J[0][0],
         "slips": tuple(slips),
         "values": {
-            "deg1": "" if t1 == 0 else "°", "t2": fmt(t2), "a1": _sin_arg(t1), "s1": fmt(s1),
+            "deg1": "" if t1 == 0 else "°", "t2": fmt(t2), "a1": _angle(t1, argument=True), "s1": fmt(s1),
             "m1": fmt(-L * s1), "l1c": fmt(L * c1),
             "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]),
-            "det": fmt(jacobian_det(L, L, math.radians(t1), math.radians(t2))),
+            "r11": relation(J[0][0], shown(-L * s1) - L), "r21": relation(J[1][0], shown(L * c1)),
+            "det": fmt(det), "rdet": relation(det, -shown(J[0][1]) * shown(J[1][0])),
         },
     }
 
 
+def _root2(k: float) -> str:
+    """k·√2 in TeX: ``\\sqrt2``, ``1.5\\sqrt2``."""
+    return "\\sqrt2" if math.isclose(k, 1) else f"{fmt(k)}\\sqrt2"
+
+
 def _tip_velocity(p):
-    """7.2: (ẋ, ẏ) = J (θ̇1, 0) with exercise 7.1's Jacobian; asked: ẋ."""
-    w = p["w1"]
-    v = end_effector_velocity(_J, [w, 0])
-    speed = math.hypot(*v)
-    root = "\\sqrt2" if abs(w) == 1 else f"{fmt(abs(w))}\\sqrt2"
+    """7.2: (ẋ, ẏ) = J (θ̇1, 0) at θ = (0, 90°) with equal links L, J printed in the statement; asked: ẋ."""
+    L, w = p["L"], p["w1"]
+    J = jacobian_2link(L, L, 0, math.pi / 2)
+    v = end_effector_velocity(J, [w, 0])
     return {
         "key": v[0],
         "slips": (
             Slip(v[1], "That is ẏ, from the second row of J. ẋ comes from the first row."),
-            Slip(end_effector_velocity(_J, [w, w])[0], "θ̇2 is 0, so the second column of J contributes nothing."),
+            Slip(end_effector_velocity(J, [w, w])[0], "θ̇2 is 0, so the second column of J contributes nothing."),
         ),
-        "values": {"pw": paren(w), "col1": "column 1" if w == 1 else f"{fmt(w).replace('-', '−')} times column 1", "xd": fmt(v[0]), "yd": fmt(v[1]),
-                   "j11": fmt(_J[0][0]), "j12": fmt(_J[0][1]), "pj12": paren(_J[0][1]), "j21": fmt(_J[1][0]), "j22": fmt(_J[1][1]),
-                   "speed": f"{root} \\approx {speed:.2f}"},
+        "values": {"J": bmatrix(J), "pw": paren(w), "xd": fmt(v[0]), "yd": fmt(v[1]),
+                   "j11": fmt(J[0][0]), "pj12": paren(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
+                   "radius": _root2(L), "speed": f"{_root2(abs(w) * L)} {approx(math.hypot(*v))}"},
     }
 
 
@@ -118,17 +119,17 @@ def _best_elbow(p):
         ),
         "values": {"w2": "" if L == 1 else fmt(L * L), "wmax": fmt(wmax),
                    "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
-                   "ratio": fmt(round(velocity_ratio(J), 1))},
+                   "ratio": fmt(velocity_ratio(J))},
     }
 
 
 def _link2_direction(deg: float) -> str:
-    """Where link 2 points, in words (the text says it outside math)."""
-    d = (deg + 180) % 360 - 180 or 0
-    d = 180 if d == -180 else d
-    words = {90: "straight up", -90: "straight down", 0: "straight along the positive x-axis",
+    """Where link 2 points, in words (the text says it outside math): an angle counter-clockwise
+    from the x-axis, from 0° to 360°, so that no minus sign stands in prose."""
+    d = deg % 360
+    words = {90: "straight up", 270: "straight down", 0: "straight along the positive x-axis",
              180: "straight along the negative x-axis"}
-    return words.get(d, f"at {fmt(d).replace('-', '−')}° from the x-axis")
+    return words.get(d, f"at {fmt(d)}° from the x-axis, counter-clockwise")
 
 
 def _unit_jacobian(p):
@@ -223,7 +224,7 @@ def _jacobian_formula(p):
     r, c = (int(k) for k in entry.strip("()").split(","))
     answer, tex, equals, slips = _FORMULAS[r, c]
     coord, joint = "xy"[r - 1], c
-    at71 = jacobian_2link(1, 1, 0, math.pi / 2)[r - 1][c - 1]
+    at71 = jacobian_2link(1, 1, 0, math.pi / 2)[r - 1][c - 1]  # exercise 7.1's own numbers: unit links at (0, 90°)
     return {
         "key": _entry(r - 1, c - 1),
         "answer_text": answer,
@@ -236,9 +237,9 @@ def _jacobian_formula(p):
             "carries": "the whole arm, so both links appear" if joint == 1 else "link 2 alone, so only link 2 appears",
             "equals": equals,
             "turning": "the base" if joint == 1 else "the elbow",
-            "ref71": "Exercise 7.1 is this formula" if (r, c) == (1, 1) else "Exercise 7.1 works this formula out",
+            "ref71": "the entry exercise 7.1 asks for" if (r, c) == (1, 1) else "as exercise 7.1's derivation finds",
             "at71": fmt(at71),
-            "formula": tex.format(s=" "), "formula2": tex.format(s=""),
+            "formula2": tex.format(s=""),
         },
     }
 
@@ -254,7 +255,7 @@ EXERCISES = (
         id="7.2",
         title="End-effector velocity",
         answer=number(label="ẋ", unit="m/s"),
-        vary=Vary(_tip_velocity, Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))),
+        vary=Vary(_tip_velocity, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))),
     ),
     Derive(
         id="7.3",

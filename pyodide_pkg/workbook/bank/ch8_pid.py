@@ -14,11 +14,6 @@ from ..variants import Choice, Param, Vary
 from . import column
 
 
-def _minus(x):
-    """A number in a message, with a typographic minus: −1."""
-    return fmt(x).replace("-", "−")
-
-
 def _p_step(p):
     """8.1: the output Kp·e of P control, with e = target − actual."""
     e = p["target"] - p["actual"]
@@ -53,9 +48,21 @@ def _three_steps(p):
     }
 
 
-def _against(a, b):
-    """−1, 0 or 1 as ``a`` is below, at or above ``b`` (equal within float noise)."""
-    return 0 if math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-12) else (1 if a > b else -1)
+def _i_share(I, P) -> str:
+    """How the I term stands to the P term (P > 0), as 8.2 and 8.7 put it in words:
+    ``"little"`` (at most a third of P), ``"smaller"``, ``"almost"`` (70 % of P or more),
+    ``"equal"`` (within float noise) or ``"more"``."""
+    if math.isclose(I, P, rel_tol=1e-9, abs_tol=1e-12):
+        return "equal"
+    share = I / P
+    return "more" if share > 1 else "almost" if share >= 0.7 else "smaller" if share > 1 / 3 else "little"
+
+
+_ADDS = {"little": "a little", "smaller": "a smaller push", "almost": "almost as much again",  # 8.2: "I adds …"
+         "equal": "as much again", "more": "even more"}
+_PUSHES = {"little": "still adds a smaller push", "smaller": "still adds a smaller push",  # 8.7: "I … and …"
+           "almost": "still pushes\nalmost as hard", "equal": "pushes just as hard",  # the page breaks the line there
+           "more": "pushes harder still"}
 
 
 def _shrinking(p):
@@ -88,14 +95,14 @@ def _pid_output(p):
         "key": u,
         "slips": (
             Slip(P + I, f"You left out the D term. The error fell from {fmt(e1)} to {fmt(e2)}, so "
-                        f"Kd·(e[2] − e[1])/dt = {_minus(D)}."),
+                        f"Kd·(e[2] − e[1])/dt = {fmt(D)}."),
             Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times),
             Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
             Slip(P + Ki * e2 * dt + D,
                  f"The I term integrates every error so far ({fmt(e0)} + {fmt(e1)} + {fmt(e2)}), not only the current one."),
         ),
         "values": {**t["values"], "Ds": signed(D), "u": fmt(u), "pile": fmt((e0 + e1 + e2) * dt),
-                   "more": ("a little", "as much again", "even more")[_against(I, P) + 1]},
+                   "more": _ADDS[_i_share(I, P)]},
     }
 
 
@@ -106,12 +113,12 @@ def _falling_error_d_term(p):
     return {
         "key": D,
         "slips": (
-            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {_minus(ek - ep)}. "
+            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {fmt(ek - ep)}. "
                      "A falling error gives a negative D."),
             Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}."),
             Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second."),
         ),
-        "values": {"de": fmt(ek - ep), "D": fmt(D), "drop": fmt(ep - ek), "rate": fmt((ek - ep) / dt),
+        "values": {"de": fmt(ek - ep), "kde": fmt(Kd * (ek - ep)), "D": fmt(D), "drop": fmt(ep - ek), "rate": fmt((ek - ep) / dt),
                    "span": _SPANS[dt]},
     }
 
@@ -130,14 +137,6 @@ def _pid_terms(p):
     t = _three_steps(p)
     (e0, e1, e2), P, I, D = t["errors"], t["P"], t["I"], t["D"]
     at_default = p == {q.name: q.default for q in _THREE_STEPS}
-    if _against(I, P) > 0:
-        push = "pushes harder still"
-    elif _against(I, P) == 0:
-        push = "pushes just as hard"
-    elif I >= 0.7 * P:
-        push = "still pushes\nalmost as hard"  # the page breaks the line there
-    else:
-        push = "still adds a smaller push"
     return {
         "key": column(pid_terms(t["errors"], **t["gains"])),
         "slips": (
@@ -149,7 +148,7 @@ def _pid_terms(p):
             Slip(column((P, i_term(t["errors"][:2], p["Ki"], p["dt"]), D)),
                  f"The I term stops one step short: the integral includes the current error e[2] = {fmt(e2)}."),
         ),
-        "values": {**t["values"], "u": fmt(pid_sequence(t["errors"], **t["gains"])[2]), "push": push,
+        "values": {**t["values"], "u": fmt(pid_sequence(t["errors"], **t["gains"])[2]), "push": _PUSHES[_i_share(I, P)],
                    "lead": "Take exercise 8.2 again" if at_default else "Take three PID steps",
                    "total": "exercise 8.2's" if at_default else "the output"},
     }
@@ -247,7 +246,7 @@ EXERCISES = (
     Derive(
         id="8.7",
         title="The three terms, one by one",
-        answer=matrix(label="(P, I, D)ᵀ at step 2"),
+        answer=matrix(label="the terms at step 2", names=("P", "I", "D")),
         vary=Vary(_pid_terms, *_THREE_STEPS, valid=_falling_fast),
     ),
 )
