@@ -1,7 +1,10 @@
 """Chapter 9 · Capstone: one navigation cycle, end to end.
 
-The keys chain: each step starts from the previous step's computed value, at
-full precision (the page prints them to four decimals, well within tolerance).
+The keys chain as a learner carries the numbers by hand: each step starts from
+the previous step's answer *as the page prints it* (four decimals), states that
+value, and computes its own key from it with the reference code. So 9.3 and 9.4
+start from 9.2's printed pose (5.8660, 3.5, 0.6236), 9.5 from 9.4's printed K
+(0.7143), and 9.6 from 9.4's printed x⁺ (5.7474).
 
 Every Derive exercise draws variants. 9.2, 9.7 and 9.8 draw the predict step's
 own inputs (pose, v, ω, dt); 9.3, 9.4 and 9.6 keep the value carried in from
@@ -12,91 +15,28 @@ numbers are that exercise's own.
 """
 
 import math
-from fractions import Fraction
 
 from ..answer_kinds.base import Slip
 from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
-from ..number_format import fmt
+from ..number_format import approx, fmt, paren, pi_frac, relation, shown, signed
 from ..reference.ekf import ekf_update, motion_jacobian, motion_model, range_bearing
 from ..reference.pid import p_term
 from ..variants import Choice, Param, Vary
 from . import column
+from .checks import slips_apart
 
 _START = (5.0, 3.0, math.pi / 6)
 _V, _OMEGA, _DT = 1.0, 0.1, 1.0
-_PRED = motion_model(_START, _V, _OMEGA, _DT)          # (5.8660, 3.5, 0.6236)
+_PRED_FULL = motion_model(_START, _V, _OMEGA, _DT)     # 9.2's answer, printed (5.8660, 3.5, 0.6236)
+_PRED = tuple(shown(v) for v in _PRED_FULL)            # ... and carried as printed into 9.3 and 9.4
 _LANDMARK = (10.0, 7.0)                                # range 5.4166 from _PRED
 _P, _Z, _R = 0.5, 5.7, 0.2
-_X_UPD, _P_UPD = ekf_update(_PRED[0], _P, _Z, _R)      # 5.7474, 0.1429
-_K = 1 - _P_UPD / _P                                   # K = P/(P+R), read back from (1−K)P
+_X_UPD = shown(ekf_update(_PRED[0], _P, _Z, _R)[0])    # 9.4's answer as printed, 5.7474, carried into 9.6
+_K = shown(_P / (_P + _R))                             # 9.4's K as printed, 0.7143, carried into 9.5
 _TARGET, _KP = 10.0, 0.5                               # command 2.1263 m/s from _X_UPD
-
-# ---- Formatting and checks shared by the generators ---------------------------
-APART = 3e-3  # a slip must differ from the key (and from the other slips) by more than this, relatively
-
-
-def _exact4(x: float) -> bool:
-    """The number has at most 4 decimals (up to float noise)."""
-    return abs(x - round(x, 4)) < 1e-9
-
-
-def dec(x: float) -> str:
-    """A derivation's number: as typed when it has at most 4 decimals, else to 4 decimals.
-
-    >>> dec(3.5), dec(5.8660254), dec(-0.166025), dec(0.7142857)
-    ('3.5', '5.8660', '-0.1660', '0.7143')
-    """
-    if _exact4(x):
-        return fmt(x)
-    s = f"{x:.4f}"
-    return "0.0000" if s == "-0.0000" else s
-
-
-def pi_frac(degrees: int, tex: bool = True) -> str:
-    """An angle of whole degrees as a fraction of π: TeX (``\\pi/6``) or text (``π/6``).
-
-    >>> pi_frac(30), pi_frac(25), pi_frac(75, tex=False), pi_frac(90)
-    ('\\\\pi/6', '5\\\\pi/36', '5π/12', '\\\\pi/2')
-    """
-    f = Fraction(int(degrees), 180)
-    pi = r"\pi" if tex else "π"
-    top = pi if f.numerator == 1 else f"{f.numerator}{pi}"
-    return top if f.denominator == 1 else f"{top}/{f.denominator}"
-
-
-def approx(x: float) -> str:
-    """``= 0.5`` when the number is exact at 4 decimals, else ``\\approx 0.9063`` (TeX).
-
-    >>> approx(0.5000000000000001), approx(math.cos(math.radians(25)))
-    ('= 0.5', '\\\\approx 0.9063')
-    """
-    return f"= {fmt(x)}" if _exact4(x) else f"\\approx {dec(x)}"
-
-
-def dec_paren(x: float) -> str:
-    """A derivation's number as a factor: ``(-0.1660)``, or ``0.1340`` when positive."""
-    s = dec(x)
-    return f"({s})" if s.startswith("-") else s
-
-
-def dec_signed(x: float) -> str:
-    """A derivation's number as a following term: ``- 0.1186`` or ``+ 0.0950``."""
-    s = dec(x)
-    return f"- {s[1:]}" if s.startswith("-") else f"+ {s}"
-
-
-def apart(*values: float) -> bool:
-    """Every pair of numbers is more than APART (relatively) from each other."""
-    return all(abs(a - b) > APART * max(abs(a), abs(b), 1e-9)
-               for i, a in enumerate(values) for b in values[i + 1:])
-
-
-def _slips_apart(made: dict) -> bool:
-    """The key and every slip of a scalar exercise are told apart."""
-    return apart(made["key"], *(s.value for s in made["slips"]))
 
 
 # ---- The predict step: 9.2, 9.7, 9.8 ------------------------------------------
@@ -121,12 +61,12 @@ def _predicted_pose(p):
     moved_x, moved_y = pred[0] - x, pred[1] - y
     values = {
         "deg": fmt(deg),
-        "cos": f"= \\sqrt3/2 \\approx {dec(math.cos(th))}" if deg == 30 else approx(math.cos(th)),
-        "dx": dec(moved_x), "dy": dec(moved_y),
-        "xp": dec(pred[0]), "yp": dec(pred[1]),
-        "th": dec(th), "omdt": dec(omega * dt), "thp": dec(pred[2]),
-        "thp_deg2": f"{math.degrees(pred[2]):.2f}", "thp_deg1": f"{math.degrees(pred[2]):.1f}",
-        "omdt_deg": f"{math.degrees(omega * dt):.1f}",
+        "cos": f"= \\sqrt3/2 {approx(math.cos(th))}" if deg == 30 else approx(math.cos(th)),
+        "dx": fmt(moved_x), "dy": fmt(moved_y),
+        "xp": fmt(pred[0]), "yp": fmt(pred[1]),
+        "rx": relation(pred[0], x + shown(moved_x)), "ry": relation(pred[1], y + shown(moved_y)),
+        "th": fmt(th), "omdt": fmt(omega * dt), "thp": fmt(pred[2]), "rth": relation(pred[2], shown(th) + omega * dt),
+        "thp_deg": fmt(math.degrees(pred[2])), "omdt_deg": approx(math.degrees(omega * dt)),
         "most": "x" if moved_x > moved_y else "y", "cmp": ">" if moved_x > moved_y else "<",
         "as92": " as in exercise 9.2" if p == _NINE_TWO else "",
         "used92": ("Exercise 9.2 used only the first entry." if p == _NINE_TWO
@@ -170,18 +110,11 @@ def _new_state(p):
     }
 
 
-def _states_apart(p) -> bool:
-    """9.8: each slip differs from the key, and from the others, in some entry."""
-    made = _new_state(p)
-    rows = [made["key"], *(s.value for s in made["slips"])]
-    return all(any(apart(a[0], b[0]) for a, b in zip(r, s)) for i, r in enumerate(rows) for s in rows[i + 1:])
-
-
 def _jacobian_entry(p):
     """9.7: F(2,3) = v cos θ dt of the motion Jacobian (and F(1,3) beside it)."""
     deg, th = _heading(p)
     F = motion_jacobian((0.0, 0.0, th), p["v"], 0.0, p["dt"])
-    f23 = (f"= \\frac{{\\sqrt3}}{{2}} \\approx {dec(F[1][2])}" if deg == 30 and p["v"] * p["dt"] == 1
+    f23 = (f"= \\frac{{\\sqrt3}}{{2}} {approx(F[1][2])}" if deg == 30 and p["v"] * p["dt"] == 1
            else approx(F[1][2]))  # the exact form only where it is cos 30° itself
     return {
         "key": F[1][2],
@@ -191,17 +124,23 @@ def _jacobian_entry(p):
         ),
         "values": {
             "of92": " of exercise 9.2" if (p["theta"], p["v"], p["dt"]) == (pi_frac(30), _V, _DT) else "",
-            "f23_tex": f23, "f13": dec(F[0][2]), "f23": dec(F[1][2]),
+            "f23_tex": f23, "f13": fmt(F[0][2]), "f23": fmt(F[1][2]),
         },
     }
 
 
 # ---- Sensing, fusing, steering: 9.3 to 9.6 ---------------------------------------
+def _carried_pose() -> dict[str, str]:
+    """9.2's predicted pose as the page prints it (9.3 and 9.4 start from it)."""
+    return {"px": fmt(_PRED_FULL[0]), "py": fmt(_PRED_FULL[1]), "pth": fmt(_PRED_FULL[2])}
+
+
 def _predicted_range(p):
-    """9.3: the range from 9.2's predicted pose to the drawn landmark."""
+    """9.3: the range from 9.2's printed pose to the drawn landmark."""
     landmark = (p["lx"], p["ly"])
     r = range_bearing(_PRED, landmark)[0]
     dx, dy = landmark[0] - _PRED[0], landmark[1] - _PRED[1]
+    exactly = 10  # significant figures enough to print the squares of Δx, Δy (three decimals each) in full
     reading = round(r - 0.1, 1)  # a LiDAR reading a little short of the prediction
     return {
         "key": r,
@@ -211,8 +150,10 @@ def _predicted_range(p):
                  "That is the landmark's distance from the origin. Measure from the robot's predicted position."),
         ),
         "values": {
-            "dx": dec(dx), "dy": dec(dy), "dx2": dec(dx * dx), "dy2": dec(dy * dy), "q": dec(dx * dx + dy * dy),
-            "r": dec(r), "reading": fmt(reading), "innovation": f"{reading - r:.2f}",
+            **_carried_pose(),
+            "dx": fmt(dx), "dy": fmt(dy), "dx2": fmt(dx * dx, exactly), "dy2": fmt(dy * dy, exactly),
+            "q": fmt(dx * dx + dy * dy, exactly), "rr": relation(r), "r": fmt(r), "reading": fmt(reading),
+            "innovation": fmt(reading - r), "ri": relation(reading - r, reading - shown(r)),
         },
     }
 
@@ -220,15 +161,16 @@ def _predicted_range(p):
 def _range_well_posed(p) -> bool:
     """9.3: the landmark is at least 2 m away, and neither slip is the range."""
     made = _predicted_range(p)
-    return made["key"] >= 2 and _slips_apart(made)
+    return made["key"] >= 2 and slips_apart(made)
 
 
 def _fused(p):
-    """9.4: the scalar Kalman update of 9.2's predicted x with the drawn P, z and R."""
+    """9.4: the scalar Kalman update of 9.2's printed x with the drawn P, z and R."""
     P, z, R = p["P"], p["z"], p["R"]
     x = _PRED[0]
     x_upd, _ = ekf_update(x, P, z, R)
     K = P / (P + R)
+    correction = K * (z - x)
     return {
         "key": x_upd,
         "slips": (
@@ -238,15 +180,24 @@ def _fused(p):
             Slip(x_upd - x, "That is the correction K(z − x). Add it to the prediction."),
         ),
         "values": {
-            "S": fmt(P + R), "K": dec(K), "innov": dec(z - x), "innov_p": dec_paren(z - x),
-            "corr": dec_signed(K * (z - x)), "xu": dec(x_upd), "pct": f"{round(100 * K)}",
+            "px": _carried_pose()["px"],
+            "S": fmt(P + R), "K": fmt(K), "rk": relation(K), "innov": fmt(z - x), "innov_p": paren(z - x),
+            "corr": signed(correction), "rc": relation(correction, shown(K) * (z - x)),
+            "xu": fmt(x_upd), "rx": relation(x_upd, x + shown(correction)),
+            "pct": _percent(K),
         },
     }
 
 
+def _percent(share: float) -> str:
+    """A share as a whole percentage in words: ``75`` when it is one, else ``about 71``."""
+    whole = round(100 * share)
+    return str(whole) if math.isclose(100 * share, whole, abs_tol=1e-9) else f"about {whole}"
+
+
 def _fused_well_posed(p) -> bool:
     """9.4: the sensor is the less noisy (R < P, as the text says), and the slips are apart."""
-    return p["R"] < p["P"] and _slips_apart(_fused(p))
+    return p["R"] < p["P"] and slips_apart(_fused(p))
 
 
 def _updated_variance(p):
@@ -254,6 +205,7 @@ def _updated_variance(p):
     P, K = p["P"], p["K"]
     R = P * (1 - K) / K  # K = P/(P + R)
     _, P_upd = ekf_update(0.0, P, 0.0, R)
+    own = (P, K) == (_P, _K)  # exercise 9.4's numbers: its sensor's R is the one printed there
     return {
         "key": P_upd,
         "slips": (
@@ -261,14 +213,15 @@ def _updated_variance(p):
             Slip(1 - K, f"That is 1 − K. Multiply it by P = {fmt(P)}."),
         ),
         "values": {
-            "from94": "from exercise 9.4" if (P, K) == (_P, _K) else "from a scalar Kalman update",
-            "one_minus_k": dec(1 - K), "Pu": dec(P_upd), "R": dec(R),
+            "from94": "from exercise 9.4" if own else "from a scalar Kalman update",
+            "one_minus_k": fmt(1 - K), "Pu": fmt(P_upd), "rp": relation(P_upd, shown(1 - K) * P),
+            "sensor": f"R = {fmt(_R)}" if own else f"R = P(1 - K)/K {relation(R)} {fmt(R)}",
         },
     }
 
 
 def _command(p):
-    """9.6: the P controller's speed command from 9.4's updated x to the drawn waypoint."""
+    """9.6: the P controller's speed command from 9.4's printed x⁺ to the drawn waypoint."""
     target, Kp = p["target"], p["Kp"]
     e = target - _X_UPD
     u = p_term(e, Kp)
@@ -278,7 +231,7 @@ def _command(p):
             Slip(e, f"That is the position error. The command multiplies it by Kp = {fmt(Kp)}."),
             Slip(-u, "Sign: the error is target − position, positive here, so the robot drives forward."),
         ),
-        "values": {"e": dec(e), "u": dec(u)},
+        "values": {"xu": fmt(_X_UPD), "e": fmt(e), "u": fmt(u), "ru": relation(u, Kp * shown(e))},
     }
 
 
@@ -306,7 +259,7 @@ EXERCISES = (
         id="9.2",
         title="The full predict step",
         answer=number(label="x′ after one step", unit="m"),
-        vary=Vary(_new_x, *_pose_params(), valid=lambda p: _slips_apart(_new_x(p))),
+        vary=Vary(_new_x, *_pose_params(), valid=lambda p: slips_apart(_new_x(p))),
     ),
     Derive(
         id="9.3",
@@ -326,26 +279,26 @@ EXERCISES = (
         title="Updated covariance",
         answer=number(label="P⁺ = (1 − K)·P"),
         vary=Vary(_updated_variance, Param("P", _P, 0.1, 0.9, 0.1), Param("K", _K, 0.1, 0.9, 0.05, avoid=(0.5,)),
-                  valid=lambda p: _slips_apart(_updated_variance(p))),
+                  valid=lambda p: slips_apart(_updated_variance(p))),
     ),
     Derive(
         id="9.6",
         title="Velocity command",
         answer=number(label="commanded speed u", unit="m/s"),
         vary=Vary(_command, Param("target", _TARGET, 6, 15, 1, unit=" m"), Param("Kp", _KP, 0.1, 1.5, 0.1, avoid=(1,)),
-                  valid=lambda p: _slips_apart(_command(p))),
+                  valid=lambda p: slips_apart(_command(p))),
     ),
     Derive(
         id="9.7",
         title="An entry of the Jacobian F",
         answer=number(label="F(2,3)"),
         vary=Vary(_jacobian_entry, Choice(*_HEADING), Param("v", _V, 0.5, 2, 0.1, unit=" m/s"),
-                  Param("dt", _DT, 0.5, 2, 0.5, unit=" s"), valid=lambda p: _slips_apart(_jacobian_entry(p))),
+                  Param("dt", _DT, 0.5, 2, 0.5, unit=" s"), valid=lambda p: slips_apart(_jacobian_entry(p))),
     ),
     Derive(
         id="9.8",
         title="The whole predicted state",
-        answer=matrix(label="x′ = (x′, y′, θ′)ᵀ"),
-        vary=Vary(_new_state, *_pose_params(), valid=_states_apart),
+        answer=matrix(label="predicted state", names=("x′", "y′", "θ′"), units=("m", "m", "rad")),
+        vary=Vary(_new_state, *_pose_params(), valid=lambda p: slips_apart(_new_state(p))),
     ),
 )
