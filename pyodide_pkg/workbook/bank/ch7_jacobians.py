@@ -35,7 +35,11 @@ def jacobian_2link(L1, L2, t1, t2):
 
 def _angle(deg: float, argument: bool = False) -> str:
     """An angle as the chapter writes it: ``0`` bare, any other with its degree sign; as the
-    argument of sin or cos (``argument=True``), a negative one in parentheses: ``(-30°)``."""
+    argument of sin or cos (``argument=True``), a negative one in parentheses: ``(-30°)``.
+
+    >>> _angle(0), _angle(35), _angle(-30, argument=True)
+    ('0', '35°', '(-30°)')
+    """
     s = "0" if deg == 0 else f"{fmt(deg)}°"
     return f"({s})" if argument and deg < 0 else s
 
@@ -76,7 +80,11 @@ def _root2(k: float) -> str:
 
 
 def _tip_velocity(p):
-    """7.2: (ẋ, ẏ) = J (θ̇1, 0) at θ = (0, 90°) with equal links L, J printed in the statement; asked: ẋ."""
+    """7.2: (ẋ, ẏ) = J (θ̇1, 0) at θ = (0, 90°) with equal links L, J printed in the statement; asked: ẋ.
+
+    >>> made = _tip_velocity({"L": 1.5, "w1": -2}); print(made["values"]["J"], made["key"])
+    \\begin{bmatrix} -1.5 & -1.5 \\\\ 1.5 & 0 \\end{bmatrix} 3.0
+    """
     L, w = p["L"], p["w1"]
     J = jacobian_2link(L, L, 0, math.pi / 2)
     v = end_effector_velocity(J, [w, 0])
@@ -125,7 +133,11 @@ def _best_elbow(p):
 
 def _link2_direction(deg: float) -> str:
     """Where link 2 points, in words (the text says it outside math): an angle counter-clockwise
-    from the x-axis, from 0° to 360°, so that no minus sign stands in prose."""
+    from the x-axis, from 0° to 360°, so that no minus sign stands in prose.
+
+    >>> _link2_direction(-150), _link2_direction(450), _link2_direction(55)
+    ('at 210° from the x-axis, counter-clockwise', 'straight up', 'at 55° from the x-axis, counter-clockwise')
+    """
     d = deg % 360
     words = {90: "straight up", 270: "straight down", 0: "straight along the positive x-axis",
              180: "straight along the negative x-axis"}

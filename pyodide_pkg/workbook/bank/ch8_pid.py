@@ -51,7 +51,13 @@ def _three_steps(p):
 def _i_share(I, P) -> str:
     """How the I term stands to the P term (P > 0), as 8.2 and 8.7 put it in words:
     ``"little"`` (at most a third of P), ``"smaller"``, ``"almost"`` (70 % of P or more),
-    ``"equal"`` (within float noise) or ``"more"``."""
+    ``"equal"`` (within float noise) or ``"more"``.
+
+    >>> [_i_share(I, 1) for I in (0.2, 0.5, 0.9, 1.0000000000001, 1.3)]
+    ['little', 'smaller', 'almost', 'equal', 'more']
+    >>> _ADDS[_i_share(0.9, 1)]  # 8.2's own numbers: I = 0.9 beside P = 1
+    'almost as much again'
+    """
     if math.isclose(I, P, rel_tol=1e-9, abs_tol=1e-12):
         return "equal"
     share = I / P

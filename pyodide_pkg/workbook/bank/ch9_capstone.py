@@ -12,6 +12,18 @@ the step before (the workbook's chain) and draw the inputs they bring in (the
 landmark; P, z and R; the waypoint and Kp); 9.5 draws P and K. A sentence that
 names an earlier exercise ("from exercise 9.4") is only printed when the
 numbers are that exercise's own.
+
+The values carried in are the answers printed before them (variant 0):
+
+>>> from workbook import bank
+>>> ex = {i: bank.get(i) for i in ("9.2", "9.3", "9.4", "9.5", "9.6", "9.8")}
+>>> pose = ex["9.3"].values
+>>> f"[{pose['px']}; {pose['py']}; {pose['pth']}]" == ex["9.8"].worked_text(), pose["px"] == ex["9.2"].worked_text()
+(True, True)
+>>> ex["9.4"].values["px"] == pose["px"], ex["9.6"].values["xu"] == ex["9.4"].worked_text()
+(True, True)
+>>> ex["9.5"].values["K"] == ex["9.4"].values["K"], ex["9.5"].worked_text()
+(True, '0.1429')
 """
 
 import math
