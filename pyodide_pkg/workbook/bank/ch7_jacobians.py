@@ -8,7 +8,7 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
-from ..number_format import approx, bmatrix, fmt, paren, relation, shown, signed
+from ..number_format import approx, bmatrix, fmt, paren, prose, relation, shown, signed
 from ..reference.arm import (
     end_effector_velocity,
     forward_kinematics_2link,
@@ -33,15 +33,16 @@ def jacobian_2link(L1, L2, t1, t2):
 """
 
 
-def _angle(deg: float, argument: bool = False) -> str:
-    """An angle as the chapter writes it: ``0`` bare, any other with its degree sign; as the
-    argument of sin or cos (``argument=True``), a negative one in parentheses: ``(-30°)``.
+def _angle(deg: float, tex: bool = False) -> str:
+    """An angle as the chapter writes it: ``0`` bare, any other with its degree sign; in a
+    message, with a true minus; in TeX as the argument of sin or cos (``tex=True``), a
+    negative one in parentheses: ``(-30°)``.
 
-    >>> _angle(0), _angle(35), _angle(-30, argument=True)
-    ('0', '35°', '(-30°)')
+    >>> _angle(0), _angle(-35), _angle(-30, tex=True)
+    ('0', '−35°', '(-30°)')
     """
-    s = "0" if deg == 0 else f"{fmt(deg)}°"
-    return f"({s})" if argument and deg < 0 else s
+    s = "0" if deg == 0 else f"{(fmt if tex else prose)(deg)}°"
+    return f"({s})" if tex and deg < 0 else s
 
 
 def _jacobian_entry(p):
@@ -65,7 +66,7 @@ def _jacobian_entry(p):
         "key": J[0][0],
         "slips": tuple(slips),
         "values": {
-            "deg1": "" if t1 == 0 else "°", "t2": fmt(t2), "a1": _angle(t1, argument=True), "s1": fmt(s1),
+            "deg1": "" if t1 == 0 else "°", "t2": fmt(t2), "a1": _angle(t1, tex=True), "s1": fmt(s1),
             "m1": fmt(-L * s1), "l1c": fmt(L * c1),
             "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]),
             "r11": relation(J[0][0], shown(-L * s1) - L), "r21": relation(J[1][0], shown(L * c1)),
@@ -156,7 +157,7 @@ def _unit_jacobian(p):
         "slips": (
             Slip(grid([J[0], [J[1][0], 1 * s12]]),
                  "J(2,2) uses sin(θ1 + θ2): that is the bug of exercise 7.5. ∂/∂θ2 of L2 sin(θ1 + θ2) is "
-                 f"L2 cos(θ1 + θ2) = cos {fmt(t1 + t2)}° = {fmt(c12)}."),
+                 f"L2 cos(θ1 + θ2) = cos {prose(t1 + t2)}° = {prose(c12)}."),
             Slip(grid(jacobian_2link(1, 1, r2, r1)),
                  f"That is J at θ = ({_angle(t2)}, {_angle(t1)}): the two joint angles are swapped. "
                  f"Here θ1 = {_angle(t1)} and θ2 = {_angle(t2)}."),

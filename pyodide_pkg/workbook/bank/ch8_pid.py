@@ -8,7 +8,7 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import fmt, paren, signed
+from ..number_format import fmt, paren, prose, signed
 from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step, pid_terms
 from ..variants import Choice, Param, Vary
 from . import column
@@ -101,7 +101,7 @@ def _pid_output(p):
         "key": u,
         "slips": (
             Slip(P + I, f"You left out the D term. The error fell from {fmt(e1)} to {fmt(e2)}, so "
-                        f"Kd·(e[2] − e[1])/dt = {fmt(D)}."),
+                        f"Kd·(e[2] − e[1])/dt = {prose(D)}."),
             Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times),
             Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
             Slip(P + Ki * e2 * dt + D,
@@ -119,7 +119,7 @@ def _falling_error_d_term(p):
     return {
         "key": D,
         "slips": (
-            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {fmt(ek - ep)}. "
+            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {prose(ek - ep)}. "
                      "A falling error gives a negative D."),
             Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}."),
             Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second."),
