@@ -147,7 +147,11 @@ def focused_entry(page: Page) -> tuple[int, int] | None:
 
 
 def paste(target: Locator, text: str) -> None:
-    """Paste ``text`` into an input as the clipboard would: a ClipboardEvent carrying a DataTransfer."""
+    """Paste ``text`` into an input as the clipboard would: a ClipboardEvent carrying a DataTransfer.
+
+    A synthetic paste inserts nothing by itself, so it waits until the widget listens: the
+    exercise's form is marked ready once its kind's script has started (exercise.js)."""
+    target.page.wait_for_function("el => el.closest('form')?.dataset.wbReady === 'true'", arg=target.element_handle())
     target.focus()
     target.evaluate(
         "(el, text) => { const data = new DataTransfer(); data.setData('text/plain', text);"

@@ -254,7 +254,8 @@ def is_one_value(text: object) -> bool:
     return len(_split_row(s)) == 1
 
 
-def _describe(shape: tuple[int, int]) -> str:
+def describe_shape(shape: tuple[int, int]) -> str:
+    """A shape in words: ``a 3×1 column vector (3 entries)``."""
     r, c = shape
     if c == 1:
         return f"a {r}×1 column vector ({r} entries)"
@@ -275,6 +276,6 @@ def _fit(grid: Grid, shape: tuple[int, int]) -> Grid:
     if len(set(counts)) > 1:
         k = next(i for i, n in enumerate(counts) if n != counts[0])
         raise InvalidAnswer(
-            f"Row {k + 1} has {counts[k]} entries and row 1 has {counts[0]}: this answer is {_describe(shape)}.")
+            f"Row {k + 1} has {counts[k]} entries and row 1 has {counts[0]}: this answer is {describe_shape(shape)}.")
     raise InvalidAnswer(
-        f"This answer is {_describe(shape)}; what you pasted is {len(grid)}×{counts[0]} ({total} entries).")
+        f"This answer is {describe_shape(shape)}; what you pasted is {len(grid)}×{counts[0]} ({total} entries).")

@@ -11,6 +11,7 @@ from __future__ import annotations
 from typing import TYPE_CHECKING
 
 from ...expr import InvalidAnswer, Reading, is_one_value, named_entry, place_by_name, read_quantity, split_matrix
+from ...expr.layout import describe_shape
 from ...verdict import Verdict
 
 if TYPE_CHECKING:
@@ -39,7 +40,8 @@ def _cells(ans: "MatrixAnswer", answer: object) -> Grid:
     grid = [["" if v is None else str(v) for v in row] for row in answer]
     r, c = ans.shape
     if len(grid) != r or any(len(row) != c for row in grid):
-        raise InvalidAnswer(f"This answer has {r}×{c} entries.")
+        given = f"{len(grid)}×{len(grid[0]) if grid else 0}"
+        raise InvalidAnswer(f"This answer is {describe_shape(ans.shape)}; the boxes sent were {given}.")
     texts = [text for row in grid for text in row]
     pairs = [named_entry(text) for text in texts]
     if not any(pairs):
