@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import dataclasses
 from dataclasses import dataclass
+from types import ModuleType
 from typing import Any, ClassVar, Mapping
 
 from ..verdict import GradingError, Verdict
@@ -37,19 +38,30 @@ class Slip:
 
 @dataclass(frozen=True)
 class AnswerKind:
-    """Base of the answer kinds; a subclass's fields are its options, and it honours every one."""
+    """Base of the answer kinds; a subclass's fields are its options, and it honours every one.
+
+    A subclass names its package's modules: ``reader`` (``read(ans, answer)`` to values
+    or an ``invalid`` verdict, and ``reply(values)`` for the ``read`` op), ``marker``
+    (``mark(ans, values)``) and ``shower`` (``worked_text``, ``worked_tex``,
+    ``worked_html``, ``typed``, ``label_html``, ``widget``, ``attributes``).
+    """
 
     key: Any = None
     label: str = ""
     slips: tuple[Slip, ...] = ()
     kind: ClassVar[str] = ""
+    reader: ClassVar[ModuleType]
+    marker: ClassVar[ModuleType]
+    shower: ClassVar[ModuleType]
 
     def check(self, answer: object) -> Verdict:
-        raise NotImplementedError
+        values = self.reader.read(self, answer)
+        return values if isinstance(values, Verdict) else self.marker.mark(self, values)
 
     def read(self, answer: object) -> dict:
         """How ``answer`` is read before it is checked (the ``read`` op): ``{value}``, ``{latex}`` or ``{message}``."""
-        raise NotImplementedError
+        values = self.reader.read(self, answer)
+        return {"message": values.message} if isinstance(values, Verdict) else self.reader.reply(values)
 
     def split(self, text: object) -> dict:
         """A pasted vector or matrix (the ``split`` op); only shaped answers have entries."""
@@ -57,28 +69,28 @@ class AnswerKind:
 
     def worked_text(self) -> str:
         """The answer as a learner would type it."""
-        raise NotImplementedError
+        return self.shower.worked_text(self)
 
     def worked_tex(self) -> str:
         """The answer in TeX, for the derivation's Answer line (the ``{{worked}}`` placeholder)."""
-        raise NotImplementedError
+        return self.shower.worked_tex(self)
 
     def worked_html(self) -> str:
         """The end of the revealed derivation: the answer, typed out (``worked-answer``)."""
-        raise NotImplementedError
+        return self.shower.worked_html(self)
 
     def typed(self, value: Any) -> Any:
         """A value (the key or a slip) as a learner would type it."""
-        raise NotImplementedError
+        return self.shower.typed(self, value)
 
     def label_html(self) -> str:
-        raise NotImplementedError
+        return self.shower.label_html(self)
 
     def widget(self, base: str, page: Any) -> str:
-        raise NotImplementedError
+        return self.shower.widget(self, base)
 
     def attributes(self) -> dict[str, str]:
-        return {}
+        return self.shower.attributes(self)
 
     def degenerate(self) -> str | None:
         """Why these numbers do not make a fair question (the worked answer refused, a slip

@@ -159,7 +159,7 @@ def _xy_block(p):
 def _correlated_information(p):
     """5.7: Ω = Σ⁻¹ for a Σ whose x and y errors are correlated."""
     sigma = _xy_block(p)
-    s, b, t = p["s"], p["b"], p["t"]
+    s, b = p["s"], p["b"]
     omega = information_matrix(sigma)
     det = det2([row[:2] for row in sigma[:2]])
     block = [row[:2] for row in omega[:2]]

@@ -44,7 +44,7 @@ from typing import Callable, Iterable
 from .compile import Env, compile_tree
 from .degrees import degree_arguments
 from .grammar import Grammar
-from .latex_output import latex, variable_latex
+from .latex_output import latex
 from .parsing import parse_tree
 
 

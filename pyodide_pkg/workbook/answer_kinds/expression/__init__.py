@@ -24,8 +24,6 @@ from __future__ import annotations
 from dataclasses import dataclass, field
 from typing import Any, Callable, ClassVar, Mapping
 
-from ...contract import ATTR
-from ...verdict import Verdict
 from ..base import AnswerKind, AnswerSpec
 from . import mark, read, show
 
@@ -41,6 +39,7 @@ class FormulaAnswer(AnswerKind):
     domain: Mapping[str, tuple[float, float]] = field(default_factory=dict)
     answer_text: str = ""
     kind: ClassVar[str] = "expression"
+    reader, marker, shower = read, mark, show
 
     def __post_init__(self) -> None:
         if not callable(self.key):
@@ -48,35 +47,6 @@ class FormulaAnswer(AnswerKind):
         missing = sorted(set(self.variables) - set(self.domain))
         if missing:
             raise ValueError(f"the domain gives no range for {', '.join(missing)}")
-
-    def attributes(self) -> dict[str, str]:
-        return {ATTR.variables: ",".join(self.variables)}
-
-    def check(self, answer: object) -> Verdict:
-        parsed = read.formula(self, answer)
-        return parsed if isinstance(parsed, Verdict) else mark.mark(self, parsed)
-
-    def read(self, answer: object) -> dict:
-        parsed = read.formula(self, answer)
-        return {"message": parsed.message} if isinstance(parsed, Verdict) else {"latex": parsed.latex}
-
-    def worked_text(self) -> str:
-        return self.answer_text
-
-    def worked_tex(self) -> str:
-        return show.worked_tex(self)
-
-    def worked_html(self) -> str:
-        return show.worked_html(self)
-
-    def typed(self, value: Any) -> str:
-        return self.answer_text if value is self.key else ""
-
-    def label_html(self) -> str:
-        return show.label_html(self)
-
-    def widget(self, base: str, page: Any) -> str:
-        return show.widget(self, base)
 
     def degenerate(self) -> str | None:
         return mark.degenerate(self)

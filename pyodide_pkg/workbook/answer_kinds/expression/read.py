@@ -11,7 +11,12 @@ if TYPE_CHECKING:
     from . import FormulaAnswer
 
 
-def formula(ans: "FormulaAnswer", answer: object) -> Formula | Verdict:
+def reply(formula: Formula) -> dict:
+    """The ``read`` op's reply: the formula as read, typeset."""
+    return {"latex": formula.latex}
+
+
+def read(ans: "FormulaAnswer", answer: object) -> Formula | Verdict:
     """The formula read, or an ``invalid`` verdict saying why it could not be read."""
     try:
         return parse_formula(answer, ans.variables)

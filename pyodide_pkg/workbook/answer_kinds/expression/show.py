@@ -5,13 +5,26 @@ from __future__ import annotations
 from html import escape
 from typing import TYPE_CHECKING
 
-from ...contract import ROLE, role_attr
+from ...contract import ATTR, ROLE, role_attr
 from ...expr import parse_formula
 from ...expr.latex_output import variable_latex
 from ...kinds.base import check_button, form
 
 if TYPE_CHECKING:
     from . import FormulaAnswer
+
+
+def attributes(ans: "FormulaAnswer") -> dict[str, str]:
+    return {ATTR.variables: ",".join(ans.variables)}
+
+
+def worked_text(ans: "FormulaAnswer") -> str:
+    return ans.answer_text
+
+
+def typed(ans: "FormulaAnswer", value: object) -> str:
+    """Only the key has a typed form (slips are functions, typed in the tests by hand)."""
+    return ans.answer_text if value is ans.key else ""
 
 
 def worked_tex(ans: "FormulaAnswer") -> str:

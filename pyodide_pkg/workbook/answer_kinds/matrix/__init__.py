@@ -25,7 +25,6 @@ from dataclasses import dataclass
 from typing import Any, ClassVar
 
 from ...tolerance import clean
-from ...verdict import Verdict
 from ..base import AnswerKind, AnswerSpec
 from ..number import UNITS
 from . import mark, read, show
@@ -51,6 +50,7 @@ class MatrixAnswer(AnswerKind):
     either_sign: str = ""
     rel_tol: float = 1e-3
     kind: ClassVar[str] = "matrix"
+    reader, marker, shower = read, mark, show
 
     def __post_init__(self) -> None:
         if not self.key or any(len(row) != len(self.key[0]) for row in self.key):
@@ -77,39 +77,8 @@ class MatrixAnswer(AnswerKind):
         unit = self.units[i * self.shape[1] + j] if self.units else self.unit
         return UNITS.get(unit)
 
-    def attributes(self) -> dict[str, str]:
-        return show.attributes(self)
-
-    def check(self, answer: object) -> Verdict:
-        readings = read.readings(self, answer)
-        return readings if isinstance(readings, Verdict) else mark.mark(self, readings)
-
-    def read(self, answer: object) -> dict:
-        readings = read.readings(self, answer)
-        if isinstance(readings, Verdict):
-            return {"message": readings.message}
-        return {"value": [[r.value for r in row] for row in readings]}
-
     def split(self, text: object) -> dict:
         return read.split(self, text)
-
-    def worked_text(self) -> str:
-        return show.worked_text(self)
-
-    def worked_tex(self) -> str:
-        return show.worked_tex(self)
-
-    def worked_html(self) -> str:
-        return show.worked_html(self)
-
-    def typed(self, value: Rows) -> list[list[str]]:
-        return show.typed(value)
-
-    def label_html(self) -> str:
-        return show.label_html(self)
-
-    def widget(self, base: str, page: Any) -> str:
-        return show.widget(self, base)
 
 
 def matrix(**options: Any) -> AnswerSpec:

@@ -51,7 +51,12 @@ def _cells(ans: "MatrixAnswer", answer: object) -> Grid:
     return place_by_name([p for p in pairs if p], ans.shape, ans.names, partial=True)
 
 
-def readings(ans: "MatrixAnswer", answer: object) -> list[list[Reading]] | Verdict:
+def reply(readings: list[list[Reading]]) -> dict:
+    """The ``read`` op's reply: every entry's value as read."""
+    return {"value": [[r.value for r in row] for row in readings]}
+
+
+def read(ans: "MatrixAnswer", answer: object) -> list[list[Reading]] | Verdict:
     """A reading per entry, or an ``invalid`` verdict naming every entry that could not be read."""
     try:
         grid = _cells(ans, answer)

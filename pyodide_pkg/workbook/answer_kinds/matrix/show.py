@@ -28,7 +28,7 @@ def worked_tex(ans: "MatrixAnswer") -> str:
     return rf"\begin{{bmatrix}} {rows} \end{{bmatrix}}"
 
 
-def typed(value: "Rows") -> list[list[str]]:
+def typed(ans: "MatrixAnswer", value: "Rows") -> list[list[str]]:
     return [[fmt(clean(v), significant=7) for v in row] for row in value]
 
 

@@ -14,7 +14,6 @@ import math
 from dataclasses import dataclass
 from typing import Any, ClassVar
 
-from ...verdict import Verdict
 from ..base import AnswerKind, AnswerSpec
 from . import mark, read, show
 
@@ -41,6 +40,7 @@ class NumberAnswer(AnswerKind):
     periodic: bool = False
     either_sign: str = ""
     kind: ClassVar[str] = "number"
+    reader, marker, shower = read, mark, show
 
     def __post_init__(self) -> None:
         if self.angle not in (None, "deg", "rad"):
@@ -58,32 +58,6 @@ class NumberAnswer(AnswerKind):
     @property
     def exact(self) -> bool:
         return isinstance(self.key, int)
-
-    def check(self, answer: object) -> Verdict:
-        reading = read.reading(answer, self.expect)
-        return reading if isinstance(reading, Verdict) else mark.mark(self, reading)
-
-    def read(self, answer: object) -> dict:
-        reading = read.reading(answer, self.expect)
-        return {"message": reading.message} if isinstance(reading, Verdict) else {"value": reading.value}
-
-    def worked_text(self) -> str:
-        return show.worked_text(self)
-
-    def worked_tex(self) -> str:
-        return show.worked_tex(self)
-
-    def worked_html(self) -> str:
-        return show.worked_html(self)
-
-    def typed(self, value: Any) -> str:
-        return show.typed(self, value)
-
-    def label_html(self) -> str:
-        return show.label_html(self)
-
-    def widget(self, base: str, page: Any) -> str:
-        return show.widget(self, base)
 
 
 def number(**options: Any) -> AnswerSpec:

@@ -28,6 +28,10 @@ def typed(ans: "NumberAnswer", value: Any) -> str:
     return fmt(clean(value), significant=7) + ("°" if ans.angle == "deg" else "")
 
 
+def attributes(ans: "NumberAnswer") -> dict[str, str]:
+    return {}
+
+
 def worked_html(ans: "NumberAnswer") -> str:
     return (f'<p class="wb-worked">Type it as: <code {role_attr(ROLE.worked_answer)}>'
             f"{escape(worked_text(ans))}</code></p>")
