@@ -174,5 +174,12 @@ def run(job: dict[str, Any], code: str) -> dict[str, Any]:
 
 
 def run_json(job: str, code: str) -> str:
-    """:func:`run` with the job and the report as JSON text (what the sandbox worker passes)."""
+    """:func:`run` with the job and the report as JSON text (what the sandbox passes on)."""
     return json.dumps(run(json.loads(job), str(code)))
+
+
+def run_in_sandbox(job: str, code: str) -> tuple[str, bool]:
+    """The sandbox worker's call: the report as JSON text, and whether the sandbox should be
+    replaced now (the run was stopped by an interrupt or by running out of memory)."""
+    report = run(json.loads(job), str(code))
+    return json.dumps(report), report["stopped"] is not None
