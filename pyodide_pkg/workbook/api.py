@@ -51,7 +51,7 @@ from .verdict import GradingError, fail, ok, quote
 
 REQUEST_CAP = 2_000_000  # characters of a request (a Build program may be long)
 ANSWER_CAP = 10_000  # characters of an answer's text
-TEXTS_CAP = 500_000  # characters of a draw's templates
+TEXTS_CAP = 50_000  # characters of a draw's templates
 # The type of each field a request may carry (None stands for a field left out); a figure's
 # params are the figure's to check (an error of kind "figure").
 FIELDS: dict[str, type] = {"exercise": str, "code": str, "text": str, "figure": str, "outputs": str, "texts": dict}

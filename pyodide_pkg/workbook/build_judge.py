@@ -128,6 +128,11 @@ class Mismatch(Exception):
     """A value of the wrong shape or type: the message for its test row."""
 
 
+def _what(value: dict[str, Any]) -> str:
+    """A value named in a message: its type and text ("int 5"), or just the text of an int too large to show."""
+    return value["text"] if value["type"] == "int" and "number" not in value else f"{value['type']} {value['text']}"
+
+
 def numbers(value: dict[str, Any], want: Any) -> Any:
     """The numbers ``value`` carries, shaped as ``want`` (a number or a sequence of them, maybe nested);
     Mismatch when it has another shape."""
@@ -138,7 +143,7 @@ def numbers(value: dict[str, Any], want: Any) -> Any:
             raise Mismatch(f"expected plain numbers, got {value['type']} {value['text']} inside the result")
         return value["number"]
     if "length" not in value:
-        raise Mismatch(f"expected a sequence of {len(want)} numbers, got {value['type']} {value['text']}")
+        raise Mismatch(f"expected a sequence of {len(want)} numbers, got {_what(value)}")
     if value["length"] != len(want):
         raise Mismatch(f"expected {len(want)} numbers, got {value['length']}: {value['text']}")
     if len(value["items"]) != len(want):

@@ -11,6 +11,8 @@
 * the recursion limit.
 
 On exit it puts all of that back (names a run added to a module are removed),
+the builtins and this module's own names first, with nothing but dict methods
+(the rest of the restore looks them up),
 reseeds :mod:`random`, and, when NumPy is loaded, resets its error handling,
 print options and global generator. Modules a run imported stay loaded (NumPy
 is slow to load); their state is reset only where it existed before the run.
@@ -29,11 +31,14 @@ was not plain (``workbook.build_plain``).
 
 from __future__ import annotations
 
+import builtins
 import random
 import sys
 import types
+from operator import is_
 from typing import Any, Iterable
 
+_FIRST = (vars(builtins), globals())  # what the restore itself looks names up in
 # Packages whose classes, containers and functions are watched besides every module's names.
 STDLIB_HOMES = ("random", "math", "copy", "json", "io", "contextlib", "traceback", "dataclasses", "functools",
                 "workbook_sandbox")
@@ -67,18 +72,19 @@ class Restore:
         self.objects = list(objects)
 
     def __enter__(self) -> "Restore":
+        self.first = [(space, dict(space)) for space in _FIRST]
         self.table = dict(sys.modules)
-        self.spaces = [(mod, dict(vars(mod))) for mod in self.table.values()
-                       if mod is not None and isinstance(getattr(mod, "__dict__", None), dict)]
+        self.spaces = [(mod.__dict__, _snapshot(mod.__dict__)) for mod in self.table.values()
+                       if isinstance(getattr(mod, "__dict__", None), dict)]
         watched = [(name, mod) for name, mod in self.table.items()
                    if mod is not None and _in_homes(name, self.homes) and hasattr(mod, "__dict__")]
         self.classes = [(cls, dict(vars(cls))) for name, mod in watched for cls in list(vars(mod).values())
                         if isinstance(cls, type) and cls.__module__ == name]
         self.containers = [(c, _copy(c)) for _, mod in watched for c in list(vars(mod).values())
                            if type(c) in (dict, list, set)]
-        self.fields = [(obj, dict(vars(obj))) for obj in self.objects if hasattr(obj, "__dict__")]
+        self.fields = [(vars(obj), _snapshot(vars(obj))) for obj in self.objects if hasattr(obj, "__dict__")]
         holders = [vars(mod) for _, mod in watched] + [saved for _, saved in self.classes] \
-            + [saved for _, saved in self.fields]
+            + [vars(obj) for obj in self.objects if hasattr(obj, "__dict__")]
         functions = {id(fn): fn for space in holders for value in list(space.values()) for fn in _functions_of(value)}
         self.functions = [(fn, _function_state(fn)) for fn in functions.values()]
         self.recursion = sys.getrecursionlimit()
@@ -86,13 +92,14 @@ class Restore:
         return self
 
     def __exit__(self, *exc: object) -> None:
+        for space, saved in self.first:
+            space.clear()
+            space.update(saved)
         for name, mod in self.table.items():
             if sys.modules.get(name, _MISSING) is not mod:
                 sys.modules[name] = mod
-        for mod, saved in self.spaces:
-            _put_back(vars(mod), saved)
-        for obj, saved in self.fields:
-            _put_back(vars(obj), saved)
+        for space, saved in self.spaces + self.fields:
+            _put_back(space, saved)
         for cls, saved in self.classes:
             for name in set(vars(cls)) - set(saved):
                 _quietly(delattr, cls, name)
@@ -117,18 +124,30 @@ def _copy(container: Any) -> Any:
     return type(container)(container)
 
 
+def _snapshot(space: dict) -> tuple[tuple, tuple]:
+    return tuple(space), tuple(space.values())
+
+
+def _unchanged(space: dict, snapshot: tuple[tuple, tuple]) -> bool:
+    """Whether ``space`` binds the same names to the same objects, in the same order (by identity:
+    an object's ``==`` is not to be trusted, nor called)."""
+    keys, values = snapshot
+    return len(space) == len(keys) and all(map(is_, space, keys)) and all(map(is_, space.values(), values))
+
+
 def _same_items(container: Any, saved: Any) -> bool:
     if isinstance(container, dict):
-        return len(container) == len(saved) and all(container.get(k, _MISSING) is v for k, v in saved.items())
+        return _unchanged(container, _snapshot(saved))
     if isinstance(container, list):
-        return len(container) == len(saved) and all(a is b for a, b in zip(container, saved))
+        return len(container) == len(saved) and all(map(is_, container, saved))
     return container == saved
 
 
-def _put_back(space: dict, saved: dict) -> None:
-    """Make ``space`` bind exactly what ``saved`` binds, without ever emptying it."""
-    if len(space) == len(saved) and all(space.get(k, _MISSING) is v for k, v in saved.items()):
+def _put_back(space: dict, snapshot: tuple[tuple, tuple]) -> None:
+    """Make ``space`` bind exactly what ``snapshot`` held, without ever emptying it."""
+    if _unchanged(space, snapshot):
         return
+    saved = dict(zip(*snapshot))
     for name in [k for k in space if k not in saved]:
         del space[name]
     for name, value in saved.items():

@@ -148,9 +148,9 @@ class Run:
         ok, value = self.guarded(lambda: encode(got))
         return {"value": value} if ok else {"error": value}
 
-    def run(self) -> dict[str, Any]:
+    def run(self, restore: Restore) -> dict[str, Any]:
         cases = self.report["cases"]
-        with contextlib.redirect_stdout(self.out), Restore(STDLIB_HOMES):
+        with contextlib.redirect_stdout(self.out), restore:
             fn = None
             try:
                 fn = self.load()
@@ -168,14 +168,15 @@ class Run:
         return self.report
 
 
-def run(job: dict[str, Any], code: str) -> dict[str, Any]:
-    """The report of running ``code`` on ``job`` (see the module's docstring)."""
-    return Run(job, code).run()
+def run(job: dict[str, Any], code: str, restore: Restore | None = None) -> dict[str, Any]:
+    """The report of running ``code`` on ``job`` (see the module's docstring). ``restore``: what is put
+    back after the run (by default what :data:`~workbook_sandbox.restore.STDLIB_HOMES` names)."""
+    return Run(job, code).run(restore or Restore(STDLIB_HOMES))
 
 
-def run_json(job: str, code: str) -> str:
+def run_json(job: str, code: str, restore: Restore | None = None) -> str:
     """:func:`run` with the job and the report as JSON text (what the sandbox passes on)."""
-    return json.dumps(run(json.loads(job), str(code)))
+    return json.dumps(run(json.loads(job), str(code), restore))
 
 
 def run_in_sandbox(job: str, code: str) -> tuple[str, bool]:

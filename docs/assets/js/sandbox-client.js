@@ -12,7 +12,8 @@
 // the same way (interrupt when cross-origin isolated, else terminate and start
 // afresh), the limit starting when the code starts. It is replaced after every
 // run whose code was not plain (the grader says so; workbook/build_plain.py),
-// after a run it stopped, and whenever it fails or stops answering.
+// after a run that was stopped (interrupted, or out of memory), and whenever it
+// fails or stops answering.
 import { Runtime } from "./runtime.js";
 
 const ACK_MS = 5_000; // a sandbox that has not acknowledged a request by then is gone
@@ -36,12 +37,15 @@ async function runBuild(grader, { code, ...request }, options) {
   if (!cases.ok) return cases;
   const { job, plain, limit } = cases.value;
   const box = startSandbox(grader.workerURL);
+  const interrupts = box.interrupts;
   const ran = await box.request({ op: "run", job, code }, { ...options, limitMs: limit * 1000 || options.limitMs });
-  if (!ran.ok) return ran; // a time-out, a crash, a package that would not load (the sandbox was replaced where it must be)
-  if (!plain || ran.recycle) {
+  // Replace the sandbox after code that may have left a trace, and after a run it stopped
+  // (an interrupt may land in the runner's own code). A terminated one was replaced already.
+  if (!plain || ran.recycle || box.interrupts !== interrupts) {
     box.recycles = (box.recycles || 0) + 1;
     box.replace();
   }
+  if (!ran.ok) return ran; // a time-out, a crash, a package that would not load
   return grader.request({ ...request, op: "judge", outputs: ran.value });
 }
 

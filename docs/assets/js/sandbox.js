@@ -42,7 +42,7 @@ self.addEventListener("message", (event) => {
   const msg = event.data;
   if (msg?.type === "interrupt-buffer") {
     interruptBuffer = msg.buffer;
-    ready.then((py) => py.setInterruptBuffer(interruptBuffer)).catch(() => {});
+    ready.then(({ py }) => py.setInterruptBuffer(interruptBuffer)).catch(() => {});
   } else if (msg && typeof msg.id === "number") {
     post({ id: msg.id, type: "received" });
     requests = requests.then(() => serve(msg));

@@ -100,9 +100,7 @@ class Build(Exercise):
         """The whole run in this process: job, the learner's code, judgement."""
         from .. import bank
 
-        job = self.job()
-        with Restore(STDLIB_HOMES + ("workbook",), _grader_objects()):
-            report = runner.run_json(job, str(code))
+        report = runner.run_json(self.job(), str(code), Restore(STDLIB_HOMES + ("workbook",), _grader_objects()))
         bank.variant.cache_clear()  # a run may have reached a cached variant through gc
         return self.judge(report)
 
