@@ -75,8 +75,16 @@ def _length(value: Any) -> int | None:
     if isinstance(value, (str, bytes, bytearray, dict)) or not hasattr(value, "__iter__"):
         return None
     try:
-        return len(value)
-    except TypeError:  # a 0-d NumPy array, an iterator
+        length = len(value)
+    except Exception:  # a 0-d NumPy array, an iterator, a __len__ that raises
+        return None
+    return length if isinstance(length, int) else None
+
+
+def _items(value: Any) -> list | None:
+    try:
+        return list(itertools.islice(iter(value), ITEMS_CAP))
+    except Exception:  # an __iter__ that raises
         return None
 
 
@@ -89,8 +97,8 @@ def encode(value: Any, depth: int = 0) -> dict[str, Any]:
     if isinstance(value, float):
         return {"type": kind, "number": float(value), "text": show(value)}
     length = _length(value) if depth < DEPTH_CAP else None
-    if length is not None:
-        items = list(itertools.islice(iter(value), ITEMS_CAP))
+    items = _items(value) if length is not None else None
+    if items is not None:
         return {"type": kind, "length": length, "text": show(value) if type(value) in (list, tuple) else _repr(value),
                 "items": [encode(item, depth + 1) for item in items]}
     if hasattr(value, "__float__") and not isinstance(value, (str, bytes, complex)):  # NumPy's scalars, Fraction...
