@@ -188,3 +188,14 @@ def test_attacks_change_no_stored_byte_and_plant_no_page(page, site_url):
     page.goto(target)
     assert "PLANTED" not in page.content()
     exercise(page, "1.1").wait_for()
+
+
+def test_the_sandbox_starts_only_where_there_is_build_code(page, site_url):
+    open_chapter(page, site_url, 1)  # no Build exercise: no sandbox, ever
+    page.evaluate("() => new Promise((resolve) => requestIdleCallback(resolve, {timeout: 2000}))")
+    assert page.evaluate("'sandbox' in window.workbook") is False
+    open_chapter(page, site_url, 0)  # a Build exercise: the sandbox starts once the page is idle, before any Run
+    page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
+    assert exercise(page, "0.5").get_attribute("data-state") == "unanswered"
+    stages = page.evaluate("workbook.sandbox.startStages")
+    assert 0 < stages["booted"] <= stages["ready"] and stages["wasmBytes"] > 1_000_000

@@ -82,6 +82,7 @@ const ready = (async () => {
   const allowed = new Set(Object.values((await lock).packages).map((p) => new URL(p.file_name, indexURL).href));
   tame(self, guardedFetch(allowed));
   mark("ready");
+  stages.wasmBytes = py._module.HEAPU8.byteLength; // the interpreter's memory, for the benchmark
   post({ type: "ready", ms: performance.now() - started, stages });
   return { py, run: runner.run_in_sandbox };
 })();
