@@ -155,7 +155,7 @@ TABLE = [
     ("Build 0.5 run, numpy, first (loads numpy)", "build_numpy_first_ms", "ms"),
     ("Build 0.5 run, numpy, repeat", "build_numpy_ms", "ms"),
     ("Sandbox start (spawn -> ready, no snapshot)", "sandbox_start_ms", "ms"),
-    ("Sandbox interpreter memory (with numpy)", "sandbox_wasm_bytes", "B"),
+    ("Sandbox interpreter memory at start", "sandbox_wasm_bytes", "B"),
     ("Recovery: limit fired -> next grade", "recovery_ms", "ms"),
     ("Answer parser, worst input found (native)", "parser_worst_ms", "ms"),
     ("Bytes, first visit", "bytes_first_visit", "B"),

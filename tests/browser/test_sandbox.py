@@ -199,3 +199,17 @@ def test_the_sandbox_starts_only_where_there_is_build_code(page, site_url):
     assert exercise(page, "0.5").get_attribute("data-state") == "unanswered"
     stages = page.evaluate("workbook.sandbox.startStages")
     assert 0 < stages["booted"] <= stages["ready"] and stages["wasmBytes"] > 1_000_000
+
+
+def test_runs_that_queue_up_are_sent_one_at_a_time(lab):
+    """A run longer than the acknowledgement wait, with another behind it: neither is taken for a lost sandbox."""
+    page, _ = lab
+    slow = ("import time\nstart = time.monotonic()\nwhile time.monotonic() - start < 6:\n    pass\n" + GOOD)
+    replies = page.evaluate("""async ([slow, good]) => {
+      const cases = await workbook.runtime.request({op: "cases", exercise: "0.5", code: good});
+      const box = workbook.sandbox, lost = box.lost || 0;
+      const run = (code) => box.request({op: "run", job: cases.value.job, code}, {limitMs: 30000});
+      const replies = await Promise.all([run(slow), run(good)]);
+      return {oks: replies.map((r) => r.ok), lost: (box.lost || 0) - lost};
+    }""", [slow, GOOD])
+    assert replies == {"oks": [True, True], "lost": 0}

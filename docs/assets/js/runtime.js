@@ -13,9 +13,9 @@
 //
 // The same class drives the sandbox that runs Build code (sandbox-client.js),
 // with two options: it does not set <html data-workbook-runtime> (that is the
-// grader's), and it expects every request to be acknowledged at once: a
-// sandbox that does not is gone (killed, or closed), and a fresh one gets the
-// request.
+// grader's), and it sends one request at a time and expects it to be
+// acknowledged at once: a sandbox that does not is gone (killed, or closed),
+// and a fresh one gets the request.
 
 import { ERROR, RUNTIME, setRootState } from "./contract.js";
 
@@ -43,8 +43,8 @@ export class Runtime {
   /**
    * `workerURL`: the worker's script, or a function that starts the worker; `early`: a worker
    * the page's head started. Options: `role` ("grader" sets the runtime state of the page,
-   * "sandbox" does not), `ackMs` (when set, a worker that does not acknowledge a request
-   * within it is replaced, and the request sent again, once).
+   * "sandbox" does not), `ackMs` (when set, requests are sent one at a time, and a worker
+   * that does not acknowledge one within `ackMs` is replaced and the request sent again, once).
    */
   constructor(workerURL, early, { role = "grader", ackMs = 0 } = {}) {
     this.workerURL = workerURL;
@@ -125,7 +125,9 @@ export class Runtime {
       } else if (kind === ERROR.memory || kind === ERROR.runtime || kind === ERROR.crash) {
         this.pending.set(data.id, entry);
         this.restart(entry, data.reply); // Python may be left broken: replace it
+        return;
       } else entry.resolve(data.reply);
+      this.sendNext(entry);
     }
   }
 
@@ -146,12 +148,22 @@ export class Runtime {
   }
 
   send(entry) {
-    this.arm(entry, entry.msg.op === "run" ? LOAD_LIMIT_MS : entry.limitMs);
     if (this.ackMs) {
+      if (this.inFlight && this.inFlight !== entry) return; // sent when the one in flight is answered
+      this.inFlight = entry;
       clearTimeout(entry.ackTimer);
       entry.ackTimer = setTimeout(() => this.unacknowledged(entry), this.ackMs);
     }
+    this.arm(entry, entry.msg.op === "run" ? LOAD_LIMIT_MS : entry.limitMs);
     this.worker.postMessage(entry.msg);
+  }
+
+  /** `done` was answered: send the next request, when they go one at a time. */
+  sendNext(done) {
+    if (this.inFlight !== done) return;
+    this.inFlight = null;
+    const [next] = this.pending.values();
+    if (next && this.ready) this.send(next);
   }
 
   /** The worker did not even acknowledge `entry`: it is gone. A fresh one gets it (once). */
@@ -195,6 +207,7 @@ export class Runtime {
   /** A fresh worker in place of this one; pending requests are sent to it once it is ready. */
   replace() {
     this.worker.terminate();
+    this.inFlight = null;
     for (const other of this.pending.values()) {
       clearTimeout(other.timer); // re-armed when re-sent
       clearTimeout(other.ackTimer);
