@@ -19,9 +19,10 @@ import { Runtime } from "./runtime.js";
 const ACK_MS = 5_000; // a sandbox that has not acknowledged a request by then is gone
 let sandbox = null;
 
-/** The tab's sandbox, started now if it is not running yet. */
+/** The tab's sandbox, started now if it is not running yet (or again, if it could not start). */
 export function startSandbox(graderURL) {
-  if (!sandbox) {
+  if (sandbox?.failure) sandbox.worker.terminate();
+  if (!sandbox || sandbox.failure) {
     const script = new URL("sandbox.js", graderURL).href;
     const settings = { indexURL: new URL("../vendor/pyodide/", script).href };
     const source = `self.WB_SANDBOX = ${JSON.stringify(settings)};\nimportScripts(${JSON.stringify(script)});\n`;
