@@ -213,3 +213,22 @@ def test_runs_that_queue_up_are_sent_one_at_a_time(lab):
       return {oks: replies.map((r) => r.ok), lost: (box.lost || 0) - lost};
     }""", [slow, GOOD])
     assert replies == {"oks": [True, True], "lost": 0}
+
+
+def test_a_sandbox_that_could_not_start_is_started_again(page, site_url):
+    failures = []
+
+    def once(route):
+        if not failures:
+            failures.append(route.request.url)
+            route.abort()
+        else:
+            route.continue_()
+    page.route("**/python_stdlib.sandbox.zip", once)
+    open_chapter(page, site_url, 0)  # the sandbox starts when the page is idle, and fails
+    page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.failure", timeout=LONG)
+    assert page.evaluate("document.documentElement.dataset.workbookRuntime") == "ready"  # the grader's state is its own
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, GOOD)
+    assert run_build(ex, LONG) == "correct"  # the first Run starts a fresh one
+    assert len(failures) == 1

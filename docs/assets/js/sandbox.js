@@ -30,6 +30,11 @@ const { indexURL } = settings;
 const STDLIB = indexURL + "python_stdlib.sandbox.zip";
 const LOCK = indexURL + "pyodide-lock.sandbox.json";
 
+// Failures are told by this file's own messages ("failed", or a reply): the browser's
+// report of an uncaught error here (Pyodide's, when a download fails) would reach the
+// page as an error of its own.
+for (const type of ["error", "unhandledrejection"]) self.addEventListener(type, (event) => event.preventDefault());
+
 let requests = null; // messages that came before start-up ended
 let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the request running
 
