@@ -23,7 +23,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from workbook_sandbox.runner import MESSAGE_CAP, STDOUT_CAP, TRACEBACK_CAP
-from workbook_sandbox.values import TEXT_CAP, clip, show
+from workbook_sandbox.values import DEPTH_CAP, ITEMS_CAP, TEXT_CAP, clip, show
 
 from .verdict import GradingError
 
@@ -76,9 +76,9 @@ def _value(raw: Any, depth: int = 0) -> dict[str, Any]:
         except OverflowError:
             pass
     length, items = raw.get("length"), raw.get("items")
-    if type(length) is int and length >= 0 and isinstance(items, list) and depth < 4:
+    if type(length) is int and length >= 0 and isinstance(items, list) and depth <= DEPTH_CAP:
         out["length"] = length
-        out["items"] = [_value(item, depth + 1) for item in items[:64]]
+        out["items"] = [_value(item, depth + 1) for item in items[:ITEMS_CAP]]
     return out
 
 

@@ -25,6 +25,7 @@ from __future__ import annotations
 import copy
 import json
 import random
+import sys
 from dataclasses import dataclass
 from typing import Any, Callable, ClassVar
 
@@ -133,8 +134,6 @@ def _numbers(value: Any) -> Any:
 
 def _grader_objects() -> list[object]:
     """The exercises loaded so far (their fields hold keys and references), for a run in this process."""
-    import sys
-
     out: list[object] = []
     for name, mod in list(sys.modules.items()):
         if name.startswith("workbook.bank.ch"):
