@@ -64,7 +64,8 @@ class _CappedIO(io.StringIO):
 def error_info(err: BaseException, source_lines: list[str]) -> dict[str, Any]:
     """The error's type, message, the learner's last line and a traceback of the learner's frames only."""
     if isinstance(err, SyntaxError) and err.filename == FILENAME:
-        line = f"line {err.lineno}: {(err.text or '').rstrip()}"
+        text = (err.text or "").rstrip()
+        line = f"line {err.lineno}: {text}"
         return {"type": "SyntaxError", "message": clip(str(err.msg), MESSAGE_CAP), "line": err.lineno,
                 "traceback": clip(f"{line}\nSyntaxError: {err.msg}", TRACEBACK_CAP)}
     lines: list[str] = []

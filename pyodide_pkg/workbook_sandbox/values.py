@@ -44,7 +44,9 @@ def _repr(value: Any) -> str:
 
 
 def _big_int(value: int) -> str:
-    return f"an int of {len(str(value)) if value.bit_length() < 10_000 else 'about %d' % (value.bit_length() * 0.30103)} digits"
+    bits = value.bit_length()
+    digits = str(len(str(value))) if bits < 10_000 else f"about {int(bits * 0.30103)}"  # str() refuses longer ints
+    return f"an int of {digits} digits"
 
 
 def _float(value: float) -> str:
