@@ -49,9 +49,10 @@ build/wheel.stamp: build/vendor.stamp scripts/build_wheel.py $(PKG_SOURCES) .ven
 
 # The standard library cut in two: the core the worker starts with (what start-up and
 # the grader import, found by running them in Node, plus the package) and the rest.
-build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_stdlib.py
+build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_stdlib.py scripts/sandbox_files.py
 	node scripts/stdlib_probe.mjs
 	$(BIN)/python scripts/split_stdlib.py
+	$(BIN)/python scripts/sandbox_files.py  # the sandbox's Python: the core without the grading package
 	touch $@
 
 # The worker's memory snapshot: Node boots the vendored Pyodide with the package imported.

@@ -39,8 +39,13 @@ kinds = {}
 for ex in bank.all_exercises():
     kinds.setdefault(ex.kind, ex)
 for kind, ex in sorted(kinds.items()):
-    field = "code" if ex.op == "run" else "answer"
-    reply = json.loads(api.handle(json.dumps({"op": ex.op, "exercise": ex.id, field: ex.starter if ex.op == "run" else "1"})))
+    if ex.op == "run":  # the grader's part of a Build run: its cases and its judgement (the code runs in the sandbox)
+        from workbook_sandbox.runner import run_json
+        job = json.loads(api.handle(json.dumps({"op": "cases", "exercise": ex.id, "code": ex.starter})))["value"]["job"]
+        request = {"op": "judge", "exercise": ex.id, "outputs": run_json(job, ex.starter)}
+    else:
+        request = {"op": ex.op, "exercise": ex.id, "answer": "1"}
+    reply = json.loads(api.handle(json.dumps(request)))
     assert reply["ok"], reply
 # Leave no trace of this machine or this script: loadPyodide puts "" back on
 # sys.path after a restore, and Node's "_" names the build script.

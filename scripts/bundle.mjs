@@ -18,3 +18,5 @@ await build({
   chunkNames: "chunks/[name]-[hash]",
 });
 await build({ ...common, entryPoints: { worker: "docs/assets/js/worker.js" }, outdir: "docs/assets/dist", format: "iife" });
+// The sandbox that runs learner code (docs/assets/js/sandbox.js): a classic worker script of its own.
+await build({ ...common, entryPoints: { sandbox: "docs/assets/js/sandbox.js" }, outdir: "docs/assets/dist", format: "iife" });

@@ -7,9 +7,10 @@ Python's standard library; a start and the grader use about 130 of its files
 worker starts from
 
 * ``python_stdlib.core.zip``: those files, every ``__init__`` above them, the
-  grading package ``workbook`` itself (so no package loader runs at start-up;
-  its docstrings, doctests included, stay in the repository and the wheel),
-  and ``stdlib-rest.txt``, the names of the modules left out;
+  grading package ``workbook`` itself and ``workbook_sandbox``, which it uses
+  (so no package loader runs at start-up; their docstrings, doctests included,
+  stay in the repository and the wheel), and ``stdlib-rest.txt``, the names of
+  the modules left out;
 * ``python_stdlib.rest.zip``: everything else, which ``workbook/lazy_stdlib.py``
   mounts the first time an import asks for it (the page fetches it ahead of a
   Build run that imports anything).
@@ -36,7 +37,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 SOURCE = ROOT / "build" / "stdlib" / "python_stdlib.zip"
 USED = ROOT / "build" / "stdlib-used.json"
-PACKAGE = ROOT / "pyodide_pkg" / "workbook"
+PACKAGES = (ROOT / "pyodide_pkg" / "workbook", ROOT / "pyodide_pkg" / "workbook_sandbox")
 OUT = ROOT / "docs" / "assets" / "vendor" / "pyodide"
 CORE, REST = "python_stdlib.core.zip", "python_stdlib.rest.zip"
 INDEX = "stdlib-rest.txt"  # workbook/lazy_stdlib.py reads it
@@ -108,8 +109,8 @@ def _write(path: Path, entries: list[tuple[str, bytes]]) -> None:
 
 
 def package_files() -> list[tuple[str, bytes]]:
-    return [(f"workbook/{p.relative_to(PACKAGE).as_posix()}", p.read_bytes())
-            for p in sorted(PACKAGE.rglob("*")) if p.suffix in (".py", ".json") and "__pycache__" not in p.parts]
+    return [(f"{package.name}/{p.relative_to(package).as_posix()}", p.read_bytes()) for package in PACKAGES
+            for p in sorted(package.rglob("*")) if p.suffix in (".py", ".json") and "__pycache__" not in p.parts]
 
 
 def split(source: Path, used: list[str], out: Path) -> dict:

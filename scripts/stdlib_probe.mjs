@@ -4,7 +4,7 @@
 // the grading package from its sources (as the page will: from the core zip,
 // not through the package loader) and drives every request the page sends:
 // a grade of each exercise with good, bad and unreadable answers, Build runs
-// that pass, fail, raise and do not compile, draws, splits, readings and every
+// that pass, fail, raise and do not compile (run in process, as the sandbox runs them), draws, splits, readings and every
 // figure. The modules then loaded from the standard library are the core
 // (scripts/split_stdlib.py); the rest is fetched on first use
 // (workbook/lazy_stdlib.py).
@@ -32,7 +32,7 @@ function copyTree(dir, into) {
     } else if (/\.(py|json)$/.test(name)) py.FS.writeFile(`${into}/${name}`, readFileSync(from));
   }
 }
-copyTree(path.join(pkg, "workbook"), "/probe/workbook");
+for (const name of ["workbook", "workbook_sandbox"]) copyTree(path.join(pkg, name), `/probe/${name}`);
 
 const PROBE = `
 import importlib, json, pkgutil, sys
@@ -46,10 +46,12 @@ def ask(**request):
     api.handle(json.dumps(request))
 
 for ex in bank.all_exercises():
-    if ex.op == "run":
+    if ex.op == "run":  # the page asks for cases and a judgement; the sandbox runs the code (runner, here in process)
         for code in (ex.starter, ex.solution, "def f(:\\n    pass\\n", "def %s(*a):\\n    return 1/0\\n" % ex.function,
                      "import no_such_module\\n", "x = 1\\n", "print('hi')\\n", "def %s(*a):\\n    return 5\\n" % ex.function):
-            ask(op="run", exercise=ex.id, code=code)
+            ask(op="cases", exercise=ex.id, code=code)
+            ex.check(code)
+        ask(op="judge", exercise=ex.id, outputs="{}")
         continue
     for answer in ("1", "", "abc", "sqrt(2)/2", "45°", "1 m", "2,5", "1e999", [["1"]], ["a"], "a"):
         ask(op=ex.op, exercise=ex.id, answer=answer)

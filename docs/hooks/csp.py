@@ -21,6 +21,12 @@ Why each source:
   element it creates at run time, and pages carry ``style`` attributes
   (the performance page's tables); a hash cannot cover either.
 * ``img-src data:``: small icons written as data: URLs in the theme's CSS.
+* ``worker-src blob:``: the sandbox that runs learner code is started from a
+  ``blob:`` URL (``docs/assets/js/sandbox-client.js``) so that it inherits this
+  policy: no eval, and nothing fetched, imported or connected outside the
+  site's origin, enforced by the browser in that worker too. (A worker started
+  from its own URL gets its policy from its response headers, which a static
+  host does not send.)
 
 ``frame-ancestors`` and ``sandbox`` are left out: browsers ignore them in a
 ``<meta>``. Under ``mkdocs serve`` no policy is written (its live-reload script
@@ -58,7 +64,7 @@ def policy(script_hashes: list[str]) -> str:
     return "; ".join([
         "default-src 'self'",
         f"script-src {scripts}",
-        "worker-src 'self'",
+        "worker-src 'self' blob:",
         "connect-src 'self'",
         "img-src 'self' data:",
         "font-src 'self'",

@@ -4,8 +4,14 @@ Requests (``contract.json`` → ``ops``):
 
 * ``{"op": "grade", "exercise": "4.2", "answer": ...}`` for the kinds whose ``op``
   is ``grade`` (Derive, Trace, Debug, Design);
-* ``{"op": "run", "exercise": "0.5", "code": "..."}`` for Build (the page starts
-  its time limit when the worker says the code starts);
+* ``{"op": "run", "exercise": "0.5", "code": "..."}`` for Build, natively (in the
+  page the grader refuses it: learner code runs in the sandbox worker, and the
+  page asks for ``cases``, runs the code there, then asks for ``judge``);
+* ``{"op": "cases", "exercise": "0.5", "code": "..."}``: what the sandbox needs
+  for a Build run (``job``), and whether the code is ``plain`` (else the page
+  replaces the sandbox after the run);
+* ``{"op": "judge", "exercise": "0.5", "outputs": "..."}``: the verdict on the
+  sandbox's report;
 * ``{"op": "figure", "figure": "rotation-2d", "params": {"theta": 30}}`` for a
   figure's next frame (``svg``, ``readouts``, ``flags``);
 * ``{"op": "split", "exercise": "0.7", "text": "[[0, -1], [1, 0]]"}``: a pasted
@@ -16,10 +22,13 @@ Requests (``contract.json`` → ``ops``):
   17's statement, hint, derivation and label, filled into the exercise's
   templates (Derive).
 
-``grade``, ``split`` and ``read`` take an optional ``"variant"`` (default 0).
+``grade``, ``split``, ``read``, ``cases`` and ``judge`` take an optional
+``"variant"`` (default 0).
 
 Every reply is an envelope: ``{"ok": true, "value": VERDICT_OR_FRAME}`` or
-``{"ok": false, "error": {"kind": ..., "message": ...}}``.
+``{"ok": false, "error": {"kind": ..., "message": ...}}``. A request that is not
+JSON, not an object, too large, or whose fields have the wrong types is a
+``bad-request``; a message quotes at most a short prefix of what a request held.
 
 >>> import json
 >>> json.loads(handle('{"op": "grade", "exercise": "0.1", "answer": "3"}'))["value"]["status"]
@@ -31,23 +40,32 @@ Every reply is an envelope: ``{"ok": true, "value": VERDICT_OR_FRAME}`` or
 from __future__ import annotations
 
 import json
+import sys
 from typing import Any
 
 from . import bank
+from .build_plain import plain
 from .contract import OPS
 from .variants import VariantError, check_seed, fill
-from .verdict import GradingError, fail, ok
+from .verdict import GradingError, fail, ok, quote
+
+REQUEST_CAP = 2_000_000  # characters of a request (a Build program may be long)
+ANSWER_CAP = 10_000  # characters of an answer's text
+TEXTS_CAP = 50_000  # characters of a draw's templates
+# The type of each field a request may carry (None stands for a field left out); a figure's
+# params are the figure's to check (an error of kind "figure").
+FIELDS: dict[str, type] = {"exercise": str, "code": str, "text": str, "figure": str, "outputs": str, "texts": dict}
 
 
 def _exercise(request: dict[str, Any], kind: str | None = None):
     try:
         seed = check_seed(request.get("variant", 0))
     except ValueError as err:
-        raise GradingError("bad-request", f"This page asked for variant {request.get('variant')!r}: {err}.") from None
+        raise GradingError("bad-request", f"This page asked for variant {quote(request.get('variant'))}: {err}.") from None
     try:
         ex = bank.variant(str(request.get("exercise")), seed)
     except KeyError:
-        raise GradingError("unknown-exercise", f"This page asked about exercise {request.get('exercise')!r}, "
+        raise GradingError("unknown-exercise", f"This page asked about exercise {quote(request.get('exercise'))}, "
                            "which the grader does not know.") from None
     if kind is not None:
         if ex.kind != kind:
@@ -63,7 +81,23 @@ def _grade(request: dict[str, Any]) -> dict[str, Any]:
 
 
 def _run(request: dict[str, Any]) -> dict[str, Any]:
-    return _exercise(request).check(str(request.get("code", ""))).to_dict()
+    ex = _exercise(request)
+    if sys.platform == "emscripten":  # the page: learner code runs in the sandbox worker only
+        raise GradingError("bad-request", f"Exercise {ex.id}'s code runs in the page's sandbox, never in the grader: "
+                           "ask for its cases, run it there, then ask for the judgement.")
+    return ex.check(request.get("code") or "").to_dict()
+
+
+def _cases(request: dict[str, Any]) -> dict[str, Any]:
+    ex = _exercise(request, "build")
+    return {"job": ex.job(), "plain": plain(request.get("code") or ""), "limit": ex.time_limit}
+
+
+def _judge(request: dict[str, Any]) -> dict[str, Any]:
+    ex = _exercise(request, "build")
+    if not isinstance(request.get("outputs"), str):
+        raise GradingError("bad-request", f"A judgement of exercise {ex.id} needs the sandbox's report.")
+    return ex.judge(request["outputs"]).to_dict()
 
 
 def _figure(request: dict[str, Any]) -> dict[str, Any]:
@@ -98,7 +132,8 @@ def _draw(request: dict[str, Any]) -> dict[str, Any]:
 
 
 TEXTS = ("title", "prompt", "hint", "solution")
-HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read, "draw": _draw}
+HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read, "draw": _draw,
+            "cases": _cases, "judge": _judge}
 assert set(HANDLERS) == set(OPS), "every op in contract.json has one handler"
 
 
@@ -129,12 +164,42 @@ def warm_up(ids: list[str] | None = None) -> str:
     return json.dumps(requests)
 
 
+def _well_formed(request: dict[str, Any]) -> None:
+    """Raise GradingError("bad-request") unless every field has its type and size."""
+    for name, kind in FIELDS.items():
+        value = request.get(name)
+        if value is not None and not isinstance(value, kind):
+            raise GradingError("bad-request", f"This request's {name!r} is a {type(value).__name__}, "
+                               f"not a {getattr(kind, '__name__', 'value')}.")
+    _check_answer(request.get("answer"))
+    texts = request.get("texts") or {}
+    if sum(len(v) for v in texts.values() if isinstance(v, str)) > TEXTS_CAP:
+        raise GradingError("bad-request", "This draw's texts are too long.")
+
+
+def _check_answer(answer: Any, depth: int = 0) -> None:
+    """An answer is text, a number, or a list (of lists) of them, as the page's widgets send."""
+    if answer is None or isinstance(answer, (int, float)):
+        return
+    if isinstance(answer, str):
+        if len(answer) > ANSWER_CAP:
+            raise GradingError("bad-request", f"This answer is too long to read ({len(answer):,} characters; "
+                               f"at most {ANSWER_CAP:,}).")
+        return
+    if isinstance(answer, list) and depth < 2 and len(answer) <= 1000:
+        for item in answer:
+            _check_answer(item, depth + 1)
+        return
+    raise GradingError("bad-request", f"This request's answer is not one a widget sends: {quote(answer)}.")
+
+
 def dispatch(request: Any) -> dict[str, Any]:
     """The envelope for one decoded request."""
     op = request.get("op") if isinstance(request, dict) else None
-    if op not in HANDLERS:
-        return fail("bad-request", f"The grader does not know the request {op!r}.")
+    if not isinstance(op, str) or op not in HANDLERS:
+        return fail("bad-request", f"The grader does not know the request {quote(op)}.")
     try:
+        _well_formed(request)
         return ok(HANDLERS[op](request))
     except GradingError as err:
         return fail(err.kind, err.message)
@@ -143,9 +208,20 @@ def dispatch(request: Any) -> dict[str, Any]:
 def handle(raw: str) -> str:
     """Decode a request, dispatch it, and encode the envelope; never raises."""
     try:
-        envelope = dispatch(json.loads(raw))
+        if not isinstance(raw, (str, bytes)) or len(raw) > REQUEST_CAP:
+            envelope = fail("bad-request", "This request is not text, or too large to read.")
+        else:
+            try:
+                request = json.loads(raw)
+            except (ValueError, RecursionError):
+                envelope = fail("bad-request", "This request is not JSON.")
+            else:
+                envelope = dispatch(request)
+        return json.dumps(envelope)
     except MemoryError:
         envelope = fail("memory", "The grader ran out of memory. The Python runtime was restarted.")
-    except Exception as err:  # the page must always get an answer
+    except KeyboardInterrupt:  # the page's interrupt at a time limit: it answers with a timeout itself
+        envelope = fail("timeout", "The grader was stopped at the time limit.")
+    except BaseException as err:  # the page must always get an answer
         envelope = fail("internal", f"The grader failed unexpectedly ({type(err).__name__}). Please report it.")
     return json.dumps(envelope)

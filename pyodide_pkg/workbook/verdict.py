@@ -15,6 +15,12 @@ Traceback (most recent call last):
 ValueError: unknown tag 'nonsense' (contract.json lists the tags)
 >>> fail("unknown-exercise", "No exercise 99.1.")
 {'ok': False, 'error': {'kind': 'unknown-exercise', 'message': 'No exercise 99.1.'}}
+
+A message names a piece of a request by :func:`quote`, which keeps it short
+whatever the request held:
+
+>>> quote("abc"), len(quote("9" * 1000)), quote("9" * 1000)[-3:]
+("'abc'", 40, '99…')
 """
 
 from __future__ import annotations
@@ -22,7 +28,12 @@ from __future__ import annotations
 from dataclasses import asdict, dataclass, field
 from typing import Any
 
+from workbook_sandbox.values import clip
+
 from .contract import DATA, ERRORS, STATUSES
+
+QUOTE_CAP = 40
+MESSAGE_CAP = 1000
 
 
 @dataclass
@@ -58,4 +69,13 @@ def ok(value: Any) -> dict[str, Any]:
 
 
 def fail(kind: str, message: str) -> dict[str, Any]:
-    return {"ok": False, "error": {"kind": GradingError(kind, message).kind, "message": message}}
+    return {"ok": False, "error": {"kind": GradingError(kind, message).kind, "message": clip(message, MESSAGE_CAP)}}
+
+
+def quote(value: Any, limit: int = QUOTE_CAP) -> str:
+    """``repr(value)`` cut to ``limit`` characters: how a message names what a request held."""
+    try:
+        text = repr(value)
+    except (ValueError, RecursionError):  # an int too long to print, a structure too deep
+        text = f"<{type(value).__name__}>"
+    return clip(text, limit)

@@ -122,6 +122,9 @@ class Phases:
                 results.append(r["ms"])
             out[label] = {"first_ms": results[0], "repeat_median_ms": statistics.median(results[1:]),
                           "repeat_ms": results[1:], "bytes": sum(e["bytes"] for e in self.b.server.since(mark))}
+        # The sandbox that ran them (docs/assets/js/sandbox.js): its start, and its interpreter's memory.
+        out["sandbox"] = page.evaluate("() => { const s = window.workbook.sandbox; return s && s.ready ? "
+                                       "{start_ms: s.readyAt - s.startedAt, wasm_bytes: s.startStages.wasmBytes} : null; }")
         run["build"] = out
 
     def recovery(self, page, run: dict) -> None:

@@ -92,3 +92,22 @@ def test_snapshot_was_made_from_the_core_the_site_ships():
         data += length
     assert data == len(packed)
     assert hashlib.sha256(memory).hexdigest() == info["sha256"] and len(memory) == info["bytes"]
+
+
+def test_the_sandbox_holds_no_grading_package():
+    """The sandbox runs learner code: its Python has workbook_sandbox as it is and the whole standard
+    library, not the grading package; its lock (also its fetch's manifest) names no package with it."""
+    package = SITE.parent / "pyodide_pkg" / "workbook_sandbox"
+    with zipfile.ZipFile(VENDOR / "python_stdlib.sandbox.zip") as z:
+        names = set(z.namelist())
+        assert not [n for n in names if n.split("/")[0] == "workbook"]
+        for path in package.glob("*.py"):
+            name = f"workbook_sandbox/{path.name}"
+            assert _without_docstrings(z.read(name)) == _without_docstrings(path.read_bytes()), name
+    with zipfile.ZipFile(VENDOR / "python_stdlib.core.zip") as core, \
+            zipfile.ZipFile(VENDOR / "python_stdlib.rest.zip") as rest:
+        stdlib = {n for n in core.namelist() + rest.namelist() if n.split("/")[0] != "workbook"} - {"stdlib-rest.txt"}
+    assert names == stdlib
+    sandbox_lock = json.loads((VENDOR / "pyodide-lock.sandbox.json").read_text())
+    assert set(sandbox_lock["packages"]) == set(lock()["packages"]) - {"robotics-workbook"}
+    assert all("workbook" not in entry["imports"] for entry in sandbox_lock["packages"].values())

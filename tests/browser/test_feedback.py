@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 
+from workbook import bank
 from helpers import role, answer_derive, editor_code, exercise, feedback, open_chapter, run_build, set_editor
 
 
@@ -81,13 +82,16 @@ def test_build_time_limit_message(page, site_url):
     assert "stopped after 5 s" in feedback(ex).lower()
 
 
-def test_memory_error_is_reported_and_the_runtime_replaced(page, site_url):
+def test_memory_error_is_a_verdict_and_the_sandbox_replaced(page, site_url):
     open_chapter(page, site_url, 0)
     ex = exercise(page, "0.5")
     set_editor(page, ex, "def rotate_2d(x, y, theta):\n    hoard = [0] * (2 ** 30)\n    return x, y\n")
-    assert run_build(ex, timeout=60_000) == "error"
-    assert ex.get_attribute("data-feedback") == "memory"
-    assert "out of memory" in feedback(ex)
-    # A fresh runtime answers the next request.
+    assert run_build(ex, timeout=60_000) == "incorrect"
+    assert ex.get_attribute("data-feedback") == "exception"
+    assert "ran out of memory" in feedback(ex)
+    assert page.evaluate("workbook.sandbox.recycles") == 1
+    # The grader never saw the code: it answers at once; a fresh sandbox runs the next code.
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     assert "2 ** 30" in editor_code(ex)
+    set_editor(page, ex, bank.get("0.5").solution)
+    assert run_build(ex, timeout=60_000) == "correct"

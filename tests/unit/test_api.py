@@ -40,7 +40,7 @@ def test_bad_requests_get_an_error_envelope():
         ({"op": "ping"}, "bad-request"),
         ({"op": "run", "exercise": "0.1", "code": ""}, "wrong-op"),
         ({"op": "grade", "exercise": "0.5", "answer": "def f(): pass"}, "wrong-op"),  # Build runs only through "run"
-        ("not json", "internal"),
+        ("not json", "bad-request"),  # issue 21: malformed is a bad request, not "internal"
         ("[1, 2]", "bad-request"),
     ]
     for request, kind in cases:

@@ -8,9 +8,11 @@ import pkgutil
 import pytest
 
 import workbook
+import workbook_sandbox
 
 MODULES = sorted(
-    info.name for info in pkgutil.walk_packages(workbook.__path__, prefix="workbook.")
+    info.name for package in (workbook, workbook_sandbox)
+    for info in pkgutil.walk_packages(package.__path__, prefix=package.__name__ + ".")
 )
 
 

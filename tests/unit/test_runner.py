@@ -8,8 +8,12 @@ import pytest
 
 from workbook import bank
 from workbook.api import handle
-from workbook.verdict import GradingError
-from workbook.kinds.build import STDOUT_CAP, run as run_build
+from workbook.kinds.build import STDOUT_CAP
+
+
+def run_build(ex, code):
+    return ex.check(code)
+
 
 EX = bank.get("0.5")
 GOOD = "import math\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c*x - s*y, s*x + c*y)\n"
@@ -81,9 +85,11 @@ def test_hidden_cases_report_the_first_failing_input():
     assert hidden["passed"] is False and hidden["input"].startswith("rotate_2d(")
 
 
-def test_memory_error_becomes_a_memory_error_envelope():
+def test_memory_error_is_a_verdict_that_names_it():
     reply = json.loads(handle(json.dumps({"op": "run", "exercise": "0.5",
                                           "code": "def rotate_2d(x, y, theta):\n    raise MemoryError\n"})))
-    assert reply["ok"] is False and reply["error"]["kind"] == "memory"
-    with pytest.raises(GradingError):
-        run_build(EX, "def rotate_2d(x, y, theta):\n    raise MemoryError\n")
+    verdict = reply["value"]
+    assert (verdict["status"], verdict["tag"]) == ("incorrect", "exception")
+    assert verdict["message"].startswith("Your code ran out of memory on rotate_2d(3, 0, 1.570796)")
+    rows = verdict["data"]["tests"]
+    assert rows[0]["actual"] == "raised MemoryError" and rows[1]["actual"] == "not run"

@@ -10,6 +10,12 @@
 //
 // Every request resolves (never rejects) with an envelope: {ok: true, value} or
 // {ok: false, error: {kind, message}} (CONTRACT.md).
+//
+// The same class drives the sandbox that runs Build code (sandbox-client.js),
+// with two options: it does not set <html data-workbook-runtime> (that is the
+// grader's), and it sends one request at a time and expects it to be
+// acknowledged at once: a sandbox that does not is gone (killed, or closed),
+// and a fresh one gets the request.
 
 import { ERROR, RUNTIME, setRootState } from "./contract.js";
 
@@ -34,8 +40,16 @@ function timeoutReply(entry, how) {
 const crashReply = () => failure(ERROR.crash, "The Python runtime crashed while running this; it was restarted. Your code is kept.");
 
 export class Runtime {
-  constructor(workerURL, early) {
+  /**
+   * `workerURL`: the worker's script, or a function that starts the worker; `early`: a worker
+   * the page's head started. Options: `role` ("grader" sets the runtime state of the page,
+   * "sandbox" does not), `ackMs` (when set, requests are sent one at a time, and a worker
+   * that does not acknowledge one within `ackMs` is replaced and the request sent again, once).
+   */
+  constructor(workerURL, early, { role = "grader", ackMs = 0 } = {}) {
     this.workerURL = workerURL;
+    this.setState = role === "grader" ? setRuntimeState : () => {};
+    this.ackMs = ackMs;
     this.nextId = 1;
     this.pending = new Map(); // id -> {msg, resolve, limitMs, timer, onProgress}
     this.readyAt = null;
@@ -49,8 +63,8 @@ export class Runtime {
   spawn(early) {
     this.ready = false;
     this.startedAt = early ? early.started : performance.now();
-    setRuntimeState(RUNTIME.loading);
-    this.worker = early ? early.worker : new Worker(this.workerURL);
+    this.setState(RUNTIME.loading);
+    this.worker = early ? early.worker : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL);
     this.worker.onmessage = (event) => this.receive(event.data);
     this.worker.onerror = (event) => {
       event.preventDefault?.();
@@ -83,7 +97,7 @@ export class Runtime {
       this.startedFrom = data.from; // "snapshot", or "boot" when the snapshot could not be used
       this.startStages = data.stages;
       if (data.why) console.warn("Python runtime: booted without the snapshot:", data.why);
-      setRuntimeState(RUNTIME.ready);
+      this.setState(RUNTIME.ready);
       for (const entry of this.pending.values()) this.send(entry);
       return;
     }
@@ -93,30 +107,36 @@ export class Runtime {
     }
     const entry = this.pending.get(data.id);
     if (!entry) return;
-    if (data.type === "progress") {
+    if (data.type === "received") {
+      clearTimeout(entry.ackTimer);
+    } else if (data.type === "progress") {
       entry.onProgress?.(data.message);
     } else if (data.type === "started") {
       this.arm(entry, entry.limitMs); // the learner's code starts now
     } else if (data.type === "reply") {
       clearTimeout(entry.timer);
+      clearTimeout(entry.ackTimer);
       this.pending.delete(data.id);
       const kind = data.reply.ok ? null : data.reply.error.kind;
       if (entry.interrupted) {
         this.interrupts++;
         this.lastStop = "interrupt";
         entry.resolve(timeoutReply(entry, "interrupt"));
-      } else if (kind === ERROR.memory || kind === ERROR.runtime) {
+      } else if (kind === ERROR.memory || kind === ERROR.runtime || kind === ERROR.crash) {
         this.pending.set(data.id, entry);
         this.restart(entry, data.reply); // Python may be left broken: replace it
+        return;
       } else entry.resolve(data.reply);
+      this.sendNext(entry);
     }
   }
 
   fail(message) {
     this.failure = message;
-    setRuntimeState(RUNTIME.failed);
+    this.setState(RUNTIME.failed);
     for (const [id, entry] of this.pending) {
       clearTimeout(entry.timer);
+      clearTimeout(entry.ackTimer);
       entry.resolve(failure(ERROR.runtime, message));
       this.pending.delete(id);
     }
@@ -128,8 +148,33 @@ export class Runtime {
   }
 
   send(entry) {
+    if (this.ackMs) {
+      if (this.inFlight && this.inFlight !== entry) return; // sent when the one in flight is answered
+      this.inFlight = entry;
+      clearTimeout(entry.ackTimer);
+      entry.ackTimer = setTimeout(() => this.unacknowledged(entry), this.ackMs);
+    }
     this.arm(entry, entry.msg.op === "run" ? LOAD_LIMIT_MS : entry.limitMs);
     this.worker.postMessage(entry.msg);
+  }
+
+  /** `done` was answered: send the next request, when they go one at a time. */
+  sendNext(done) {
+    if (this.inFlight !== done) return;
+    this.inFlight = null;
+    const [next] = this.pending.values();
+    if (next && this.ready) this.send(next);
+  }
+
+  /** The worker did not even acknowledge `entry`: it is gone. A fresh one gets it (once). */
+  unacknowledged(entry) {
+    if (entry.resent) {
+      this.restart(entry, crashReply());
+      return;
+    }
+    entry.resent = true;
+    this.lost = (this.lost || 0) + 1;
+    this.replace();
   }
 
   expire(entry) {
@@ -152,12 +197,22 @@ export class Runtime {
   restart(entry, reply) {
     this.pending.delete(entry.msg.id);
     clearTimeout(entry.timer);
-    this.worker.terminate();
-    for (const other of this.pending.values()) clearTimeout(other.timer); // re-armed when re-sent
+    clearTimeout(entry.ackTimer);
     entry.resolve(reply);
     this.restarts++;
     this.lastStop = "terminate";
-    this.spawn(null); // other pending requests are re-sent once the new worker is ready
+    this.replace();
+  }
+
+  /** A fresh worker in place of this one; pending requests are sent to it once it is ready. */
+  replace() {
+    this.worker.terminate();
+    this.inFlight = null;
+    for (const other of this.pending.values()) {
+      clearTimeout(other.timer); // re-armed when re-sent
+      clearTimeout(other.ackTimer);
+    }
+    this.spawn(null);
   }
 
   /** Send `request` ({op, ...}); resolves with an envelope, never rejects. */

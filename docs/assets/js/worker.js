@@ -250,37 +250,10 @@ const ready = (async () => {
 
 const failure = (kind, message) => ({ ok: false, error: { kind, message } });
 
-// The rest of the standard library, fetched before a run that needs it, so that
-// the run's time limit does not pay for the download (the import itself would
-// fetch it too, synchronously: lazy_stdlib.py). Offline it comes from the
-// service worker's copy.
-let restMounted = null;
-function mountRest() {
-  restMounted ??= (async () => {
-    const response = await fetch(STDLIB_REST);
-    if (!response.ok) throw new Error(`HTTP ${response.status}`);
-    pyodide.FS.writeFile(lazyStdlib.REST, new Uint8Array(await response.arrayBuffer()));
-    lazyStdlib.mount();
-  })();
-  restMounted.catch(() => {
-    restMounted = null;
-  });
-  return restMounted;
-}
-
+// Learner code never runs here: Build code runs in the sandbox (sandbox.js),
+// and the grader refuses "run" in the page (workbook/api.py).
 async function serve(msg) {
   await ready;
-  if (msg.op === "run" && /\bimport\b/.test(msg.code || "")) {
-    if (lazyStdlib.needed_by(msg.code)) await mountRest().catch(() => {}); // if it fails, an import that needs it says so
-    const needs = /^\s*(?:import|from)\s+numpy\b/m.test(msg.code);
-    if (needs) self.postMessage({ id: msg.id, type: "progress", message: "Loading NumPy…" });
-    try {
-      await pyodide.loadPackagesFromImports(msg.code);
-    } catch (err) {
-      return failure(ERROR.package, "A package your code imports could not be loaded: " + err.message);
-    }
-  }
-  if (msg.op === "run") self.postMessage({ id: msg.id, type: "started" });
   const { id, ...request } = msg;
   if (interruptBuffer) {
     Atomics.store(interruptBuffer, 0, 0); // a late signal meant for an earlier request

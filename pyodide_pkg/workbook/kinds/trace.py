@@ -27,7 +27,7 @@ class Trace(Exercise):
 
     def check(self, choice: object) -> Verdict:
         options = {o.key: o for o in self.options}
-        if choice not in options:
+        if not isinstance(choice, str) or choice not in options:  # a list would not even hash
             return Verdict("invalid", "Choose one of the options first.")
         return Verdict("correct" if choice == self.answer else "incorrect", options[choice].why, tag=TAG.why)
 

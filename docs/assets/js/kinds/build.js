@@ -1,4 +1,5 @@
-// Build: the learner's code and a Run button; the worker runs the tests.
+// Build: the learner's code and a Run button. The code runs in the sandbox, a
+// worker of its own (sandbox-client.js); the grader picks the tests and judges.
 //
 // The page shows the code (starter or saved) as plain text at first. CodeMirror
 // is loaded and built only when the exercise comes near the viewport and the
@@ -7,6 +8,7 @@
 // stutters on, an editor nobody is looking at yet.
 import { ATTR, ROLE, RUNTIME, findRole } from "../contract.js";
 import { renderTests, setPending, showMessage } from "../feedback.js";
+import { withSandbox } from "../sandbox-client.js";
 
 const runtimeSettled = new Promise((resolve) => {
   const done = () => document.documentElement.getAttribute(ATTR.runtime) !== RUNTIME.loading;
@@ -83,6 +85,8 @@ function lazyEditor(ctx, host, onRun) {
 }
 
 export function init(ctx) {
+  ctx.runtime = withSandbox(ctx.runtime); // ctx.submit("run", ...) goes through the sandbox
+  runtimeSettled.then(whenIdle).then(() => ctx.runtime.prepare());
   const host = findRole(ctx.el, ROLE.editor);
   const runButton = findRole(ctx.el, ROLE.run);
   const limitMs = Number(host.dataset.timeLimit || 5) * 1000;

@@ -1,0 +1,195 @@
+"""The grader's side of a Build run: read the sandbox's report, compare, write the verdict.
+
+The report (``workbook_sandbox.runner``) says what the learner's function
+returned on each case, or what it raised. It comes from the sandbox, where the
+learner's code ran, so it is data, never a verdict: every field is checked for
+its type and cut to its size here, a value counts only as the numbers it
+carries, and the expected values are computed by the grader itself. A forged
+report can at most claim outputs for the learner's own function.
+
+>>> want = [[0.0, 3.0]]
+>>> report = {"cases": [{"value": {"type": "tuple", "length": 2, "text": "(0.0, 3.0)",
+...     "items": [{"type": "float", "number": 0.0, "text": "0.0"}, {"type": "float", "number": 3.0, "text": "3.0"}]}}]}
+>>> rows = compare(read_report(report, 1), [Case("example", "rotate_2d(3, 0, 1.570796)", want[0])], 1e-6, 1e-9)
+>>> rows[0]["passed"], rows[0]["actual"]
+(True, '(0.0, 3.0)')
+"""
+
+from __future__ import annotations
+
+import json
+import math
+from dataclasses import dataclass
+from typing import Any
+
+from workbook_sandbox.runner import MESSAGE_CAP, STDOUT_CAP, TRACEBACK_CAP
+from workbook_sandbox.values import DEPTH_CAP, ITEMS_CAP, TEXT_CAP, clip, show
+
+from .verdict import GradingError
+
+REPORT_CAP = 1_000_000  # characters of a report the grader reads at all
+UNREADABLE = "The sandbox's report on this run could not be read; run it again."
+
+
+@dataclass
+class Case:
+    """One test as the grader knows it: how it is shown and the expected value (numbers, maybe nested)."""
+
+    name: str
+    input: str
+    want: Any
+
+    @property
+    def expected(self) -> str:
+        return show(_rounded(self.want))
+
+
+def _rounded(value: Any) -> Any:
+    if isinstance(value, (list, tuple)):
+        return tuple(_rounded(v) for v in value)
+    return round(value, 6) if math.isfinite(value) else value
+
+
+# ---- Reading the report ----------------------------------------------------------------
+
+
+def _text(value: Any, cap: int) -> str:
+    return clip(value, cap) if isinstance(value, str) else ""
+
+
+def _error(raw: Any) -> dict[str, Any]:
+    raw = raw if isinstance(raw, dict) else {}
+    line = raw.get("line")
+    return {"type": _text(raw.get("type"), 60) or "Exception", "message": _text(raw.get("message"), MESSAGE_CAP),
+            "line": line if type(line) is int and 0 < line < 10_000_000 else None,
+            "traceback": _text(raw.get("traceback"), TRACEBACK_CAP)}
+
+
+def _value(raw: Any, depth: int = 0) -> dict[str, Any]:
+    """An encoded value, reduced to what the grader uses: type, text, number or items."""
+    raw = raw if isinstance(raw, dict) else {}
+    out: dict[str, Any] = {"type": _text(raw.get("type"), 40) or "object", "text": _text(raw.get("text"), TEXT_CAP)}
+    number = raw.get("number")
+    if type(number) in (int, float) and not isinstance(number, bool):
+        try:
+            out["number"] = float(number)
+        except OverflowError:
+            pass
+    length, items = raw.get("length"), raw.get("items")
+    if type(length) is int and length >= 0 and isinstance(items, list) and depth <= DEPTH_CAP:
+        out["length"] = length
+        out["items"] = [_value(item, depth + 1) for item in items[:ITEMS_CAP]]
+    return out
+
+
+@dataclass
+class Report:
+    load: dict[str, Any] | None
+    missing: bool
+    cases: list[dict[str, Any]]
+    stdout: str
+    stopped: str | None
+
+
+def read_report(raw: Any, count: int) -> Report:
+    """The sandbox's report (a dict, or its JSON text) checked and cut to size; ``count`` cases at most.
+    Raises GradingError("bad-request") when it is not a report at all."""
+    if isinstance(raw, str):
+        if len(raw) > REPORT_CAP:
+            raise GradingError("bad-request", UNREADABLE)
+        try:
+            raw = json.loads(raw)
+        except (ValueError, RecursionError):
+            raise GradingError("bad-request", UNREADABLE) from None
+    if not isinstance(raw, dict) or not isinstance(raw.get("cases", []), list):
+        raise GradingError("bad-request", UNREADABLE)
+    load = raw.get("load")
+    cases = []
+    for case in raw.get("cases", [])[:count]:
+        case = case if isinstance(case, dict) else {}
+        if "error" in case:
+            cases.append({"error": _error(case["error"])})
+        elif "value" in case:
+            cases.append({"value": _value(case["value"])})
+        else:
+            cases.append({"skipped": True})
+    stdout = _text(raw.get("stdout"), STDOUT_CAP)
+    if raw.get("cut") is True or len(raw.get("stdout") or "") > STDOUT_CAP:
+        stdout += "\n… (output cut)"
+    stopped = raw.get("stopped") if raw.get("stopped") in ("interrupt", "memory") else None
+    return Report({**_error(load), "phase": "syntax" if load.get("phase") == "syntax" else "load"}
+                  if isinstance(load, dict) else None, raw.get("missing") is True, cases, stdout, stopped)
+
+
+# ---- Comparing ---------------------------------------------------------------------------
+
+
+class Mismatch(Exception):
+    """A value of the wrong shape or type: the message for its test row."""
+
+
+def _what(value: dict[str, Any]) -> str:
+    """A value named in a message: its type and text ("int 5"), or just the text of an int too large to show."""
+    return value["text"] if value["type"] == "int" and "number" not in value else f"{value['type']} {value['text']}"
+
+
+def numbers(value: dict[str, Any], want: Any) -> Any:
+    """The numbers ``value`` carries, shaped as ``want`` (a number or a sequence of them, maybe nested);
+    Mismatch when it has another shape."""
+    if not isinstance(want, (list, tuple)):
+        if "number" not in value:
+            if value["type"] == "int":
+                raise Mismatch(f"expected plain numbers, got a number too large for a float ({value['text']})")
+            raise Mismatch(f"expected plain numbers, got {value['type']} {value['text']} inside the result")
+        return value["number"]
+    if "length" not in value:
+        raise Mismatch(f"expected a sequence of {len(want)} numbers, got {_what(value)}")
+    if value["length"] != len(want):
+        raise Mismatch(f"expected {len(want)} numbers, got {value['length']}: {value['text']}")
+    if len(value["items"]) != len(want):
+        raise Mismatch(f"expected {len(want)} numbers: {value['text']}")
+    out = []
+    for item, w in zip(value["items"], want):
+        if not isinstance(w, (list, tuple)) and "length" in item:
+            raise Mismatch(f"expected plain numbers, got {item['type']} {item['text']} inside the result")
+        out.append(numbers(item, w))
+    return out
+
+
+def close(got: Any, want: Any, rel_tol: float, abs_tol: float) -> bool:
+    if isinstance(want, (list, tuple)):
+        return all(close(g, w, rel_tol, abs_tol) for g, w in zip(got, want))
+    return math.isclose(got, want, rel_tol=rel_tol, abs_tol=max(abs_tol, 1e-9))
+
+
+def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float) -> dict[str, Any]:
+    """One test row: the case, what the learner's function gave, and whether it agrees."""
+    out: dict[str, Any] = {"name": case.name, "input": case.input, "expected": case.expected}
+    if "error" in outcome:
+        error = outcome["error"]
+        return {**out, "actual": f"raised {error['type']}", "passed": False,
+                "message": error["traceback"] or f"{error['type']}: {error['message']}", "line": error["line"]}
+    if "value" not in outcome:
+        return {**out, "actual": "not run", "passed": False, "message": "The run stopped before this test."}
+    value = outcome["value"]
+    try:
+        got = numbers(value, case.want)
+    except Mismatch as err:
+        return {**out, "actual": value["text"], "passed": False, "message": str(err)}
+    return {**out, "actual": show(_rounded(got)), "passed": close(got, case.want, rel_tol, abs_tol), "message": ""}
+
+
+def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float) -> list[dict[str, Any]]:
+    """A row per case, in order (a case the report lacks was not run)."""
+    outcomes = report.cases + [{"skipped": True}] * (len(cases) - len(report.cases))
+    return [row(case, outcome, rel_tol, abs_tol) for case, outcome in zip(cases, outcomes)]
+
+
+def hidden_summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
+    """One row for all the hidden cases: the first that fails, or 'all agree'."""
+    summary = {"name": f"{len(rows)} hidden random cases"}
+    for r in rows:
+        if not r["passed"]:
+            return {**r, **summary}
+    return {**summary, "input": f"{len(rows)} random inputs", "expected": "reference values",
+            "actual": "all agree", "passed": True, "message": ""}

@@ -1,0 +1,188 @@
+"""Put back, when a run ends, what a learner's code changed in the interpreter.
+
+:class:`Restore` is a context manager. On entry it notes
+
+* every loaded module's namespace (which object each name is bound to) and the
+  module table ``sys.modules`` itself;
+* for the modules of ``homes`` (package names): the attributes of the classes
+  they define, the contents of their module-level dicts, lists and sets, and
+  the code and defaults of their functions;
+* the fields (``__dict__``) of ``objects``, and the code of the functions they hold;
+* the recursion limit.
+
+On exit it puts all of that back (names a run added to a module are removed),
+the builtins and this module's own names first, with nothing but dict methods
+(the rest of the restore looks them up),
+reseeds :mod:`random`, and, when NumPy is loaded, resets its error handling,
+print options and global generator. Modules a run imported stay loaded (NumPy
+is slow to load); their state is reset only where it existed before the run.
+
+What it cannot see (a change inside an object no module names, memory written
+through ``js``...) is why the page replaces the sandbox after any run whose code
+was not plain (``workbook.build_plain``).
+
+>>> import math
+>>> with Restore():
+...     math.cos = abs
+...     math.extra = 1
+>>> math.cos(0.0), hasattr(math, "extra")
+(1.0, False)
+"""
+
+from __future__ import annotations
+
+import builtins
+import random
+import sys
+import types
+from operator import is_
+from typing import Any, Iterable
+
+_FIRST = (vars(builtins), globals())  # what the restore itself looks names up in
+# Packages whose classes, containers and functions are watched besides every module's names.
+STDLIB_HOMES = ("random", "math", "copy", "json", "io", "contextlib", "traceback", "dataclasses", "functools",
+                "workbook_sandbox")
+_MISSING = object()
+_NUMPY_PRINT_DEFAULTS = dict(edgeitems=3, infstr="inf", linewidth=75, nanstr="nan", precision=8, suppress=False,
+                             threshold=1000, formatter=None, sign="-", floatmode="maxprec", legacy=False)
+
+
+def _in_homes(name: str, homes: tuple[str, ...]) -> bool:
+    return name.split(".")[0] in homes
+
+
+def _functions_of(value: Any) -> list[types.FunctionType]:
+    """The plain functions behind ``value`` (a function, a static or class method, a property)."""
+    if isinstance(value, types.FunctionType):
+        return [value]
+    if isinstance(value, (staticmethod, classmethod)):
+        return _functions_of(value.__func__)
+    if isinstance(value, property):
+        return [f for part in (value.fget, value.fset, value.fdel) for f in _functions_of(part)]
+    return []
+
+
+def _function_state(fn: types.FunctionType) -> tuple:
+    return fn.__code__, fn.__defaults__, fn.__kwdefaults__
+
+
+class Restore:
+    def __init__(self, homes: Iterable[str] = STDLIB_HOMES, objects: Iterable[object] = ()) -> None:
+        self.homes = tuple(homes)
+        self.objects = list(objects)
+
+    def __enter__(self) -> "Restore":
+        self.first = [(space, dict(space)) for space in _FIRST]
+        self.table = dict(sys.modules)
+        self.spaces = [(mod.__dict__, _snapshot(mod.__dict__)) for mod in self.table.values()
+                       if isinstance(getattr(mod, "__dict__", None), dict)]
+        watched = [(name, mod) for name, mod in self.table.items()
+                   if mod is not None and _in_homes(name, self.homes) and hasattr(mod, "__dict__")]
+        self.classes = [(cls, dict(vars(cls))) for name, mod in watched for cls in list(vars(mod).values())
+                        if isinstance(cls, type) and cls.__module__ == name]
+        self.containers = [(c, _copy(c)) for _, mod in watched for c in list(vars(mod).values())
+                           if type(c) in (dict, list, set)]
+        self.fields = [(vars(obj), _snapshot(vars(obj))) for obj in self.objects if hasattr(obj, "__dict__")]
+        holders = [vars(mod) for _, mod in watched] + [saved for _, saved in self.classes] \
+            + [vars(obj) for obj in self.objects if hasattr(obj, "__dict__")]
+        functions = {id(fn): fn for space in holders for value in list(space.values()) for fn in _functions_of(value)}
+        self.functions = [(fn, _function_state(fn)) for fn in functions.values()]
+        self.recursion = sys.getrecursionlimit()
+        self.numpy = _numpy_state()
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        for space, saved in self.first:
+            space.clear()
+            space.update(saved)
+        for name, mod in self.table.items():
+            if sys.modules.get(name, _MISSING) is not mod:
+                sys.modules[name] = mod
+        for space, saved in self.spaces + self.fields:
+            _put_back(space, saved)
+        for cls, saved in self.classes:
+            for name in set(vars(cls)) - set(saved):
+                _quietly(delattr, cls, name)
+            for name, value in saved.items():
+                if vars(cls).get(name, _MISSING) is not value:
+                    _quietly(setattr, cls, name, value)
+        for container, saved in self.containers:
+            if not _same_items(container, saved):
+                container.clear()
+                (container.update if not isinstance(container, list) else container.extend)(saved)
+        for fn, (code, defaults, kwdefaults) in self.functions:
+            if _function_state(fn) != (code, defaults, kwdefaults):
+                _quietly(setattr, fn, "__code__", code)
+                _quietly(setattr, fn, "__defaults__", defaults)
+                _quietly(setattr, fn, "__kwdefaults__", kwdefaults)
+        sys.setrecursionlimit(self.recursion)
+        random.seed()
+        _reset_numpy(self.numpy)
+
+
+def _copy(container: Any) -> Any:
+    return type(container)(container)
+
+
+def _snapshot(space: dict) -> tuple[tuple, tuple]:
+    return tuple(space), tuple(space.values())
+
+
+def _unchanged(space: dict, snapshot: tuple[tuple, tuple]) -> bool:
+    """Whether ``space`` binds the same names to the same objects, in the same order (by identity:
+    an object's ``==`` is not to be trusted, nor called)."""
+    keys, values = snapshot
+    return len(space) == len(keys) and all(map(is_, space, keys)) and all(map(is_, space.values(), values))
+
+
+def _same_items(container: Any, saved: Any) -> bool:
+    if isinstance(container, dict):
+        return _unchanged(container, _snapshot(saved))
+    if isinstance(container, list):
+        return len(container) == len(saved) and all(map(is_, container, saved))
+    return container == saved
+
+
+def _put_back(space: dict, snapshot: tuple[tuple, tuple]) -> None:
+    """Make ``space`` bind exactly what ``snapshot`` held, without ever emptying it."""
+    if _unchanged(space, snapshot):
+        return
+    saved = dict(zip(*snapshot))
+    for name in [k for k in space if k not in saved]:
+        del space[name]
+    for name, value in saved.items():
+        if space.get(name, _MISSING) is not value:
+            space[name] = value
+
+
+def _quietly(action, *args) -> None:
+    try:
+        action(*args)
+    except (AttributeError, TypeError, ValueError):
+        pass
+
+
+def _numpy_state() -> tuple | None:
+    np = sys.modules.get("numpy")
+    if np is None:
+        return None
+    try:
+        return np.geterr(), np.get_printoptions()
+    except Exception:
+        return None
+
+
+def _reset_numpy(saved: tuple | None) -> None:
+    """NumPy's error handling and print options as before the run (or its defaults, when the run
+    loaded it); its global generator reseeded."""
+    np = sys.modules.get("numpy")
+    if np is None:
+        return
+    try:
+        err, printing = saved or ({"divide": "warn", "over": "warn", "under": "ignore", "invalid": "warn"},
+                                  _NUMPY_PRINT_DEFAULTS)
+        np.seterr(**err)
+        np.set_printoptions(**printing)
+        np.random.seed()
+    except Exception:
+        pass  # a NumPy the run broke: the page replaces the sandbox after a run that was not plain

