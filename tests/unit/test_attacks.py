@@ -110,8 +110,8 @@ def test_nothing_an_attack_does_outlives_its_run(name):
     assert dict(HANDLERS) == handlers
     assert all is __builtins__["all"] if isinstance(__builtins__, dict) else all is __builtins__.all
     assert EX.reference(3, 0, math.pi / 2)[1] == pytest.approx(3.0)
-    assert bank.get("0.1").key == 3 or bank.get("0.1").check("3").status == "correct"
-    assert bank.variant("0.1", 7).key != 99.0
+    assert bank.get("0.1").answer.key == 3 or bank.get("0.1").check("3").status == "correct"
+    assert bank.variant("0.1", 7).answer.key != 99.0
     _builds_still_grade()
     _derive_still_grades()
 

@@ -23,7 +23,7 @@ from __future__ import annotations
 
 import re
 
-from .grammar import InvalidAnswer
+from .grammar import MAX_LENGTH, InvalidAnswer
 from .tokens import canonical_name, normalise
 
 Grid = list[list[str]]
@@ -243,7 +243,7 @@ def is_one_value(text: object) -> bool:
     >>> is_one_value("cos(30°) - sin(30°)"), is_one_value("0.5 -0.866"), is_one_value("[1, 2]")
     (True, False, False)
     """
-    if not isinstance(text, str) or "\\begin" in text or "\n" in text.strip():
+    if not isinstance(text, str) or len(text) > 3 * MAX_LENGTH or "\\begin" in text or "\n" in text.strip():
         return False
     try:
         s = normalise(text)
