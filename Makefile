@@ -135,7 +135,7 @@ browser: $(BIN)/.test
 	else echo "make browser: no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; fi
 	@echo "browser: $$($(BIN)/python scripts/find_browser.py)"
 
-test-unit: $(BIN)/.test
+test-unit: $(BIN)/.test node_modules/.installed
 	$(BIN)/python -m pytest tests/unit
 
 test-browser: site browser
