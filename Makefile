@@ -37,15 +37,18 @@ PAGES := $(shell find docs -type f -not -path 'docs/assets/vendor/*' -not -path 
 .PHONY: serve site test test-unit test-browser bench deps browser clean dev lock python312
 
 # ---- Python 3.12 -------------------------------------------------------------------
+# Where none is found, the first install says so and provides one with uv (`make python312`).
 define CHECK_PYTHON
 if [ -z "$(PY312)" ]; then \
-  echo "This build needs Python 3.12 (what Pyodide 0.27.7 runs) and found none on PATH, in pyenv or from uv."; \
-  echo "Install it (Ubuntu 24.04: apt-get install python3.12-venv), or run 'make python312', which installs"; \
-  echo "uv from PyPI into build/uv and lets it install CPython 3.12; or pass PY312=/path/to/python3.12."; \
-  exit 1; fi
+  echo "This build needs Python 3.12 (what Pyodide 0.27.7 runs) and found none on PATH, in pyenv or from uv:"; \
+  echo "installing uv from PyPI into build/uv, and CPython 3.12 with it (make python312). To use your own"; \
+  echo "instead: apt-get install python3.12-venv (Ubuntu 24.04), or PY312=/path/to/python3.12."; \
+  $(MAKE) --no-print-directory python312; fi
 endef
+# The Python 3.12 to make the venv with (after CHECK_PYTHON, in the same recipe).
+PY312_NOW = py="$(PY312)"; [ -n "$$py" ] || py=$$(build/uv/bin/uv python find 3.12)
 
-# Provides a CPython 3.12 through uv (a well-kept installer from PyPI), for machines without one.
+# Provides a CPython 3.12 through uv (a well-kept installer from PyPI; needs python3 with venv).
 python312:
 	python3 -m venv build/uv && build/uv/bin/python -m pip install --quiet --disable-pip-version-check 'uv==0.13.8'
 	build/uv/bin/uv python install 3.12
@@ -57,7 +60,7 @@ $(BIN)/.serve: requirements/serve.lock pyodide_pkg/pyproject.toml
 	@$(CHECK_PYTHON)
 	@if [ -x $(BIN)/python ] && ! $(BIN)/python -c 'import sys; assert sys.version_info[:2] == (3, 12)' 2>/dev/null; then \
 	  echo "$(VENV) is not Python 3.12: making it again"; rm -rf $(VENV); fi
-	test -x $(BIN)/python || $(PY312) -m venv $(VENV)
+	test -x $(BIN)/python || { $(PY312_NOW); $$py -m venv $(VENV); }
 	$(PIP) install --require-hashes --no-deps -r requirements/serve.lock
 	$(PIP) install --no-deps --no-build-isolation -e pyodide_pkg
 	rm -f $(BIN)/.test

@@ -148,6 +148,11 @@ def test_on_a_metered_connection_the_copy_waits_for_consent(browser, site_url):
         assert offline_state(page) == "asking"
         assert version_cache_entries(page) == 0
         notice.locator(role("offline-store")).click()
+        expect(page.locator("html")).to_have_attribute(ATTR.offline, "caching")
+        # A reload during the copy carries it on: no second question, and it completes.
+        page.reload()
+        page.wait_for_function("a => document.documentElement.getAttribute(a) !== null", arg=ATTR.offline)
+        assert offline_state(page) in ("caching", "ready")
         expect(page.locator("html")).to_have_attribute(ATTR.offline, "ready", timeout=LONG)
         assert version_cache_entries(page) > len(MANIFEST)  # every file, and the seal
         expect(page.locator(role("offline-notice"))).to_have_count(0)
