@@ -24,13 +24,16 @@ import internals from "./pyodide-internals.json";
 export const PYODIDE_INTERNALS = Object.freeze(internals.internals.map((entry) => entry.name));
 
 const SIZES = typeof BOOT_SIZES === "object" ? BOOT_SIZES : {}; // file name -> bytes (defined by the bundler)
-const networkFetch = self.fetch.bind(self); // kept before precompileWasm() stands in for it
+const networkFetch = self.fetch.bind(self); // kept before patchWasm() stands in for it
 
 // `stages` keeps when each step ended (ms since the worker started), for the benchmark.
 export const stages = {};
 export const mark = (name) => {
   stages[name] = Math.round(performance.now());
 };
+
+/** `url`'s file name in the Pyodide folder `indexURL`, or null. */
+const fileIn = (indexURL, url) => (String(url).startsWith(indexURL) ? String(url).slice(indexURL.length) : null);
 
 /** Whether the service worker's stored copy holds `url` (its bytes are read through the service worker, which checks them). */
 async function isStored(url) {
@@ -89,7 +92,7 @@ function progressMeter(indexURL, files, onProgress) {
       phase = next;
       report(true);
     },
-    fileName: (url) => (String(url).startsWith(indexURL) ? String(url).slice(indexURL.length) : null),
+    fileName: (url) => fileIn(indexURL, url),
   };
 }
 
@@ -242,9 +245,8 @@ function patchWasm(url, meter) {
 // ---- The start ----------------------------------------------------------------------------
 export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
-  const name = (url) => url.slice(indexURL.length);
-  const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "pyodide-lock.json", name(stdLibURL)];
-  if (snapshotURL) files.push(name(snapshotURL));
+  const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "pyodide-lock.json", fileIn(indexURL, stdLibURL)];
+  if (snapshotURL) files.push(fileIn(indexURL, snapshotURL));
   const meter = progressMeter(indexURL, files, onProgress);
   meter.phase("download");
   const download = snapshotURL ? snapshotDownload(snapshotURL, indexURL, meter) : null;
