@@ -1,55 +1,99 @@
 # Robotics Math Workbook — every step installs what it needs and is idempotent.
-#   make serve   build the site and serve it at http://127.0.0.1:8000
-#   make test    run the whole test suite (unit + browser)
-#   make site    build the static site into site/
-#   make bench   measure start-up and grading speed (writes bench-results/)
+#   make serve    build the site and serve it at http://127.0.0.1:8000
+#   make test     run the whole test suite (unit + browser)
+#   make site     build the static site into site/
+#   make browser  find a Chromium for the tests, or install Debian's (says so first)
+#   make bench    measure start-up and grading speed (writes bench-results/)
+#   make lock     re-lock requirements/*.in into requirements/*.lock (with hashes)
+#
+# One toolchain: Python 3.12 (the version Pyodide 0.27.7 runs; the build parses and
+# compiles Python for it), Node 20+. Every output below lists all of its inputs;
+# tests/unit/test_build_graph.py checks it with `make -n -W FILE`.
 
 SHELL := /bin/bash
 export NO_MKDOCS_2_WARNING := 1
 .DELETE_ON_ERROR:
 
-PYTHON ?= python3
 VENV := .venv
 BIN := $(VENV)/bin
-# pyodide-build's offline tools need Python 3.12 (GitHub: setup-python; here: pyenv).
-PY312 ?= $(shell for p in python3.12 $$HOME/.pyenv/versions/3.12*/bin/python3.12; do $$p -c 'import sys; assert sys.version_info[:2] == (3, 12)' >/dev/null 2>&1 && { command -v $$p; break; }; done)
 HOST ?= 127.0.0.1
 PORT ?= 8000
+# Python 3.12: PY312=/path/to/python3.12 overrides the search (PATH, pyenv, uv's own installs).
+PY312 ?= $(shell for p in python3.12 $$HOME/.pyenv/versions/3.12*/bin/python3.12 $$HOME/.local/share/uv/python/cpython-3.12*/bin/python3.12; do \
+  $$p -c 'import sys; assert sys.version_info[:2] == (3, 12)' >/dev/null 2>&1 && { command -v $$p; break; }; done)
+PIP := $(BIN)/python -m pip --disable-pip-version-check --quiet
 
-PKG_SOURCES := $(shell find pyodide_pkg -name '*.py' -not -path '*/build/*') pyodide_pkg/pyproject.toml
-JS_SOURCES := $(wildcard docs/assets/js/*.js)
-DOCS_SOURCES := $(shell find docs -type f -not -path 'docs/assets/vendor/*' -not -path 'docs/assets/dist/*' -not -name '*.pyc')
+# ---- Sources, by kind (recursive) ----------------------------------------------------
+# sw.js is the service worker's template (docs/hooks/offline.py fills it in).
+SW_TEMPLATE := docs/assets/js/sw.js
+PKG_SOURCES := $(shell find pyodide_pkg/workbook -type f \( -name '*.py' -o -name '*.json' \) -not -path '*/__pycache__/*') pyodide_pkg/pyproject.toml
+JS_SOURCES := $(filter-out $(SW_TEMPLATE),$(shell find docs/assets/js -type f \( -name '*.js' -o -name '*.json' \)))
+HOOKS := $(shell find docs/hooks -type f -name '*.py')
+OVERRIDES := $(shell find docs/overrides -type f)
+# The pages and everything MkDocs copies (Markdown, CSS); not the generated folders, not the JS sources (bundled).
+PAGES := $(shell find docs -type f -not -path 'docs/assets/vendor/*' -not -path 'docs/assets/dist/*' \
+  -not -path 'docs/assets/js/*' -not -path 'docs/hooks/*' -not -path 'docs/overrides/*' -not -name '*.pyc')
 
-.PHONY: serve site test test-unit test-browser bench deps browser clean dev
+.PHONY: serve site test test-unit test-browser bench deps browser clean dev lock python312
 
-$(BIN)/.installed: requirements.txt pyodide_pkg/pyproject.toml
-	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
-	$(BIN)/python -m pip install --quiet --disable-pip-version-check -r requirements.txt -e pyodide_pkg
+# ---- Python 3.12 -------------------------------------------------------------------
+# Where none is found, the first install says so and provides one with uv (`make python312`).
+define CHECK_PYTHON
+if [ -z "$(PY312)" ]; then \
+  echo "This build needs Python 3.12 (what Pyodide 0.27.7 runs) and found none on PATH, in pyenv or from uv:"; \
+  echo "installing uv from PyPI into build/uv, and CPython 3.12 with it (make python312). To use your own"; \
+  echo "instead: apt-get install python3.12-venv (Ubuntu 24.04), or PY312=/path/to/python3.12."; \
+  $(MAKE) --no-print-directory python312; fi
+endef
+# The Python 3.12 to make the venv with (after CHECK_PYTHON, in the same recipe).
+PY312_NOW = py="$(PY312)"; [ -n "$$py" ] || py=$$(build/uv/bin/uv python find 3.12)
+
+# Provides a CPython 3.12 through uv (a well-kept installer from PyPI; needs python3 with venv).
+python312:
+	python3 -m venv build/uv && build/uv/bin/python -m pip install --quiet --disable-pip-version-check 'uv==0.13.8'
+	build/uv/bin/uv python install 3.12
+	@echo "Python 3.12: $$(build/uv/bin/uv python find 3.12)"
+
+# ---- Installed tools: from the locks only ------------------------------------------
+# .serve: what building and serving need; .test: the test tools on top (same versions).
+$(BIN)/.serve: requirements/serve.lock pyodide_pkg/pyproject.toml
+	@$(CHECK_PYTHON)
+	@if [ -x $(BIN)/python ] && ! $(BIN)/python -c 'import sys; assert sys.version_info[:2] == (3, 12)' 2>/dev/null; then \
+	  echo "$(VENV) is not Python 3.12: making it again"; rm -rf $(VENV); fi
+	test -x $(BIN)/python || { $(PY312_NOW); $$py -m venv $(VENV); }
+	$(PIP) install --require-hashes --no-deps -r requirements/serve.lock
+	$(PIP) install --no-deps --no-build-isolation -e pyodide_pkg
+	rm -f $(BIN)/.test
+	touch $@
+
+$(BIN)/.test: requirements/test.lock $(BIN)/.serve
+	$(PIP) install --require-hashes --no-deps -r requirements/test.lock
 	touch $@
 
 node_modules/.installed: package.json package-lock.json
 	npm ci --no-audit --no-fund --loglevel=error
 	touch $@
 
-# Optional: pyodide-build (lockfile add-wheels, py-compile) in a Python 3.12 venv of its own.
-.venv-pyodide/.installed: requirements-pyodide-tools.txt
-	@if [ -n "$(PY312)" ]; then \
-	  test -x .venv-pyodide/bin/python || $(PY312) -m venv .venv-pyodide; \
-	  .venv-pyodide/bin/python -m pip install --quiet --disable-pip-version-check -r requirements-pyodide-tools.txt; \
-	else echo "note: no Python 3.12 found; the lock file is written without pyodide-build"; fi
-	mkdir -p .venv-pyodide && touch $@
+deps: $(BIN)/.serve node_modules/.installed
 
-build/vendor.stamp: scripts/vendor.py scripts/pyodide-0.27.7.sha256 node_modules/.installed $(BIN)/.installed
+# Re-lock after editing requirements/*.in (uv from PyPI, in build/uv).
+lock:
+	test -x build/uv/bin/uv || { python3 -m venv build/uv && build/uv/bin/python -m pip install --quiet --disable-pip-version-check 'uv==0.13.8'; }
+	cd requirements && ../build/uv/bin/uv pip compile --quiet --generate-hashes --universal --python-version 3.12 serve.in -o serve.lock
+	cd requirements && ../build/uv/bin/uv pip compile --quiet --generate-hashes --universal --python-version 3.12 test.in -o test.lock
+
+# ---- The runtime's files (docs/assets/vendor/, build/) -------------------------------
+build/vendor.stamp: scripts/vendor.py scripts/pyodide-0.27.7.sha256 node_modules/.installed $(BIN)/.serve
 	$(BIN)/python scripts/vendor.py
 	mkdir -p build && touch $@
 
-build/wheel.stamp: build/vendor.stamp scripts/build_wheel.py $(PKG_SOURCES) .venv-pyodide/.installed
+build/wheel.stamp: build/vendor.stamp scripts/build_wheel.py $(PKG_SOURCES)
 	$(BIN)/python scripts/build_wheel.py
 	touch $@
 
 # The standard library cut in two: the core the worker starts with (what start-up and
 # the grader import, found by running them in Node, plus the package) and the rest.
-build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_stdlib.py scripts/sandbox_files.py
+build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_stdlib.py scripts/sandbox_files.py $(PKG_SOURCES)
 	node scripts/stdlib_probe.mjs
 	$(BIN)/python scripts/split_stdlib.py
 	$(BIN)/python scripts/sandbox_files.py  # the sandbox's Python: the core without the grading package
@@ -60,13 +104,16 @@ build/snapshot.stamp: build/stdlib.stamp scripts/build_snapshot.mjs
 	node scripts/build_snapshot.mjs
 	touch $@
 
-build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) node_modules/.installed
+# The page's JavaScript (esbuild); contract.js imports contract.json, the worker's boot
+# module reads the sizes of the runtime files it loads (a real progress bar).
+build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) pyodide_pkg/workbook/contract.json node_modules/.installed build/snapshot.stamp build/wheel.stamp
 	node scripts/bundle.mjs
 	mkdir -p build && touch $@
 
-deps: $(BIN)/.installed node_modules/.installed
+RUNTIME_STAMPS := build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp
 
-site/.stamp: build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp mkdocs.yml $(DOCS_SOURCES)
+# The hooks import the grading package (bank, contract); offline.py fills in the SW template.
+site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TEMPLATE) $(PKG_SOURCES)
 	$(BIN)/mkdocs build --strict --quiet
 	touch $@
 
@@ -77,19 +124,22 @@ serve: site
 	$(BIN)/python -m http.server --bind $(HOST) --directory site $(PORT)
 
 # Live-reloading server for authors (rebuilds pages on save).
-dev: build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp
+dev: $(RUNTIME_STAMPS)
 	$(BIN)/mkdocs serve -a $(HOST):$(PORT)
 
-# A browser for the tests: Playwright's own where installed, else Debian's chromium.
-browser: $(BIN)/.installed
+# ---- Tests ----------------------------------------------------------------------------
+# A browser for the tests: Playwright's own where installed, else the system's chromium.
+# Where there is none, this installs Debian's chromium with apt-get, and says so first.
+browser: $(BIN)/.test
 	@if $(BIN)/python scripts/find_browser.py >/dev/null 2>&1; then :; \
 	elif command -v apt-get >/dev/null; then \
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  echo "make browser: no Chromium found; installing Debian's: $$SUDO apt-get install chromium"; \
 	  $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium >/dev/null; \
-	else echo "no browser: run '$(BIN)/playwright install chromium'"; exit 1; fi
+	else echo "make browser: no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; fi
 	@echo "browser: $$($(BIN)/python scripts/find_browser.py)"
 
-test-unit: $(BIN)/.installed
+test-unit: $(BIN)/.test node_modules/.installed
 	$(BIN)/python -m pytest tests/unit
 
 test-browser: site browser

@@ -2,7 +2,7 @@
 // main.js is an ES module with code splitting (the CodeMirror editor loads only
 // on pages with a Build exercise); worker.js is a classic worker script.
 import { build } from "esbuild";
-import { rmSync } from "node:fs";
+import { readdirSync, rmSync, statSync } from "node:fs";
 
 // Start clean: stale hashed chunks would otherwise ship (and be precached for offline use).
 rmSync("docs/assets/dist", { recursive: true, force: true });
@@ -17,6 +17,21 @@ await build({
   splitting: true,
   chunkNames: "chunks/[name]-[hash]",
 });
-await build({ ...common, entryPoints: { worker: "docs/assets/js/worker.js" }, outdir: "docs/assets/dist", format: "iife" });
+// The runtime files' sizes, for the boot's progress bar (docs/assets/js/boot.js): real bytes, known at build time.
+const VENDOR = "docs/assets/vendor/pyodide";
+const sizes = Object.fromEntries(readdirSync(VENDOR).map((name) => [name, statSync(`${VENDOR}/${name}`).size]));
+await build({
+  ...common,
+  entryPoints: { worker: "docs/assets/js/worker.js" },
+  outdir: "docs/assets/dist",
+  format: "iife",
+  define: { BOOT_SIZES: JSON.stringify(sizes) },
+});
 // The sandbox that runs learner code (docs/assets/js/sandbox.js): a classic worker script of its own.
-await build({ ...common, entryPoints: { sandbox: "docs/assets/js/sandbox.js" }, outdir: "docs/assets/dist", format: "iife" });
+await build({
+  ...common,
+  entryPoints: { sandbox: "docs/assets/js/sandbox.js" },
+  outdir: "docs/assets/dist",
+  format: "iife",
+  define: { BOOT_SIZES: JSON.stringify(sizes) },
+});

@@ -19,17 +19,15 @@ Both are sources: a snapshot start imports nothing, and on a slow first visit
 bytes cost more than compiling. The core's sources are written without their
 docstrings and comments (what ``python -OO`` drops, which the standard library
 supports): 40 % fewer bytes and less to compile. That needs Python 3.12, the
-version Pyodide runs, to parse them; the script runs itself under it, and
-without one writes the sources as published. Entries are written in a fixed
-order with a fixed date, so the same inputs give the same bytes.
+version Pyodide runs, to parse them: the script refuses any other (the
+Makefile's venv is 3.12). Entries are written in a fixed order with a fixed
+date, so the same inputs give the same bytes.
 """
 
 from __future__ import annotations
 
 import ast
 import json
-import shutil
-import subprocess
 import sys
 import zipfile
 from pathlib import Path
@@ -92,14 +90,6 @@ def minify(source: bytes, name: str) -> bytes:
     return out.encode("utf-8")
 
 
-def _python312() -> str | None:
-    probe = "import sys; sys.exit(sys.version_info[:2] != (3, 12))"
-    for py in (sys.executable, str(ROOT / ".venv-pyodide" / "bin" / "python"), shutil.which("python3.12")):
-        if py and Path(py).exists() and subprocess.run([py, "-c", probe]).returncode == 0:
-            return py
-    return None
-
-
 def _write(path: Path, entries: list[tuple[str, bytes]]) -> None:
     with zipfile.ZipFile(path, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as z:
         for name, data in sorted(entries):
@@ -119,28 +109,25 @@ def split(source: Path, used: list[str], out: Path) -> dict:
     keep = core_files(used, set(files))
     rest = sorted(set(files) - keep)
     rest_modules = sorted({m for m in map(_module, rest) if m})
-    slim = sys.version_info[:2] == (3, 12)
-    core_entries = [(n, minify(files[n], n) if slim and n.endswith(".py") else files[n]) for n in keep]
-    core_entries += [(n, minify(data, n) if slim and n.endswith(".py") else data) for n, data in package_files()]
+    core_entries = [(n, minify(files[n], n) if n.endswith(".py") else files[n]) for n in keep]
+    core_entries += [(n, minify(data, n) if n.endswith(".py") else data) for n, data in package_files()]
     core_entries.append((INDEX, ("\n".join(rest_modules) + "\n").encode()))
     out.mkdir(parents=True, exist_ok=True)
     _write(out / CORE, core_entries)
     _write(out / REST, [(n, files[n]) for n in rest])
-    return {"core_files": len(core_entries), "rest_files": len(rest), "minified": slim,
+    return {"core_files": len(core_entries), "rest_files": len(rest),
             "core_bytes": (out / CORE).stat().st_size, "rest_bytes": (out / REST).stat().st_size}
 
 
 def main() -> None:
     if not SOURCE.exists() or not USED.exists():
         sys.exit("split_stdlib: run scripts/vendor.py and scripts/stdlib_probe.mjs first (make does)")
-    if sys.version_info[:2] != (3, 12) and "--here" not in sys.argv:
-        py = _python312()
-        if py:
-            sys.exit(subprocess.run([py, __file__, "--here"]).returncode)
-        print("split_stdlib: no Python 3.12 found; the core keeps its docstrings and comments")
+    if sys.version_info[:2] != (3, 12):
+        sys.exit(f"split_stdlib: needs Python 3.12 (what Pyodide 0.27 runs) to parse the standard library, not "
+                 f"{sys.version.split()[0]}: run it with .venv/bin/python (make does)")
     info = split(SOURCE, json.loads(USED.read_text()), OUT)
     print(f"stdlib: core {info['core_files']} files, {info['core_bytes'] / 1e6:.2f} MB"
-          f"{' (without docstrings and comments)' if info['minified'] else ''}; "
+          " (without docstrings and comments); "
           f"rest {info['rest_files']} files, {info['rest_bytes'] / 1e6:.2f} MB (fetched on first use)")
 
 

@@ -4,16 +4,19 @@ After every build, list each file of the built site (pages, the Pyodide runtime
 and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
 ``site/sw.js`` from the template ``docs/assets/js/sw.js`` with:
 
-* ``FILES``: ``[url relative to the site root, "sha256-…" integrity]`` per file
-  (``chapters/00-rotations-2d/`` for ``chapters/00-rotations-2d/index.html``);
+* ``FILES``, the manifest: ``[url relative to the site root, "sha256-…" integrity,
+  size]`` per file (``chapters/00-rotations-2d/`` for
+  ``chapters/00-rotations-2d/index.html``); the memory snapshot, which the
+  service worker stores inflated, adds the sha256 and size of its inflated bytes.
+  The service worker serves a stored file only while it still has these bytes;
 * ``VERSION``: a hash over the template and every file, so any change to the
   site gives a new version (and a new cache).
 
 Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
 and so are the search's word splitters and stemmers for other languages when the
-search is in English only (it then never loads them).
-``sitemap.xml`` is cached without a hash check: hosts may rewrite its absolute
-URLs, and a stale list of pages cannot break anything.
+search is in English only (it then never loads them). ``sitemap.xml`` is left
+out too: it holds absolute URLs that hosts and test servers rewrite, so the
+service worker writes it from the manifest's pages, for its own scope.
 Under ``mkdocs serve`` the service worker only unregisters itself, so a worker
 left by ``make serve`` on the same address does not serve stale pages.
 """
@@ -21,6 +24,7 @@ left by ``make serve`` on the same address does not serve stale pages.
 from __future__ import annotations
 
 import base64
+import gzip
 import hashlib
 import json
 import logging
@@ -31,8 +35,8 @@ log = logging.getLogger("mkdocs.hooks.offline")
 TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map",)
-SKIP_FILES = {"sitemap.xml.gz"}
-UNCHECKED = {"sitemap.xml"}
+SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml"}
+INFLATED = ".snapshot.gz"  # stored inflated by the service worker
 LUNR_LANGUAGES = "assets/javascripts/lunr/"
 _serving = False
 
@@ -58,8 +62,13 @@ def _english_only(config) -> bool:
     return [code for code in lang if code != "en"] == []
 
 
-def precache_list(site: Path, english_only: bool = True) -> list[tuple[str, str, int]]:
-    """(url, integrity, size) for every file the site serves at runtime, sorted."""
+def integrity(data: bytes) -> str:
+    return "sha256-" + base64.b64encode(hashlib.sha256(data).digest()).decode("ascii")
+
+
+def precache_list(site: Path, english_only: bool = True) -> list[list]:
+    """The manifest: [url, integrity, size] for every file the site serves at runtime, sorted;
+    the snapshot adds [integrity, size] of its inflated bytes."""
     out = []
     for path in sorted(site.rglob("*")):
         rel = path.relative_to(site).as_posix()
@@ -69,9 +78,13 @@ def precache_list(site: Path, english_only: bool = True) -> list[tuple[str, str,
             continue
         if any(part.startswith(".") for part in rel.split("/")):
             continue  # build stamps and the like
-        digest = hashlib.sha256(path.read_bytes()).digest()
+        data = path.read_bytes()
         url = rel.removesuffix("index.html") if rel == "index.html" or rel.endswith("/index.html") else rel
-        out.append((url or "./", "sha256-" + base64.b64encode(digest).decode("ascii"), path.stat().st_size))
+        entry = [url or "./", integrity(data), len(data)]
+        if rel.endswith(INFLATED):
+            inflated = gzip.decompress(data)
+            entry += [integrity(inflated), len(inflated)]
+        out.append(entry)
     return out
 
 
@@ -83,11 +96,11 @@ def on_post_build(config, **kwargs):
     template = (Path(config.docs_dir) / TEMPLATE).read_text()
     files = precache_list(site, _english_only(config))
     h = hashlib.sha256(template.encode())
-    for url, integrity, _ in files:
-        h.update(f"\n{url} {integrity}".encode())
+    for url, digest, *_ in files:
+        h.update(f"\n{url} {digest}".encode())
     version = h.hexdigest()[:16]
-    listing = "[\n" + ",\n".join(json.dumps([url, "" if url in UNCHECKED else integrity]) for url, integrity, _ in files) + "\n]"
+    listing = "[\n" + ",\n".join(json.dumps(entry) for entry in files) + "\n]"
     text = template.replace("__WB_VERSION__", json.dumps(version)).replace("__WB_FILES__", listing)
     (site / OUTPUT).write_text(text)
-    total = sum(size for *_, size in files)
-    log.info("offline: sw.js version %s precaches %d files, %d bytes", version, len(files), total)
+    total = sum(entry[-1] for entry in files)
+    log.info("offline: sw.js version %s: a manifest of %d files, %d bytes stored", version, len(files), total)

@@ -3,8 +3,7 @@
 from __future__ import annotations
 
 from .config import PROFILES
-from .records import summary
-from .report import fmt
+from .records import fmt, summary
 
 # (key in a first-visit record, label, unit, ours only)
 MEASURES = [

@@ -95,3 +95,15 @@ def total_blocking_time(snap: dict, until_ms: float) -> float:
 def largest_contentful_paint(snap: dict) -> float | None:
     """The last 'largest-contentful-paint' entry's time (ms from navigation start)."""
     return snap["lcp"][-1]["start"] if snap.get("lcp") else None
+
+
+def fmt(v, unit):
+    if v is None:
+        return "-"
+    if unit == "B":
+        return f"{v / 1e6:.2f} MB" if v >= 1e5 else f"{v:.0f} B"
+    if unit == "x":
+        return f"{v:.2f}x"
+    if unit == "n":
+        return f"{v:.0f}"
+    return f"{v:.0f} ms" if v >= 100 else f"{v:.1f} ms"

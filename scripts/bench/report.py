@@ -8,7 +8,8 @@ from pathlib import Path
 
 from . import ROOT
 from .config import GRADED
-from .records import summary
+from .network_report import render_network
+from .records import fmt, summary
 
 
 def collect(runs: list[dict]) -> dict:
@@ -117,18 +118,6 @@ def evaluate_targets(m: dict, runs: list[dict]) -> list[dict]:
 
 
 # ---------------------------------------------------------------------------
-def fmt(v, unit):
-    if v is None:
-        return "-"
-    if unit == "B":
-        return f"{v / 1e6:.2f} MB" if v >= 1e5 else f"{v:.0f} B"
-    if unit == "x":
-        return f"{v:.2f}x"
-    if unit == "n":
-        return f"{v:.0f}"
-    return f"{v:.0f} ms" if v >= 100 else f"{v:.1f} ms"
-
-
 TABLE = [
     ("Ready, cold (nav start -> runtime ready)", "ready_cold_ms", "ms"),
     ("Ready, warm (revisit)", "ready_warm_ms", "ms"),
@@ -215,7 +204,6 @@ def print_report(report: dict, out: Path, stamp: str, runs: int) -> None:
     if runs:
         print(render_table(report["metrics"], runs))
     if report.get("network"):
-        from .network_report import render_network  # (it imports fmt from here)
 
         print()
         print("First visit per network profile (medians):")

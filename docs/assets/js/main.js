@@ -11,6 +11,7 @@ import { initProgressPage } from "./progress-ui.js";
 import { initPractise } from "./practise.js";
 import { registerOffline } from "./offline.js";
 import { initScrollRegions } from "./a11y.js";
+import { initLoading } from "./loading.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
@@ -40,6 +41,7 @@ if (typeof Worker === "undefined") {
 }
 window.workbook = { runtime, progress };
 registerOffline(siteRoot, progress);
+initLoading();
 initScrollRegions();
 
 const NO_WORKER = "This browser cannot run the Python grader (no Web Worker support).";

@@ -17,7 +17,7 @@
 // acknowledged at once: a sandbox that does not is gone (killed, or closed),
 // and a fresh one gets the request.
 
-import { ERROR, RUNTIME, setRootState } from "./contract.js";
+import { BOOT_PHASE, ERROR, RUNTIME, setRootState } from "./contract.js";
 
 const DEFAULT_LIMIT_MS = 10_000;
 const LOAD_LIMIT_MS = 120_000; // fetching a package (NumPy) before a run starts
@@ -48,6 +48,7 @@ export class Runtime {
    */
   constructor(workerURL, early, { role = "grader", ackMs = 0 } = {}) {
     this.workerURL = workerURL;
+    this.role = role;
     this.setState = role === "grader" ? setRuntimeState : () => {};
     this.ackMs = ackMs;
     this.nextId = 1;
@@ -90,13 +91,25 @@ export class Runtime {
     this.worker.postMessage({ type: "page", ids });
   }
 
+  /** The worker's start, as it goes: {phase, loaded, total} (boot.js); a "workbook:boot" event each time. */
+  reportBoot(boot) {
+    this.boot = boot;
+    if (this.role !== "grader") return; // the page's loading message is the grader's start
+    document.dispatchEvent(new CustomEvent("workbook:boot", { detail: boot }));
+  }
+
   receive(data) {
+    if (data.type === "boot") {
+      this.reportBoot({ phase: data.phase, loaded: data.loaded, total: data.total });
+      return;
+    }
     if (data.type === "ready") {
       this.ready = true;
       this.readyAt = performance.now();
       this.startedFrom = data.from; // "snapshot", or "boot" when the snapshot could not be used
       this.startStages = data.stages;
       if (data.why) console.warn("Python runtime: booted without the snapshot:", data.why);
+      this.reportBoot({ phase: BOOT_PHASE.ready, loaded: this.boot?.total || 0, total: this.boot?.total || 0 });
       this.setState(RUNTIME.ready);
       for (const entry of this.pending.values()) this.send(entry);
       return;

@@ -1,30 +1,33 @@
-// The workbook's service worker: every page and runtime file, offline.
+// The workbook's service worker: every page and runtime file, offline, and only as built.
 //
 // This is a template: docs/hooks/offline.py writes it to the site root (sw.js)
-// after each build, with VERSION (a hash of every file) and FILES (each file's
-// URL relative to the site root and its sha256, as a fetch `integrity`, or "" for
-// no check) filled in.
+// after each build, with VERSION (a hash of every file) and FILES, the manifest:
+// per file [URL relative to the site root, "sha256-…" of its bytes, size] and,
+// for the memory snapshot (stored inflated), the sha256 and size as stored.
 //
-// - install, first visit (no earlier version active): store nothing yet, so the
-//   service worker does not compete with the page's own start for the link.
-//   The page sends "store" once its runtime is ready and the browser is idle;
-//   the files are then fetched through the HTTP cache, which already holds what
-//   the page and its worker fetched, so nothing is downloaded twice. Each file
-//   is checked against its hash (a stale copy in the HTTP cache is fetched again
-//   from the network). The worker takes control of pages only once every file is
-//   stored.
-// - install, update (an earlier version is active): fetch every file into the
-//   new version's cache, so a new version is never served half-downloaded.
-// - the new version waits until the page asks it to take over (the learner
-//   presses "Reload" in the update banner); activation deletes older caches.
-// - fetch: files of the version are served from its cache (one version for
-//   HTML, scripts and Python alike), anything else from the network. Pages and
-//   workers get COOP/COEP headers, so they are cross-origin isolated and a long
-//   run can be interrupted instead of the worker being killed; other cached
-//   files are returned as stored (which keeps the browser's compiled-code cache
-//   for them usable). A page address the site does not have gets the cached
-//   404 page (offline, or when the network answers 404), with a <base> that
-//   points its relative URLs at the site root.
+// The manifest in this script is the one thing on the origin that page script
+// cannot rewrite; Cache Storage can be written by anything running on the origin.
+// So:
+// - serving: a stored response is served only if its bytes still hash to the
+//   manifest's value. A mismatch is deleted, and the file fetched from the
+//   network (checked by the same hash); offline it is refused, never served.
+// - the copy: started by the page once the learner agreed (offline.js); the
+//   wish is kept in the "state" cache, so any later event (a navigation, a
+//   reload, a message) resumes it from what is already stored and verified.
+//   Each file is fetched through the HTTP cache (bytes the page already has),
+//   or the network if that copy is stale, and verified as stored.
+// - "stored": only when every manifest entry is in the cache and verified; the
+//   SW then writes a seal (the manifest's version and count) into the cache.
+//   Pages ask the SW ("status") and never infer it from being controlled.
+// - install, first visit: nothing is stored (the page asks later); an update
+//   (an earlier version active, the copy wanted): the new version is copied
+//   whole before it can take over, unchanged files from the old cache.
+// - sitemap.xml (which mkdocs-material's instant navigation reads) is written
+//   here from the manifest's pages, for this scope: right at any address.
+// - pages and workers get COOP/COEP headers (cross-origin isolation: a long run
+//   can be interrupted); other stored files are returned as stored (which keeps
+//   the browser's compiled-code cache for them usable). An unknown address gets
+//   the stored 404 page, its <base> pointed at this scope.
 
 const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
@@ -32,14 +35,84 @@ const FILES = __WB_FILES__;
 const SCOPE = self.registration.scope;
 const PREFIX = `robotics-workbook:${new URL(SCOPE).pathname}:`;
 const CACHE = PREFIX + VERSION;
-const KNOWN = new Set(FILES.map(([path]) => new URL(path, SCOPE).href));
+const STATE = PREFIX + "state"; // not versioned: whether the learner wants the copy
+const WANTED = new URL("__wb__/wanted", SCOPE).href;
+const SEAL = new URL("__wb__/verified", SCOPE).href;
+const ENTRIES = new Map(FILES.map(([path, integrity, size, storedIntegrity, storedSize]) => [
+  new URL(path, SCOPE).href,
+  { path, integrity, size, hashes: [integrity, storedIntegrity].filter(Boolean), storedSize: storedSize || size },
+]));
+const TOTAL_BYTES = [...ENTRIES.values()].reduce((n, e) => n + e.storedSize, 0);
 const NOT_FOUND = new URL("404.html", SCOPE).href;
+const SITEMAP = new URL("sitemap.xml", SCOPE).href;
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
+const LANES = 4;
 
-// The Python memory snapshot travels gzip-compressed (4.6 MB instead of 21 MB)
-// and is stored inflated, so later starts read it as is instead of inflating it
-// each time; the worker tells the two apart by gzip's magic bytes. The body is
-// still checked against the file's hash as it streams through.
+// ---- Hashes ------------------------------------------------------------------------
+async function sha256(buffer) {
+  const digest = new Uint8Array(await crypto.subtle.digest("SHA-256", buffer));
+  let text = "";
+  for (const byte of digest) text += String.fromCharCode(byte);
+  return "sha256-" + btoa(text);
+}
+
+/** Whether a stored response's bytes are the manifest's (read from a clone: the original stays servable). */
+async function genuine(response, entry) {
+  try {
+    return entry.hashes.includes(await sha256(await response.clone().arrayBuffer()));
+  } catch {
+    return false;
+  }
+}
+
+// ---- What is stored ------------------------------------------------------------------
+const verified = new Set(); // URLs verified in this worker's life (the copy's own bookkeeping)
+let copying = null; // the copy in progress, shared by every page that asks
+let stopped = false; // declined: the lanes stop after their current file
+
+async function wanted() {
+  return Boolean(await (await caches.open(STATE)).match(WANTED));
+}
+
+async function sealed() {
+  const seal = await (await caches.open(CACHE)).match(SEAL);
+  if (!seal) return false;
+  try {
+    const { version, count } = await seal.json();
+    if (version !== VERSION || count !== ENTRIES.size) return false;
+  } catch {
+    return false;
+  }
+  const keys = (await (await caches.open(CACHE)).keys()).filter((r) => ENTRIES.has(r.url));
+  return keys.length === ENTRIES.size;
+}
+
+async function unseal() {
+  await (await caches.open(CACHE)).delete(SEAL);
+}
+
+/** {state, files, total, bytes, totalBytes}: what this browser holds of this version. */
+async function status() {
+  const complete = await sealed();
+  let files = 0;
+  let bytes = 0;
+  if (complete) [files, bytes] = [ENTRIES.size, TOTAL_BYTES];
+  else {
+    for (const url of verified) {
+      files++;
+      bytes += ENTRIES.get(url).storedSize;
+    }
+  }
+  const state = complete ? "complete" : copying ? "copying" : "partial";
+  return { type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes, totalBytes: TOTAL_BYTES };
+}
+
+async function broadcast(message) {
+  for (const client of await self.clients.matchAll({ includeUncontrolled: true })) client.postMessage(message);
+}
+
+// The memory snapshot travels gzip-compressed and is stored inflated, so later
+// starts read it as is; the manifest lists both hashes.
 const INFLATE = /\.snapshot\.gz$/;
 function inflated(response) {
   if (typeof DecompressionStream !== "function") return response;
@@ -47,77 +120,138 @@ function inflated(response) {
   return new Response(body, { headers: { "Content-Type": "application/octet-stream" } });
 }
 
-/** Store every file not stored yet (a previous, interrupted run may have stored some). */
-async function precache() {
-  const cache = await caches.open(CACHE);
-  const have = new Set((await cache.keys()).map((request) => request.url));
-  const todo = FILES.filter(([path]) => !have.has(new URL(path, SCOPE).href));
-  let next = 0;
-  async function get(url, integrity, mode) {
-    const response = await fetch(new Request(url, { cache: mode, integrity, credentials: "same-origin" }));
-    if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
-    return response;
+async function fetchChecked(url, entry, mode) {
+  const response = await fetch(new Request(url, { cache: mode, integrity: entry.integrity, credentials: "same-origin" }));
+  if (!response.ok) throw new Error(`${entry.path}: HTTP ${response.status}`);
+  return response;
+}
+
+/** The same file from an older version's cache, if it is still genuine (an update reuses it). */
+async function fromOlder(url, entry) {
+  for (const name of await caches.keys()) {
+    if (!name.startsWith(PREFIX) || name === CACHE || name === STATE) continue;
+    const old = await (await caches.open(name)).match(url);
+    if (old && (await genuine(old, entry))) return old;
   }
-  async function lane() {
-    while (next < todo.length) {
-      const [path, integrity] = todo[next++];
-      const url = new URL(path, SCOPE).href;
-      // The HTTP cache first (bytes the page already fetched), the network if that copy is stale.
-      const response = await get(url, integrity, "default").catch(() => get(url, integrity, "no-cache"));
-      await cache.put(url, INFLATE.test(path) ? inflated(response) : response);
+  return null;
+}
+
+/** Store one file and verify what was stored. */
+async function storeOne(cache, url, entry) {
+  const older = await fromOlder(url, entry);
+  const response = older || (await fetchChecked(url, entry, "default").catch(() => fetchChecked(url, entry, "no-cache")));
+  await cache.put(url, !older && INFLATE.test(entry.path) ? inflated(response) : response);
+  const stored = await cache.match(url);
+  if (!stored || !(await genuine(stored, entry))) {
+    await cache.delete(url);
+    throw new Error(`${entry.path}: the stored copy does not match the manifest`);
+  }
+  verified.add(url);
+}
+
+/** Store and verify every file not verified yet; seal the cache when all are. */
+async function copyAll() {
+  const cache = await caches.open(CACHE);
+  const have = new Set((await cache.keys()).map((r) => r.url));
+  for (const [url, entry] of ENTRIES) {
+    // Resume: what an earlier, interrupted copy stored counts once it verifies.
+    if (!verified.has(url) && have.has(url)) {
+      const stored = await cache.match(url);
+      if (stored && (await genuine(stored, entry))) verified.add(url);
+      else await cache.delete(url);
     }
   }
-  await Promise.all(Array.from({ length: 6 }, lane));
+  const todo = [...ENTRIES].filter(([url]) => !verified.has(url));
+  let next = 0;
+  let lastReport = 0;
+  const lane = async () => {
+    while (next < todo.length && !stopped) {
+      const [url, entry] = todo[next++];
+      await storeOne(cache, url, entry);
+      if (Date.now() - lastReport > 250) {
+        lastReport = Date.now();
+        broadcast({ ...(await status()), type: "progress" });
+      }
+    }
+  };
+  await Promise.all(Array.from({ length: LANES }, lane));
+  if (stopped) throw new Error("declined");
+  // Count and hashes: every manifest entry is in the cache and was verified.
+  const keys = new Set((await cache.keys()).map((r) => r.url));
+  const complete = [...ENTRIES.keys()].every((url) => keys.has(url) && verified.has(url));
+  if (!complete) throw new Error("the copy is incomplete");
+  await cache.put(SEAL, new Response(JSON.stringify({ version: VERSION, count: ENTRIES.size, bytes: TOTAL_BYTES })));
 }
 
-/** Whether every file of this version is stored. */
-async function complete() {
-  const cache = await caches.open(CACHE);
-  const have = new Set((await cache.keys()).map((request) => request.url));
-  return FILES.every(([path]) => have.has(new URL(path, SCOPE).href));
+function copy() {
+  stopped = false;
+  copying ||= copyAll()
+    .then(async () => {
+      await self.clients.claim();
+      broadcast(await status());
+    })
+    .catch(async (err) => {
+      broadcast({ type: "store-failed", message: String(err?.message || err) });
+      throw err;
+    })
+    .finally(() => {
+      copying = null;
+    });
+  return copying;
 }
 
-let storing = null; // the store in progress, shared by every page that asks
-function store() {
-  storing ||= precache().finally(() => {
-    storing = null;
-  });
-  return storing;
+/** After any event: if the learner wants the copy and it is not complete, go on with it. */
+async function resume() {
+  if (copying || !(await wanted()) || (await sealed())) return;
+  await copy().catch(() => {});
 }
 
+async function decline() {
+  stopped = true;
+  await (await caches.open(STATE)).delete(WANTED);
+  await copying?.catch(() => {});
+  await caches.delete(CACHE);
+  verified.clear();
+}
+
+// ---- Life cycle ---------------------------------------------------------------------
 self.addEventListener("install", (event) => {
-  if (self.registration.active) event.waitUntil(precache()); // an update: whole, or not at all
-  else self.skipWaiting(); // the first: nothing to wait for, the page asks for the files later
+  event.waitUntil(
+    (async () => {
+      // An update of a stored site: whole before it takes over. Otherwise nothing yet.
+      if (self.registration.active && (await wanted())) await copyAll();
+      else await self.skipWaiting();
+    })(),
+  );
 });
 
 self.addEventListener("activate", (event) => {
   event.waitUntil(
     (async () => {
       for (const name of await caches.keys()) {
-        if (name.startsWith(PREFIX) && name !== CACHE) await caches.delete(name);
+        if (name.startsWith(PREFIX) && name !== CACHE && name !== STATE) await caches.delete(name);
       }
-      if (await complete()) await self.clients.claim();
+      if (await sealed()) await self.clients.claim();
     })(),
   );
 });
 
 self.addEventListener("message", (event) => {
-  const reply = (message) => event.source?.postMessage({ ...message, version: VERSION });
-  if (event.data?.type === "activate-update") self.skipWaiting();
-  // offline.js asks which version (so which cache) serves the page, to show the stored size.
-  else if (event.data?.type === "version") reply({ type: "version" });
-  // offline.js asks whether the site is stored, and later asks to store it ("store").
-  else if (event.data?.type === "stored?") event.waitUntil(complete().then((done) => reply({ type: "stored", complete: done })));
-  else if (event.data?.type === "store") {
+  const reply = async (message) => event.source?.postMessage(await message);
+  const type = event.data?.type;
+  if (type === "activate-update") self.skipWaiting();
+  else if (type === "status") event.waitUntil(reply(status()).then(resume));
+  else if (type === "store") {
     event.waitUntil(
-      store()
-        .then(() => self.clients.claim())
-        .then(() => reply({ type: "stored", complete: true }))
-        .catch((err) => reply({ type: "store-failed", message: String(err?.message || err) })),
+      (async () => {
+        await (await caches.open(STATE)).put(WANTED, new Response("yes"));
+        await copy().catch(() => {});
+      })(),
     );
-  }
+  } else if (type === "decline") event.waitUntil(decline().then(() => reply(status())));
 });
 
+// ---- Serving --------------------------------------------------------------------------
 function isolate(response) {
   if (!response || response.type === "opaque" || response.type === "opaqueredirect" || response.status === 0) return response;
   const headers = new Headers(response.headers);
@@ -125,30 +259,62 @@ function isolate(response) {
   return new Response(response.body, { status: response.status, statusText: response.statusText, headers });
 }
 
-/** The precached URL a request stands for, or null. */
+/** The manifest URL a request stands for, or null. */
 function cacheKey(url) {
   url = new URL(url);
   url.search = "";
   url.hash = "";
   if (url.pathname.endsWith("/index.html")) url.pathname = url.pathname.slice(0, -"index.html".length);
-  return KNOWN.has(url.href) ? url.href : null;
+  return ENTRIES.has(url.href) ? url.href : null;
 }
 
-async function respond(request) {
+/** The stored response for `key` if it is genuine; a tampered one is deleted (and the seal with it). */
+async function stored(key) {
+  const cache = await caches.open(CACHE);
+  const response = await cache.match(key);
+  if (!response) return null;
+  if (await genuine(response, ENTRIES.get(key))) return response;
+  verified.delete(key);
+  await cache.delete(key);
+  await unseal();
+  return null;
+}
+
+function refused(path) {
+  const text = `<!doctype html><meta charset="utf-8"><title>Not available offline</title>
+<p>This page (<code>${path.replace(/[<&]/g, "")}</code>) is not stored in this browser, or its stored copy was
+damaged and was not used, and the network cannot be reached. Connect to the network and reload: the workbook
+then stores it again.</p>`;
+  return new Response(text, { status: 503, statusText: "Service Unavailable", headers: { "Content-Type": "text/html; charset=utf-8" } });
+}
+
+const forDocument = (request) => request.destination === "document" || request.destination === "worker" || request.mode === "navigate";
+
+async function respond(request, event) {
   const key = cacheKey(request.url);
+  if (new URL(request.url).pathname === new URL(SITEMAP).pathname) return sitemap();
   if (key === NOT_FOUND && request.mode === "navigate") return (await notFound()) || isolate(await fetch(request));
   if (key) {
-    const cached = await caches.open(CACHE).then((cache) => cache.match(key));
+    const hit = await stored(key);
     // Only documents and workers need the isolation headers; everything else is
     // returned as stored, which lets the browser reuse its compiled WebAssembly.
-    if (cached) return request.destination === "document" || request.destination === "worker" || request.mode === "navigate" ? isolate(cached) : cached;
+    if (hit) return forDocument(request) ? isolate(hit) : hit;
+    const damagedOrMissing = verified.size > 0 || (await wanted());
+    try {
+      const response = await fetch(request);
+      if (damagedOrMissing) event.waitUntil(resume()); // put back what is missing or was damaged
+      return forDocument(request) ? isolate(response) : response;
+    } catch (err) {
+      if (request.mode === "navigate") return refused(ENTRIES.get(key).path);
+      throw err;
+    }
   }
-  if (request.mode === "navigate" && !key) {
+  if (request.mode === "navigate") {
     // "chapters/x" for "chapters/x/": send the browser to the real address.
     const url = new URL(request.url);
     url.pathname += "/";
     url.search = "";
-    if (KNOWN.has(url.href)) return Response.redirect(url.href, 301);
+    if (ENTRIES.has(url.href)) return Response.redirect(url.href, 301);
   }
   if (request.mode !== "navigate") return isolate(await fetch(request));
   // An unknown address in the site: the network's answer, or the site's own 404
@@ -163,9 +329,9 @@ async function respond(request) {
   return isolate(response);
 }
 
-/** The cached 404 page, its <base> set to this scope so its relative URLs work at any depth. */
+/** The stored 404 page, its <base> set to this scope so its relative URLs work at any depth. */
 async function notFound() {
-  const cached = await caches.open(CACHE).then((cache) => cache.match(NOT_FOUND));
+  const cached = await stored(NOT_FOUND);
   if (!cached) return null;
   const html = (await cached.text()).replace(/<base href="[^"]*">/, `<base href="${SCOPE}">`);
   const headers = new Headers(cached.headers);
@@ -173,9 +339,19 @@ async function notFound() {
   return isolate(new Response(html, { status: 404, statusText: "Not Found", headers }));
 }
 
+/** The site's pages as a sitemap for this scope (what instant navigation needs: each page's <loc>). */
+function sitemap() {
+  const pages = [...ENTRIES.keys()].filter((url) => url.endsWith("/"));
+  const body = `<?xml version="1.0" encoding="UTF-8"?>\n<urlset xmlns="http://www.sitemaps.org/schemas/sitemap/0.9">\n${pages
+    .map((url) => `<url><loc>${url}</loc></url>`)
+    .join("\n")}\n</urlset>\n`;
+  return new Response(body, { headers: { "Content-Type": "application/xml" } });
+}
+
 self.addEventListener("fetch", (event) => {
   const { request } = event;
   if (request.method !== "GET" || !request.url.startsWith(SCOPE)) return;
   if (request.cache === "only-if-cached" && request.mode !== "same-origin") return;
-  event.respondWith(respond(request));
+  event.respondWith(respond(request, event));
+  if (request.mode === "navigate") event.waitUntil(resume()); // a navigation during the copy continues it
 });

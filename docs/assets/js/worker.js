@@ -4,8 +4,8 @@
 // runtime.js), else by terminating this worker.
 // Replies are envelopes (CONTRACT.md): the grader's own, or {ok: false, error}
 // when the runtime itself fails.
-/* global loadPyodide, importScripts */
 import { ERROR } from "./contract.js";
+import { mark, stages, startPyodide } from "./boot.js";
 
 const indexURL = new URL("../vendor/pyodide/", self.location.href).href;
 let handle = null;
@@ -14,206 +14,18 @@ let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the r
 let lazyStdlib = null; // workbook.lazy_stdlib
 
 // ---- Start-up -----------------------------------------------------------------
-// The worker restores a memory snapshot made at build time
-// (scripts/build_snapshot.mjs): the interpreter with the grading package already
-// imported. If that fails for any reason (missing, damaged, a browser without
-// DecompressionStream), it boots Pyodide instead. Either way Python's standard
-// library is the small core, which holds the grading package too; the rest is
-// mounted on first use (scripts/split_stdlib.py, workbook/lazy_stdlib.py).
-// docs/performance.md has the measurements behind each step.
+// boot.js starts Pyodide: it restores the memory snapshot made at build time
+// (the interpreter with the grading package imported), or boots when that is
+// not worth it or fails. Either way Python's standard library is the small
+// core, which holds the grading package too; the rest is mounted on first use
+// (scripts/split_stdlib.py, workbook/lazy_stdlib.py). Its progress (bytes of
+// the runtime files, then Python's start) goes to the page as it happens.
 
-const networkFetch = self.fetch.bind(self); // kept before precompileWasm() stands in for it
-
-// Once the service worker holds the site, its cache is read directly: the
-// service worker's thread, busy serving the page, is then not in the way.
-async function cached(url) {
-  try {
-    return (await self.caches?.match(url)) || null;
-  } catch {
-    return null; // no Cache Storage here (an insecure origin)
-  }
-}
-
-const SNAPSHOT = indexURL + "workbook.snapshot.gz";
 const STDLIB_CORE = indexURL + "python_stdlib.core.zip";
 const STDLIB_REST = indexURL + "python_stdlib.rest.zip";
+const SNAPSHOT = indexURL + "workbook.snapshot.gz";
 
-// On a first visit the snapshot is a 4.8 MB download that a plain start does
-// not need: on a slow link (3.9 s at 10 Mbps, 24 s at 1.6 Mbps) it costs far
-// more than booting Python and installing the wheel (under a second). From the
-// cache (a revisit) it is always used. Otherwise its download waits until
-// Pyodide asks for it (after loading pyodide.asm.js, which comes with the
-// WebAssembly on the same link): if the link carried pyodide.asm.js fast
-// enough to bring the snapshot in under BOOT_COST_MS (about 26 Mbps), it is fetched and used;
-// if not, Pyodide boots plainly and the service worker stores the snapshot
-// after the start, for the next visit.
-const BOOT_COST_MS = 1500; // a plain start costs under a second; the margin keeps a loaded machine on localhost on the snapshot
-const SNAPSHOT_BYTES = 4.9e6; // about; the file is 4.6-4.9 MB
-
-/** Bytes per ms the link brought pyodide.asm.js's body at (Resource Timing), or null. */
-function linkSpeed() {
-  const entry = performance.getEntriesByName?.(indexURL + "pyodide.asm.js")?.[0];
-  const size = entry?.encodedBodySize;
-  const ms = entry ? entry.responseEnd - entry.responseStart : 0;
-  if (!(size > 100_000)) return null;
-  stages.link = ms > 0 ? Math.round(size / ms) : "instant"; // bytes per ms, for the benchmark
-  return ms > 0 ? size / ms : null;
-}
-
-function snapshotDownload() {
-  const stored = cached(SNAPSHOT);
-  let fromCache = null;
-  stored.then((hit) => (fromCache = Boolean(hit)));
-  let decide;
-  const decided = new Promise((resolve) => (decide = resolve)); // the network's response, or null: skipped
-  const bytes = (async () => {
-    const response = (await stored) || (await decided);
-    if (!response) throw new Error("the snapshot was skipped");
-    if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
-    return new Uint8Array(await response.arrayBuffer());
-  })();
-  let use = null;
-  return {
-    bytes,
-    /** Whether to use the snapshot (asked when Pyodide wants it; decided once). */
-    worthIt() {
-      if (use !== null) return use;
-      const speed = fromCache ? null : linkSpeed();
-      use = speed === null || SNAPSHOT_BYTES / speed < BOOT_COST_MS;
-      decide(use && !fromCache ? networkFetch(SNAPSHOT) : null);
-      return use;
-    },
-  };
-}
-
-async function readSnapshot(download) {
-  let bytes = await download.bytes;
-  if (bytes[0] === 0x1f && bytes[1] === 0x8b) {
-    // Still gzipped (a first visit); the service worker stores it inflated, and some servers inflate it.
-    const inflated = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
-    bytes = new Uint8Array(await new Response(inflated).arrayBuffer());
-  }
-  return checkSnapshot(unpack(bytes));
-}
-
-// The file leaves out the memory's zero pages (scripts/build_snapshot.mjs,
-// sparse()): put each run of bytes back at its offset in a zeroed buffer.
-function unpack(bytes) {
-  const magic = new TextDecoder().decode(bytes.subarray(0, 8));
-  if (magic !== "WBSPARSE") throw new Error("the snapshot file is damaged");
-  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-  const out = new Uint8Array(view.getUint32(8, true));
-  const runs = view.getUint32(12, true);
-  let data = 16 + 8 * runs;
-  for (let i = 0; i < runs; i++) {
-    const offset = view.getUint32(16 + 8 * i, true);
-    const length = view.getUint32(20 + 8 * i, true);
-    out.set(bytes.subarray(data, data + length), offset);
-    data += length;
-  }
-  if (data !== bytes.byteLength) throw new Error("the snapshot file is damaged");
-  return out;
-}
-
-// Pyodide waits forever on a snapshot too short for its memory, so a damaged
-// one is turned away here: Pyodide's magic number, then a header and whole
-// 64 KiB pages of memory.
-const SNAPSHOT_MAGIC = 0x706e7300;
-function checkSnapshot(bytes) {
-  const head = bytes.byteLength >= 16 ? new DataView(bytes.buffer, bytes.byteOffset, 16) : null;
-  const headerSize = head?.getUint32(4, true);
-  const memory = bytes.byteLength - headerSize;
-  if (!head || head.getUint32(0, true) !== SNAPSHOT_MAGIC || !(memory > 0) || memory % 65536 !== 0) {
-    throw new Error("the snapshot file is damaged");
-  }
-  return bytes;
-}
-
-// Pyodide 0.27 reads the whole snapshot before it starts compiling its
-// WebAssembly. When the service worker's cache already holds the WebAssembly,
-// compiling it meanwhile takes that wait off the critical path: the compile
-// starts here, Pyodide's own fetch of the file gets a stand-in response, and its
-// instantiateStreaming call with that stand-in is answered with the module
-// compiled here. On a first visit Pyodide fetches and compiles it as usual
-// (compiling early then competed with the downloads and was slower). If the
-// compile here fails, Pyodide compiles after all. (Pyodide's other start-up
-// files go through the service worker: taking them from the cache as well was
-// not faster.)
-function precompileWasm(url) {
-  const realFetch = self.fetch;
-  const { instantiateStreaming: realInstantiate } = WebAssembly;
-  const stored = cached(url);
-  const compiled = stored.then((hit) => (hit ? WebAssembly.compileStreaming(hit) : null));
-  compiled.catch(() => {}); // handled below
-  const standIn = new Response(null);
-  const restore = () => {
-    self.fetch = realFetch;
-    WebAssembly.instantiateStreaming = realInstantiate;
-  };
-  self.fetch = (resource, init) =>
-    String(resource) === url ? stored.then((hit) => (hit ? standIn : realFetch(resource, init))) : realFetch(resource, init);
-  WebAssembly.instantiateStreaming = async (source, imports) => {
-    const response = await source;
-    restore();
-    if (response !== standIn) {
-      stages.wasm = "compiled by Pyodide";
-      return realInstantiate(response, imports);
-    }
-    let module;
-    try {
-      module = await compiled;
-    } catch {
-      stages.wasm = "compiled by Pyodide";
-      return realInstantiate(realFetch(url), imports);
-    }
-    stages.wasm = "precompiled";
-    return { module, instance: await WebAssembly.instantiate(module, imports) };
-  };
-  return restore; // undo, for a start without Pyodide's usual calls (the fallback boot)
-}
-
-// `stages` keeps when each step ended (ms since the worker started), for the benchmark.
-const stages = {};
-const mark = (name) => {
-  stages[name] = Math.round(performance.now());
-};
-
-async function start() {
-  const download = snapshotDownload();
-  const snapshot = readSnapshot(download); // rejects without DecompressionStream where the file is still gzipped
-  snapshot.then(() => mark("snapshot"), () => {}); // handled below
-  const unpatch = precompileWasm(indexURL + "pyodide.asm.wasm");
-  importScripts(indexURL + "pyodide.js");
-  mark("pyodide.js");
-  // Pyodide reads this option after loading pyodide.asm.js: the moment to decide
-  // (not enumerable, so that loadPyodide's copy of its options does not read it earlier).
-  const options = { indexURL, stdLibURL: STDLIB_CORE };
-  let skipped = false;
-  Object.defineProperty(options, "_loadSnapshot", {
-    enumerable: false,
-    get() {
-      if (download.worthIt()) return snapshot;
-      skipped = true;
-      stages.snapshot = "skipped: a slow link";
-      return undefined;
-    },
-  });
-  try {
-    const py = await loadPyodide(options);
-    if (skipped) {
-      mark("booted");
-      return { py, from: "boot" };
-    }
-    mark("restored");
-    py.runPython("import random; random.seed()"); // the snapshot's generator state is everyone's
-    return { py, from: "snapshot" };
-  } catch (err) {
-    if (skipped) throw err;
-    unpatch();
-    const py = await loadPyodide({ indexURL, stdLibURL: STDLIB_CORE });
-    return { py, from: "boot", why: String((err && err.message) || err) };
-  }
-}
+const reportBoot = (progress) => self.postMessage({ type: "boot", ...progress });
 
 // The first grade after a start used to take 30-130 ms instead of 2: the
 // browser compiles WebAssembly functions lazily, on their first call, and the
@@ -231,7 +43,7 @@ const answer = (request) => JSON.parse(handle(JSON.stringify(request)));
 // ---- Requests ------------------------------------------------------------------
 const ready = (async () => {
   const t0 = performance.now();
-  const started = await start();
+  const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE, snapshotURL: SNAPSHOT, onProgress: reportBoot });
   pyodide = started.py;
   lazyStdlib = pyodide.pyimport("workbook.lazy_stdlib");
   lazyStdlib.install(STDLIB_REST).destroy();

@@ -1,0 +1,288 @@
+// Starting Pyodide in a worker: the one place that knows how.
+//
+//   const { py, from, why, stages } = await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
+//
+// - `stdLibURL`: the standard library zip to start with (the grader: the small
+//   core of scripts/split_stdlib.py, which holds the grading package too).
+// - `snapshotURL`: a memory snapshot made at build time (scripts/build_snapshot.mjs)
+//   to restore instead of booting; null boots plainly (a second worker, e.g. a
+//   sandbox for learners' code, can start that way with a stdlib of its own).
+// - `onProgress({phase, loaded, total})`: phase "download" (bytes of the runtime
+//   files, counted as they arrive), "start" (Python starting), then the caller
+//   says "ready". Sizes come from the build (scripts/bundle.mjs: BOOT_SIZES).
+//
+// It relies on Pyodide 0.27 internals beyond the public API, each named in
+// pyodide-internals.json (beside this file; PYODIDE_INTERNALS below), which a
+// test checks against the vendored Pyodide: the private `_loadSnapshot` option,
+// read after pyodide.asm.js is loaded; the snapshot's header; Pyodide's
+// `instantiateStreaming(fetch(wasm))`; the `stdLibURL` option and where the
+// standard library is mounted; pyodide.asm.js loaded by importScripts.
+// docs/performance.md has the measurements behind each step.
+/* global loadPyodide, importScripts, BOOT_SIZES */
+import internals from "./pyodide-internals.json";
+
+export const PYODIDE_INTERNALS = Object.freeze(internals.internals.map((entry) => entry.name));
+
+const SIZES = typeof BOOT_SIZES === "object" ? BOOT_SIZES : {}; // file name -> bytes (defined by the bundler)
+const networkFetch = self.fetch.bind(self); // kept before patchWasm() stands in for it
+
+// `stages` keeps when each step ended (ms since the worker started), for the benchmark.
+export const stages = {};
+export const mark = (name) => {
+  stages[name] = Math.round(performance.now());
+};
+
+/** `url`'s file name in the Pyodide folder `indexURL`, or null. */
+const fileIn = (indexURL, url) => (String(url).startsWith(indexURL) ? String(url).slice(indexURL.length) : null);
+
+/** Whether the service worker's stored copy holds `url` (its bytes are read through the service worker, which checks them). */
+async function isStored(url) {
+  try {
+    return Boolean(await self.caches?.match(url));
+  } catch {
+    return false; // no Cache Storage here (an insecure origin)
+  }
+}
+
+// ---- Progress: bytes of the runtime files as they arrive --------------------------
+function progressMeter(indexURL, files, onProgress) {
+  const loaded = new Map(); // file name -> bytes so far
+  const expected = new Map(files.map((name) => [name, SIZES[name] || 0]));
+  let phase = "download";
+  let last = 0;
+  const report = (force) => {
+    if (!onProgress) return;
+    const now = performance.now();
+    if (!force && now - last < 100) return;
+    last = now;
+    let done = 0;
+    for (const [name, size] of expected) done += Math.min(loaded.get(name) || 0, size || Infinity);
+    const total = [...expected.values()].reduce((a, b) => a + b, 0);
+    if (phase === "download" && done >= total) phase = "start"; // every file is in: Python starts
+    onProgress({ phase, loaded: Math.min(done, total), total });
+  };
+  return {
+    /** Count `response`'s body as it arrives (a clone: the original goes on untouched). */
+    watch(name, response) {
+      if (!expected.has(name) || !response?.body) return response;
+      const reader = response.clone().body.getReader();
+      (async () => {
+        let n = 0;
+        for (;;) {
+          const { done, value } = await reader.read();
+          if (done) break;
+          n += value.byteLength;
+          loaded.set(name, n);
+          report(false);
+        }
+        loaded.set(name, Math.max(n, expected.get(name)));
+        report(true);
+      })().catch(() => {});
+      return response;
+    },
+    done(name) {
+      loaded.set(name, expected.get(name) || 0);
+      report(true);
+    },
+    drop(name) {
+      expected.delete(name);
+      report(true);
+    },
+    phase(next) {
+      phase = next;
+      report(true);
+    },
+    fileName: (url) => fileIn(indexURL, url),
+  };
+}
+
+// ---- The memory snapshot ------------------------------------------------------------
+// On a first visit the snapshot is a 4.8 MB download that a plain start does
+// not need: on a slow link (3.9 s at 10 Mbps, 24 s at 1.6 Mbps) it costs far
+// more than booting Python and installing the wheel (under a second). From the
+// stored copy (a revisit) it is always used. Otherwise its download waits until
+// Pyodide asks for it (after loading pyodide.asm.js, which comes with the
+// WebAssembly on the same link): if the link carried pyodide.asm.js fast
+// enough to bring the snapshot in under BOOT_COST_MS (about 26 Mbps), it is fetched and used;
+// if not, Pyodide boots plainly and the service worker stores the snapshot
+// with the offline copy, for the next visit.
+const BOOT_COST_MS = 1500; // a plain start costs under a second; the margin keeps a loaded machine on localhost on the snapshot
+const SNAPSHOT_BYTES = 4.9e6; // about; the file is 4.6-4.9 MB
+
+/** Bytes per ms the link brought pyodide.asm.js's body at (Resource Timing), or null. */
+function linkSpeed(indexURL) {
+  const entry = performance.getEntriesByName?.(indexURL + "pyodide.asm.js")?.[0];
+  const size = entry?.encodedBodySize;
+  const ms = entry ? entry.responseEnd - entry.responseStart : 0;
+  if (!(size > 100_000)) return null;
+  stages.link = ms > 0 ? Math.round(size / ms) : "instant"; // bytes per ms, for the benchmark
+  return ms > 0 ? size / ms : null;
+}
+
+function snapshotDownload(url, indexURL, meter) {
+  let fromCache = null;
+  let decide;
+  const decided = new Promise((resolve) => (decide = resolve)); // the response, or null: skipped
+  // Stored: read it at once (through the service worker, which checks its bytes).
+  isStored(url).then((hit) => {
+    fromCache = hit;
+    if (hit) decide(networkFetch(url));
+  });
+  const bytes = (async () => {
+    const response = await decided;
+    if (!response) throw new Error("the snapshot was skipped");
+    if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
+    const data = new Uint8Array(await response.arrayBuffer());
+    meter.done(meter.fileName(url));
+    return data;
+  })();
+  let use = null;
+  return {
+    bytes,
+    /** Whether to use the snapshot (asked when Pyodide wants it, synchronously; decided once). */
+    worthIt() {
+      if (use !== null) return use;
+      const speed = fromCache ? null : linkSpeed(indexURL);
+      use = speed === null || SNAPSHOT_BYTES / speed < BOOT_COST_MS;
+      if (!use) meter.drop(meter.fileName(url));
+      else if (!fromCache) decide(networkFetch(url).then((r) => meter.watch(meter.fileName(url), r)));
+      return use;
+    },
+  };
+}
+
+async function readSnapshot(download) {
+  let bytes = await download.bytes;
+  if (bytes[0] === 0x1f && bytes[1] === 0x8b) {
+    // Still gzipped (a first visit); the service worker stores it inflated, and some servers inflate it.
+    const inflated = new Blob([bytes]).stream().pipeThrough(new DecompressionStream("gzip"));
+    bytes = new Uint8Array(await new Response(inflated).arrayBuffer());
+  }
+  return checkSnapshot(unpack(bytes));
+}
+
+// The file leaves out the memory's zero pages (scripts/build_snapshot.mjs,
+// sparse()): put each run of bytes back at its offset in a zeroed buffer.
+function unpack(bytes) {
+  const magic = new TextDecoder().decode(bytes.subarray(0, 8));
+  if (magic !== "WBSPARSE") throw new Error("the snapshot file is damaged");
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  const out = new Uint8Array(view.getUint32(8, true));
+  const runs = view.getUint32(12, true);
+  let data = 16 + 8 * runs;
+  for (let i = 0; i < runs; i++) {
+    const offset = view.getUint32(16 + 8 * i, true);
+    const length = view.getUint32(20 + 8 * i, true);
+    out.set(bytes.subarray(data, data + length), offset);
+    data += length;
+  }
+  if (data !== bytes.byteLength) throw new Error("the snapshot file is damaged");
+  return out;
+}
+
+// Pyodide waits forever on a snapshot too short for its memory, so a damaged
+// one is turned away here: Pyodide's magic number, then a header and whole
+// 64 KiB pages of memory.
+const SNAPSHOT_MAGIC = 0x706e7300;
+function checkSnapshot(bytes) {
+  const head = bytes.byteLength >= 16 ? new DataView(bytes.buffer, bytes.byteOffset, 16) : null;
+  const headerSize = head?.getUint32(4, true);
+  const memory = bytes.byteLength - headerSize;
+  if (!head || head.getUint32(0, true) !== SNAPSHOT_MAGIC || !(memory > 0) || memory % 65536 !== 0) {
+    throw new Error("the snapshot file is damaged");
+  }
+  return bytes;
+}
+
+// ---- The WebAssembly -------------------------------------------------------------------
+// Pyodide 0.27 reads the whole snapshot before it starts compiling its
+// WebAssembly. When the service worker has stored the WebAssembly, compiling it
+// meanwhile takes that wait off the critical path: the compile starts here,
+// Pyodide's own fetch of the file gets a stand-in response, and its
+// instantiateStreaming call with that stand-in is answered with the module
+// compiled here. On a first visit Pyodide fetches and compiles it as usual
+// (compiling early then competed with the downloads and was slower), and its
+// bytes are counted for the progress bar. If the compile here fails, Pyodide
+// compiles after all.
+function patchWasm(url, meter) {
+  const realFetch = self.fetch;
+  const { instantiateStreaming: realInstantiate } = WebAssembly;
+  const stored = isStored(url);
+  const compiled = stored.then((hit) => (hit ? WebAssembly.compileStreaming(networkFetch(url)) : null));
+  compiled.catch(() => {}); // handled below
+  const standIn = new Response(null);
+  const restore = () => {
+    self.fetch = realFetch;
+    WebAssembly.instantiateStreaming = realInstantiate;
+  };
+  const counted = (resource, init) => {
+    const name = meter.fileName(resource);
+    return realFetch(resource, init).then((response) => (name ? meter.watch(name, response) : response));
+  };
+  self.fetch = (resource, init) =>
+    String(resource) === url ? stored.then((hit) => (hit ? standIn : counted(resource, init))) : counted(resource, init);
+  WebAssembly.instantiateStreaming = async (source, imports) => {
+    const response = await source;
+    restore();
+    if (response !== standIn) {
+      stages.wasm = "compiled by Pyodide";
+      return realInstantiate(response, imports);
+    }
+    let module;
+    try {
+      module = await compiled;
+    } catch {
+      stages.wasm = "compiled by Pyodide";
+      return realInstantiate(realFetch(url), imports);
+    }
+    stages.wasm = "precompiled";
+    meter.done(meter.fileName(url));
+    return { module, instance: await WebAssembly.instantiate(module, imports) };
+  };
+  return restore; // undo, for a start without Pyodide's usual calls (the fallback boot)
+}
+
+// ---- The start ----------------------------------------------------------------------------
+export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null }) {
+  const wasmURL = indexURL + "pyodide.asm.wasm";
+  const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "pyodide-lock.json", fileIn(indexURL, stdLibURL)];
+  if (snapshotURL) files.push(fileIn(indexURL, snapshotURL));
+  const meter = progressMeter(indexURL, files, onProgress);
+  meter.phase("download");
+  const download = snapshotURL ? snapshotDownload(snapshotURL, indexURL, meter) : null;
+  const snapshot = download ? readSnapshot(download) : null; // rejects without DecompressionStream where the file is still gzipped
+  snapshot?.then(() => mark("snapshot"), () => {}); // handled below
+  const unpatch = patchWasm(wasmURL, meter);
+  importScripts(indexURL + "pyodide.js");
+  meter.done("pyodide.js");
+  mark("pyodide.js");
+  // Pyodide reads this option after loading pyodide.asm.js: the moment to decide
+  // (not enumerable, so that loadPyodide's copy of its options does not read it earlier).
+  const options = { indexURL, stdLibURL };
+  let skipped = !download;
+  Object.defineProperty(options, "_loadSnapshot", {
+    enumerable: false,
+    get() {
+      meter.done("pyodide.asm.js");
+      if (download?.worthIt()) return snapshot;
+      skipped = true;
+      if (download) stages.snapshot = "skipped: a slow link";
+      return undefined;
+    },
+  });
+  try {
+    const py = await loadPyodide(options);
+    if (skipped) {
+      mark("booted");
+      return { py, from: "boot", stages };
+    }
+    mark("restored");
+    py.runPython("import random; random.seed()"); // the snapshot's generator state is everyone's
+    return { py, from: "snapshot", stages };
+  } catch (err) {
+    if (skipped) throw err;
+    unpatch();
+    const py = await loadPyodide({ indexURL, stdLibURL });
+    return { py, from: "boot", why: String((err && err.message) || err), stages };
+  }
+}
