@@ -5,7 +5,7 @@
 
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
-import { dueLine, el, loadManifest } from "./progress-ui.js";
+import { dueLine, el, loadManifest } from "./progress-view.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
 
