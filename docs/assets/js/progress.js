@@ -141,6 +141,7 @@ export class Progress {
   keepAside(raw, why) {
     const backup = `${this.key}:backup:${Date.now()}`;
     this.pending = { key: backup, raw };
+    this.keptRaw = raw;
     const download = { name: "robotics-math-workbook-unreadable-progress.json", text: raw };
     if (this.writeBackup()) {
       this.report("set-aside", `${why} The saved text is kept unchanged under “${backup}” in this browser's storage.`, download);
@@ -217,7 +218,7 @@ export class Progress {
     if (!this.writeBackup()) return this.failed("blocked");
     const raw = this.store.getItem(this.key);
     let stored = emptyData();
-    if (raw !== null) {
+    if (raw !== null && raw !== this.keptRaw) {
       try {
         stored = parseStored(raw).data;
       } catch {
