@@ -151,6 +151,12 @@ def on_page_content(html, page, config, files, **kwargs):
             raise PluginError(f"{page.file.src_uri}: the slot {slot} was lost in rendering")
         html = html.replace(slot, widget)
     ids = _state.ids.get(page.file.src_uri)
+    for i in ids or []:
+        # The exercise is a region named by its title: the heading's text without its permalink's "¶".
+        heading = re.compile(rf'(<h\d id="{dom_id(i)}-title">)(.*?)(<a class="headerlink"|</h\d>)', re.S)
+        html, found = heading.subn(rf'\1<span id="{dom_id(i)}-name">\2</span>\3', html, count=1)
+        if not found:
+            raise PluginError(f"{page.file.src_uri}: exercise {i} has no heading to name it")
     if ids:
         # The page's exercises listed under its title: the target of the "Skip to exercises" link (a11y.py).
         index = exercise_index_html([(i, _state.titles[i]) for i in ids])

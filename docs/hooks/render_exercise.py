@@ -90,7 +90,7 @@ def exercise_html(ex: Exercise, prompt_html: str, hint_html: str, solution_html:
     extra = "".join(f' {name}="{escape(value)}"' for name, value in attributes.items())
     return (
         f'<div class="wb-exercise" id="{base}" {ATTR.exercise}="{escape(ex.id)}" {ATTR.kind}="{ex.kind}" '
-        f'{ATTR.state}="{STATE.unanswered}"{extra} role="region" aria-labelledby="{base}-title">'
+        f'{ATTR.state}="{STATE.unanswered}"{extra} role="region" aria-labelledby="{base}-name">'
         f'<div class="wb-head"><span class="wb-kind wb-kind--{ex.kind}">{KIND_LABEL.get(ex.kind, ex.kind.title())}</span>'
         f'<span class="wb-status" {role_attr(ROLE.status)} aria-hidden="true"></span></div>'
         f'<div class="wb-prompt">{prompt_html}</div>'

@@ -30,7 +30,8 @@ export function firstControl(exercise) {
 function jumpTo(id) {
   const exercise = document.querySelector(`[${ATTR.exercise}="${CSS.escape(id)}"]`);
   if (!exercise) return false;
-  const heading = document.getElementById(exercise.getAttribute("aria-labelledby")) || exercise;
+  const name = document.getElementById(exercise.getAttribute("aria-labelledby"));
+  const heading = name?.closest("h1, h2, h3, h4, h5, h6") || name || exercise;
   heading.scrollIntoView({ block: "start" });
   firstControl(exercise)?.focus({ preventScroll: true });
   history.replaceState(history.state, "", `#${heading.id}`);
@@ -53,7 +54,8 @@ function onClick(event) {
 
 /** Give exercise `id`'s links (the list under the title, the table of contents) its new title. */
 export function retitle(headingId, id, title) {
-  for (const link of document.querySelectorAll(`a[href="#${CSS.escape(headingId)}"]`)) {
+  // The theme makes in-page links absolute: match the address's end.
+  for (const link of document.querySelectorAll(`a[href$="#${CSS.escape(headingId)}"]`)) {
     if (link.closest("h1, h2, h3, h4, h5, h6")) continue; // the heading's own permalink
     const own = link.querySelector("[data-wb-jump-title]");
     if (own) own.textContent = title;

@@ -75,11 +75,10 @@ function closePanel(ctx, role, buttonRole) {
 }
 
 function setTitle(ctx, title) {
-  const heading = document.getElementById(`${ctx.el.id}-title`);
-  const text = heading?.firstChild;
-  if (!title || text?.nodeType !== Node.TEXT_NODE) return;
-  text.textContent = `${ctx.id} · ${title}`;
-  retitle(heading.id, ctx.id, title); // the list of exercises and the table of contents
+  const name = document.getElementById(`${ctx.el.id}-name`); // the heading's text (docs/hooks/exercises.py)
+  if (!title || !name) return;
+  name.textContent = `${ctx.id} · ${title}`;
+  retitle(`${ctx.el.id}-title`, ctx.id, title); // the list of exercises and the table of contents
 }
 
 function showControls(ctx, n) {
