@@ -188,8 +188,9 @@ def test_export_reset_import_restores_exactly(page, site_url):
 
 
 def huge_file() -> str:
+    """Larger than any export this site can write (local storage holds at most 10 MB), so refused unread."""
     return json.dumps({"format": "robotics-math-workbook-progress", "version": 1,
-                       "exercises": {"0.1": {"last": "x" * 1500, "code": "#" * 1_200_000}}})
+                       "exercises": {"0.1": {"last": "x" * 1500, "code": "#" * 33_000_000}}})
 
 
 def test_malformed_or_hostile_import_is_refused_and_changes_nothing(page, site_url):
