@@ -58,18 +58,26 @@ def answer_derive(ex: Locator, text: str) -> str:
     return check(ex)
 
 
+def widget_ready(ex: Locator) -> None:
+    """Wait until the exercise's widget has started (its form is marked ready): a click before that selects nothing."""
+    ex.locator("form[data-wb-ready]").wait_for(state="attached")
+
+
 def answer_trace(ex: Locator, key: str) -> str:
+    widget_ready(ex)
     ex.locator(f'[data-role="choice"][value="{key}"]').check()
     return check(ex)
 
 
 def answer_debug(ex: Locator, line: int) -> str:
+    widget_ready(ex)
     ex.locator(f'[data-role="line"][data-line="{line}"]').click()
     return check(ex)
 
 
 def arrange_design(ex: Locator, order: list[str]) -> None:
     """Reorder the steps with the move-up buttons (the keyboard path)."""
+    widget_ready(ex)
     for target, key in enumerate(order):
         while True:
             keys = ex.locator('[data-role="step"]').evaluate_all("els => els.map(e => e.dataset.step)")

@@ -28,9 +28,12 @@ def open_ready(page: Page, site_url: str, n: int) -> None:
     wait_runtime(page, timeout=120_000)
 
 
+SLOW = 120_000  # ms: generous, for a test machine busy with other work (a page's worker boots Python meanwhile)
+
+
 def settle_page(page: Page) -> None:
     """Wait until the page's script has drawn everything it draws (editors built now)."""
-    page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)")
+    page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)", timeout=SLOW)
     page.evaluate(("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor()))"))
     page.wait_for_function("""() => {
       const exercises = [...document.querySelectorAll('[data-exercise-id]')];
@@ -39,7 +42,7 @@ def settle_page(page: Page) -> None:
         builds.every(e => e.querySelector('.cm-editor')) &&
         (!exercises.length || document.querySelector('.wb-chapter-progress')) &&
         [...document.querySelectorAll('[data-wb-progress-panel]')].every(p => p.querySelector('table'));
-    }""")
+    }""", timeout=SLOW)
 
 
 def open_all_help(page: Page) -> None:

@@ -96,6 +96,7 @@ def check_formulas(page: Page) -> dict:
 
 @pytest.mark.parametrize("width", [360, 1280])
 def test_no_formula_is_cut_without_its_cue_on_any_page(page, site_url, width):
+    page.set_default_timeout(120_000)  # a dozen pages, each booting Python meanwhile, on a machine maybe busy
     page.set_viewport_size({"width": width, "height": 800})
     problems, cued = {}, 0
     for path in [*PAGES, "practise/", "performance/"]:

@@ -55,9 +55,15 @@ export function exportProgress(progress) {
   return { name, count: Object.keys(data.exercises).length };
 }
 
-/** Every problem the progress store reported, as notices with their way out. */
+/**
+ * Every problem the progress store reported, as notices with their way out: on
+ * every page while it lasts (storage full, nothing saved), once for what is
+ * only news (a record set aside).
+ */
 export function showProgressProblems(progress) {
   for (const problem of progress.problems) {
+    if (problem.shown && problem.kind === "set-aside") continue;
+    problem.shown = true;
     const buttons = [{ text: "Export progress", action: "notice-export", run: () => exportProgress(progress) }];
     if (problem.download) {
       const { name, text } = problem.download;

@@ -8,9 +8,10 @@
 //
 // Never lost:
 // - Every write merges: it reads what storage holds now, merges this tab's
-//   records into it (progress-schema.js) and writes the result, inside a Web
-//   Lock so that tabs take turns. Where Web Locks are missing, and because a
-//   tab's view of localStorage may lag another tab's write, every tab also
+//   records into it (progress-schema.js) and writes the result at once; then
+//   it does so again inside a Web Lock, so that tabs take turns repairing what
+//   a concurrent write dropped. Because a tab's view of localStorage may lag
+//   another tab's write (and where Web Locks are missing), every tab also
 //   merges each change another tab makes (the storage event) and writes back
 //   whatever it knows that the other did not: the copies converge.
 // - Storage that cannot be written (full, or blocked) never hides what it
@@ -83,7 +84,6 @@ export class Progress {
     this.listeners = new Set();
     this.problems = []; // {kind, message, download?}: what the page must tell the learner
     this.pending = null; // a backup that must be written before anything else
-    this.dirty = false;
     this.queued = false;
     this.data = this.load();
     if (!this.store) return;
@@ -100,8 +100,6 @@ export class Progress {
       this.absorb(theirs);
       if (!same(theirs, this.data)) this.persist();
     });
-    // Leaving the page with a write still queued behind the lock: write now.
-    window.addEventListener("pagehide", () => this.dirty && this.flush());
   }
 
   load() {
@@ -198,22 +196,24 @@ export class Progress {
     return true;
   }
 
-  /** Write soon, inside the lock every tab of this site shares. */
+  /**
+   * Write now (read, merge, write), then once more inside the Web Lock that
+   * every tab of this site shares: that second pass reads again and writes back
+   * anything a concurrent write from another tab dropped.
+   */
   persist() {
-    this.dirty = true;
-    if (!this.store || this.queued) return;
+    this.flush();
+    if (!this.store || this.queued || !navigator.locks?.request) return;
     this.queued = true;
-    const pass = () => {
+    const again = () => {
       this.queued = false;
       this.flush();
     };
-    if (navigator.locks?.request) navigator.locks.request(this.key, pass).catch(pass);
-    else queueMicrotask(pass);
+    navigator.locks.request(this.key, again).catch(again);
   }
 
   /** Read what is stored, merge, write: the one place that writes the record. */
   flush() {
-    this.dirty = false;
     if (!this.store) return false;
     if (!this.writeBackup()) return this.failed("blocked");
     const raw = this.store.getItem(this.key);
@@ -247,8 +247,7 @@ export class Progress {
   }
 
   failed(kind) {
-    this.dirty = true; // try again with the next answer
-    if (!this.unsaved) {
+    if (!this.unsaved) { // said once; the next answer tries again
       this.unsaved = true;
       if (kind === "full") this.report("full", FULL);
     }
