@@ -91,3 +91,15 @@ def test_csp_policy_lists_each_hash():
     assert "script-src 'self' 'wasm-unsafe-eval' 'sha256-AAA' 'sha256-BBB';" in text
     assert "default-src 'self'" in text and "object-src 'none'" in text
     assert "frame-ancestors" not in text  # ignored in a <meta>
+
+
+def test_search_text_reads_formulas_as_unicode_and_keeps_the_rest():
+    import search_text  # docs/hooks/search_text.py
+
+    text = r"Turn \(R(\theta)\) by \(\theta = \pi/6\): \[ \det R = \cos^2\theta + \sin^2\theta \] &amp; done"
+    out = search_text.math_as_text(text)
+    assert "\\" not in out
+    assert "R(θ)" in out and "π/6" in out and "det R" in out and "cos" in out
+    assert out.startswith("Turn ") and out.endswith("&amp; done")
+    # Text that comes out with markup characters is escaped again for the index's HTML.
+    assert search_text.math_as_text(r"\(a < b\)") == "a &lt; b"
