@@ -30,7 +30,8 @@ def open_chapter(page: Page, site_url: str, n: int, wait_ready: bool = True) -> 
         wait_runtime(page)
 
 
-def wait_runtime(page: Page, state: str = "ready", timeout: float = 60_000) -> None:
+def wait_runtime(page: Page, state: str = "ready", timeout: float = 120_000) -> None:
+    # Generous: on a 2-core machine busy with other work, booting Python can take over a minute.
     page.wait_for_function(
         "s => document.documentElement.dataset.workbookRuntime === s", arg=state, timeout=timeout
     )
