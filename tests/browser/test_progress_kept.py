@@ -31,17 +31,18 @@ def export_of(exercises: dict) -> str:
 
 # A tab "answers" as exercise.js does: a patch computed from what the tab holds in
 # memory (which may lag the other tab), handed to progress.update. Both tabs are
-# armed to write at the same instant, T, on the browser's one clock: a timer to
-# just before T, then a spin to T itself.
+# armed to write in the same millisecond, T, of the system clock: a timer to just
+# before T, then a spin to T itself.
 ARM = """([id, v, at]) => {
   window.__fired = null;
   const go = () => {
-    while (performance.timeOrigin + performance.now() < at) { /* spin to the instant */ }
+    while (Date.now() < at) { /* spin to the instant: the one system clock both tabs read */ }
+    const started = Date.now();
     const r = workbook.progress.get(id);
     workbook.progress.update(id, { done: [...(r.done || []), v], attempts: (r.attempts || 0) + 1 });
-    window.__fired = performance.timeOrigin + performance.now();
+    window.__fired = started;
   };
-  setTimeout(go, Math.max(0, at - Date.now() - 4));
+  setTimeout(go, Math.max(0, at - Date.now() - 60));
 }"""
 
 CONVERGED = """([ids, expected]) => {
@@ -55,13 +56,18 @@ def test_two_tabs_answering_within_a_millisecond_fifty_times_lose_nothing(contex
     a, b = context.new_page(), context.new_page()
     for tab in (a, b):
         ready(tab, site_url + CHAPTERS[0])
-    expected: dict[str, list[int]] = {i: [] for i in IDS}
+    ids = [*IDS, "0.3", "1.1", "1.2", "1.3", "1.4"]
+    expected: dict[str, list[int]] = {i: [] for i in ids}
     gaps = []
-    for n in range(50):
-        ex = IDS[n % len(IDS)]
+    # Both tabs write the same record at the same instant; a busy machine may start
+    # one of them late, so this goes on until 50 pairs began in the same millisecond
+    # (at most 200 pairs: every pair is a real test of the merge all the same).
+    while sum(g == 0 for g in gaps) < 50 and len(gaps) < 200:
+        n = len(gaps)
+        ex = ids[n % len(ids)]
         va, vb = 2 * n + 1, 2 * n + 2
         expected[ex] += [va, vb]
-        at = time.time() * 1000 + 60
+        at = int(time.time() * 1000) + 150
         a.evaluate(ARM, [ex, va, at])
         b.evaluate(ARM, [ex, vb, at])
         for tab in (a, b):
@@ -69,13 +75,13 @@ def test_two_tabs_answering_within_a_millisecond_fifty_times_lose_nothing(contex
         gaps.append(abs(a.evaluate("window.__fired") - b.evaluate("window.__fired")))
     # The tabs exchange what they wrote until both hold everything, in memory and in storage.
     for tab in (a, b):
-        tab.wait_for_function(CONVERGED, arg=[IDS, expected])
+        tab.wait_for_function(CONVERGED, arg=[ids, expected])
     for tab in (a, b):
         got = records(tab)
-        for ex in IDS:
+        for ex in ids:
             assert sorted(got[ex]["done"]) == sorted(expected[ex]), ex
     assert json.loads(stored(a))["exercises"] == json.loads(stored(b))["exercises"]
-    print(f"writes in the same millisecond: {sum(g < 1 for g in gaps)} of {len(gaps)}")
+    print(f"pairs of writes: {len(gaps)}, begun in the same millisecond: {sum(g == 0 for g in gaps)}")
 
 
 def test_an_import_while_another_tab_answers_loses_nothing(context, site_url):
