@@ -24,10 +24,11 @@ from pathlib import Path
 
 import markdown
 from mkdocs.exceptions import PluginError
+from mkdocs.utils import get_relative_url
 
 from blocks import BlockError, ExerciseBlock, FigureBlock, parse
 from exercise_text import text_of
-from render_exercise import PageTools, dom_id, exercise_html
+from render_exercise import PageTools, chapter_list_html, dom_id, exercise_html, exercise_index_html
 from render_figure import figure_html
 from workbook import bank, figures
 from workbook.answer_kinds import classes as answer_classes
@@ -35,6 +36,7 @@ from workbook.contract import ANSWER_KINDS, DATA, KINDS
 from workbook.variants import VariantError, fill
 
 SLOT = '<div data-wb-slot="{id}"></div>'
+CHAPTER_LIST = "<div data-wb-chapter-list></div>"  # the home page's list of chapters, filled from the menu
 MANIFEST = "assets/exercises.json"
 JS = Path(__file__).resolve().parent.parent / "assets" / "js"
 
@@ -47,6 +49,7 @@ class BuildState:
     placed: dict[str, str] = field(default_factory=dict)  # exercise id -> page
     slots: dict[str, dict[str, str]] = field(default_factory=dict)  # page -> slot html -> widget html
     ids: dict[str, list[str]] = field(default_factory=dict)  # page -> exercise ids in order
+    titles: dict[str, str] = field(default_factory=dict)  # exercise id -> title as printed (variant 0)
     pages: dict[str, tuple[str, str]] = field(default_factory=dict)  # page -> (url, title)
     nav: list[str] = field(default_factory=list)
 
@@ -104,6 +107,7 @@ def _exercise(state: BuildState, block: ExerciseBlock, path: str) -> tuple[str, 
     if templates is None and text.names():
         raise PluginError(f"{path}: exercise {block.id} has placeholders {text.names()} but no generator (vary=...)")
     widget = exercise_html(ex, shown.prompt, shown.hint, shown.solution, PageTools(inline=state.inline), templates)
+    state.titles[block.id] = title
     slot = SLOT.format(id=block.id)
     return f"### {block.id} · {title} {{ #{dom_id(block.id)}-title }}\n\n{slot}\n", widget
 
@@ -146,6 +150,17 @@ def on_page_content(html, page, config, files, **kwargs):
         if slot not in html:
             raise PluginError(f"{page.file.src_uri}: the slot {slot} was lost in rendering")
         html = html.replace(slot, widget)
+    ids = _state.ids.get(page.file.src_uri)
+    for i in ids or []:
+        # The exercise is a region named by its title: the heading's text without its permalink's "¶".
+        heading = re.compile(rf'(<h\d id="{dom_id(i)}-title">)(.*?)(<a class="headerlink"|</h\d>)', re.S)
+        html, found = heading.subn(rf'\1<span id="{dom_id(i)}-name">\2</span>\3', html, count=1)
+        if not found:
+            raise PluginError(f"{page.file.src_uri}: exercise {i} has no heading to name it")
+    if ids:
+        # The page's exercises listed under its title: the target of the "Skip to exercises" link (a11y.py).
+        index = exercise_index_html([(i, _state.titles[i]) for i in ids])
+        html = html.replace("</h1>", "</h1>" + index, 1) if "</h1>" in html else index + html
     return html
 
 
@@ -156,6 +171,10 @@ def on_nav(nav, config, files, **kwargs):
 
 def on_page_context(context, page, config, nav, **kwargs):
     _state.pages[page.file.src_uri] = (page.url, page.title or "")
+    if page.content and CHAPTER_LIST in page.content:
+        # Every page has been read by now: the chapters' own titles (their H1s) are known.
+        chapters = [(get_relative_url(p.url, page.url), p.title) for p in nav.pages if _state.ids.get(p.file.src_uri)]
+        page.content = page.content.replace(CHAPTER_LIST, chapter_list_html(chapters))
     return context
 
 

@@ -90,7 +90,7 @@ def exercise_html(ex: Exercise, prompt_html: str, hint_html: str, solution_html:
     extra = "".join(f' {name}="{escape(value)}"' for name, value in attributes.items())
     return (
         f'<div class="wb-exercise" id="{base}" {ATTR.exercise}="{escape(ex.id)}" {ATTR.kind}="{ex.kind}" '
-        f'{ATTR.state}="{STATE.unanswered}"{extra} aria-labelledby="{base}-title">'
+        f'{ATTR.state}="{STATE.unanswered}"{extra} role="region" aria-labelledby="{base}-name">'
         f'<div class="wb-head"><span class="wb-kind wb-kind--{ex.kind}">{KIND_LABEL.get(ex.kind, ex.kind.title())}</span>'
         f'<span class="wb-status" {role_attr(ROLE.status)} aria-hidden="true"></span></div>'
         f'<div class="wb-prompt">{prompt_html}</div>'
@@ -99,3 +99,24 @@ def exercise_html(ex: Exercise, prompt_html: str, hint_html: str, solution_html:
         f'<div class="wb-help">{buttons}</div>{panels}'
         f"</div>"
     )
+
+
+def exercise_index_html(items: list[tuple[str, str]]) -> str:
+    """The list of a page's exercises under its title: one link each, to the exercise's heading.
+
+    docs/assets/js/jump.js makes each link put the keyboard focus on the
+    exercise's first control; without the script it scrolls to the heading.
+    """
+    links = "".join(
+        f'<li><a href="#{dom_id(i)}-title" data-wb-jump="{escape(i)}">'
+        f'<span class="wb-jump-id">{escape(i)}</span> <span class="wb-jump-title" data-wb-jump-title>{escape(title)}</span></a></li>'
+        for i, title in items)
+    return (f'<nav class="wb-exercise-index" id="wb-exercises" aria-labelledby="wb-exercises-title">'
+            f'<p class="wb-exercise-index-title" id="wb-exercises-title">Exercises on this page</p>'
+            f"<ol>{links}</ol></nav>")
+
+
+def chapter_list_html(chapters: list[tuple[str, str]]) -> str:
+    """The home page's chapters: each chapter's own title (with its number, as in the menu), linked."""
+    items = "".join(f'<li><a href="{escape(url)}">{escape(title)}</a></li>' for url, title in chapters)
+    return f'<ul class="wb-chapter-list">{items}</ul>'

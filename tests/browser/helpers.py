@@ -30,7 +30,8 @@ def open_chapter(page: Page, site_url: str, n: int, wait_ready: bool = True) -> 
         wait_runtime(page)
 
 
-def wait_runtime(page: Page, state: str = "ready", timeout: float = 60_000) -> None:
+def wait_runtime(page: Page, state: str = "ready", timeout: float = 120_000) -> None:
+    # Generous: on a 2-core machine busy with other work, booting Python can take over a minute.
     page.wait_for_function(
         "s => document.documentElement.dataset.workbookRuntime === s", arg=state, timeout=timeout
     )
@@ -58,18 +59,26 @@ def answer_derive(ex: Locator, text: str) -> str:
     return check(ex)
 
 
+def widget_ready(ex: Locator) -> None:
+    """Wait until the exercise's widget has started (its form is marked ready): a click before that selects nothing."""
+    ex.locator("form[data-wb-ready]").wait_for(state="attached")
+
+
 def answer_trace(ex: Locator, key: str) -> str:
+    widget_ready(ex)
     ex.locator(f'[data-role="choice"][value="{key}"]').check()
     return check(ex)
 
 
 def answer_debug(ex: Locator, line: int) -> str:
+    widget_ready(ex)
     ex.locator(f'[data-role="line"][data-line="{line}"]').click()
     return check(ex)
 
 
 def arrange_design(ex: Locator, order: list[str]) -> None:
     """Reorder the steps with the move-up buttons (the keyboard path)."""
+    widget_ready(ex)
     for target, key in enumerate(order):
         while True:
             keys = ex.locator('[data-role="step"]').evaluate_all("els => els.map(e => e.dataset.step)")

@@ -1,6 +1,6 @@
 """Accessibility and small screens: an axe-core audit of every page in the light
-and dark palettes (no serious or critical violation, with hints and solutions
-open), every exercise kind worked from the keyboard alone with a visible focus,
+and dark palettes (no violation of any impact, best-practice rules included, with
+hints and solutions open), every exercise kind worked from the keyboard alone with a visible focus,
 and every page usable 360 px wide (no sideways scrolling, editors and figures
 fit, touch targets at least 24 px).
 
@@ -18,6 +18,7 @@ from workbook import bank
 
 AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
+EVERY_PAGE = [*PAGES, "practise/", "performance/"]  # the last is the developers' page, out of the menu
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 
 
@@ -27,9 +28,12 @@ def open_ready(page: Page, site_url: str, n: int) -> None:
     wait_runtime(page, timeout=120_000)
 
 
+SLOW = 120_000  # ms: generous, for a test machine busy with other work (a page's worker boots Python meanwhile)
+
+
 def settle_page(page: Page) -> None:
     """Wait until the page's script has drawn everything it draws (editors built now)."""
-    page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)")
+    page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)", timeout=SLOW)
     page.evaluate(("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor()))"))
     page.wait_for_function("""() => {
       const exercises = [...document.querySelectorAll('[data-exercise-id]')];
@@ -38,7 +42,7 @@ def settle_page(page: Page) -> None:
         builds.every(e => e.querySelector('.cm-editor')) &&
         (!exercises.length || document.querySelector('.wb-chapter-progress')) &&
         [...document.querySelectorAll('[data-wb-progress-panel]')].every(p => p.querySelector('table'));
-    }""")
+    }""", timeout=SLOW)
 
 
 def open_all_help(page: Page) -> None:
@@ -53,8 +57,8 @@ def audit(page: Page) -> list[str]:
         # Colours are measured as they are, not halfway through the theme's colour transitions.
         page.add_style_tag(content="*, *::before, *::after { transition: none !important; }")
     result = page.evaluate("""async () => {
-      const r = await axe.run(document, { resultTypes: ['violations'] });
-      return r.violations.filter(v => v.impact === 'serious' || v.impact === 'critical')
+      const r = await axe.run(document, { resultTypes: ['violations'] });  // every rule, best-practice included
+      return r.violations
         .map(v => `${v.id} (${v.impact}): ${v.help} — ` +
                   v.nodes.slice(0, 4).map(n => `${n.target.join(' ')} ${n.any.map(a => a.message).join('; ')}`).join(' | '));
     }""")
@@ -62,14 +66,17 @@ def audit(page: Page) -> list[str]:
 
 
 @pytest.mark.parametrize("scheme", ["light", "dark"])
-def test_axe_finds_no_serious_violation_on_any_page(page, site_url, scheme):
+def test_axe_finds_no_violation_on_any_page(page, site_url, scheme):
     page.emulate_media(color_scheme=scheme)
     found = {}
-    for path in PAGES:
+    for path in EVERY_PAGE:
         page.goto(site_url + path)
         expected = "slate" if scheme == "dark" else "default"
         assert page.evaluate("document.body.getAttribute('data-md-color-scheme')") == expected
         settle_page(page)
+        if path == "practise/":  # with an exercise on the card
+            page.get_by_role("button", name="Practise another").click()
+            page.locator(".wb-practise-card [data-exercise-id][data-wb-ready]").wait_for()
         open_all_help(page)
         problems = audit(page)
         if path == "progress/":
@@ -102,11 +109,16 @@ def test_exercise_feedback_states_pass_the_audit(page, site_url):
 
 
 def has_visible_focus(page: Page) -> bool:
-    return page.evaluate("""() => {
+    """The focused element draws a ring, or (inside the code editor) the editor's frame does."""
+    return page.evaluate("""(editor) => {
+      const ring = (el) => {
+        const s = getComputedStyle(el);
+        return (s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) >= 1) || s.boxShadow !== 'none';
+      };
       const el = document.activeElement;
-      const s = getComputedStyle(el);
-      return (s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) >= 1) || s.boxShadow !== 'none';
-    }""")
+      const frame = el.closest(editor);
+      return ring(el) || (!!frame && ring(frame));
+    }""", role("editor"))
 
 
 def tab_to(page: Page, selector: str, limit: int = 150) -> None:
@@ -177,9 +189,11 @@ def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
     open_ready(page, site_url, 0)
     build = exercise(page, "0.5")
     # Until the editor is built the code is plain text in the tab order; Enter opens the editor.
-    build.locator(role("code")).focus()
+    # (The page may build the editor on its own once idle, before or just after the focus lands.)
+    build.locator(f'{role("code")}, .cm-content').first.focus()
     assert has_visible_focus(page)
-    page.keyboard.press("Enter")
+    if not build.locator(".cm-content:focus").count():
+        page.keyboard.press("Enter")
     build.locator(".cm-content:focus").wait_for()
     page.keyboard.press("Control+a")
     page.keyboard.press("Delete")

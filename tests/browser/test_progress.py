@@ -15,6 +15,7 @@ from playwright.sync_api import Page, expect
 
 from workbook import bank
 
+SOLVED_BAR = '[data-wb-chapter-progress] [data-wb-bar="solved"]'
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 
 
@@ -49,34 +50,35 @@ def solve_chapter_1(page: Page) -> None:
 
 def test_progress_survives_reload_and_instant_navigation(page, site_url):
     open_ready(page, site_url, 0)
-    summary = page.locator(".wb-chapter-progress")
-    expect(summary).to_contain_text(f"0 of {len(bank.chapter(0))} exercises solved")
+    summary = page.locator(SOLVED_BAR)
+    expect(summary).to_contain_text(f"0 of {len(bank.chapter(0))} exercises")
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     assert answer_trace(exercise(page, "0.3"), "a") == "incorrect"
-    expect(summary).to_contain_text(f"1 of {len(bank.chapter(0))} exercises solved")
+    expect(summary).to_contain_text(f"1 of {len(bank.chapter(0))} exercises")
 
     page.reload()
     wait_runtime(page, timeout=120_000)
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
     assert exercise(page, "0.1").locator(role("answer")).input_value() == "3"
     assert exercise(page, "0.3").locator(role("choice") + '[value="a"]').is_checked()
-    expect(page.locator(".wb-chapter-progress")).to_contain_text(f"1 of {len(bank.chapter(0))} exercises solved")
+    expect(page.locator(SOLVED_BAR)).to_contain_text(f"1 of {len(bank.chapter(0))} exercises")
 
     # Instant navigation: the same document all along.
     page.evaluate("window.__sameDocument = true")
     click_nav(page, "01-transforms")
-    expect(page.locator(".wb-chapter-progress")).to_contain_text(f"0 of {len(bank.chapter(1))} exercises solved")
+    expect(page.locator(SOLVED_BAR)).to_contain_text(f"0 of {len(bank.chapter(1))} exercises")
     wait_runtime(page, timeout=120_000)
     assert not nav_link(page, "01-transforms").locator(".wb-nav-done").count()
     solve_chapter_1(page)
-    expect(page.locator(".wb-chapter-progress")).to_contain_text(f"Chapter finished: {len(bank.chapter(1))} of {len(bank.chapter(1))}")
+    expect(page.locator(SOLVED_BAR)).to_contain_text(f"{len(bank.chapter(1))} of {len(bank.chapter(1))} exercises")
+    expect(page.locator("[data-wb-chapter-progress]")).to_contain_text("Chapter finished")
     expect(nav_link(page, "01-transforms").locator(".wb-nav-done")).to_have_count(1)
     expect(nav_link(page, "00-rotations-2d").locator(".wb-nav-done")).to_have_count(0)
 
     click_nav(page, "00-rotations-2d")
     exercise(page, "0.1").wait_for()
     page.wait_for_function("() => document.querySelector('[data-exercise-id=\"0.1\"]').dataset.state === 'correct'")
-    expect(page.locator(".wb-chapter-progress")).to_contain_text(f"1 of {len(bank.chapter(0))} exercises solved")
+    expect(page.locator(SOLVED_BAR)).to_contain_text(f"1 of {len(bank.chapter(0))} exercises")
     expect(nav_link(page, "01-transforms").locator(".wb-nav-done")).to_have_count(1)
 
     # The home page: the whole workbook, and one badge per chapter.
@@ -85,17 +87,18 @@ def test_progress_survives_reload_and_instant_navigation(page, site_url):
     total, chapters = len(bank.all_exercises()), len(bank.chapters())
     solved = 1 + len(bank.chapter(1))
     overall = page.locator("[data-wb-overall-progress]")
-    expect(overall).to_contain_text(f"{solved} of {total} exercises solved; ")
-    expect(overall).to_contain_text(f" mastered; 1 of {chapters} chapters finished")
-    badges = page.locator(".md-content .wb-badge")
+    expect(overall.locator('[data-wb-bar="solved"]')).to_contain_text(f"{solved} of {total} exercises")
+    expect(overall.locator('[data-wb-bar="mastered"]')).to_contain_text(" that draw new numbers")
+    expect(overall).to_contain_text(f"1 of {chapters} chapters finished")
+    badges = page.locator(".md-content [data-wb-badge]")
     expect(badges).to_have_count(chapters)
-    expect(badges.nth(0)).to_have_text(f"1/{len(bank.chapter(0))}")
-    expect(badges.nth(1)).to_have_text(f"✓ {len(bank.chapter(1))}/{len(bank.chapter(1))}")
+    expect(badges.nth(0)).to_have_text(f"1 of {len(bank.chapter(0))} solved")
+    expect(badges.nth(1)).to_have_text(f"✓ {len(bank.chapter(1))} of {len(bank.chapter(1))} solved")
     assert page.evaluate("window.__sameDocument === true"), "expected instant (same-document) navigations"
 
     # ...and after a full reload, from storage alone.
     page.reload()
-    expect(page.locator("[data-wb-overall-progress]")).to_contain_text(f"{solved} of {total} exercises solved")
+    expect(page.locator("[data-wb-overall-progress]")).to_contain_text(f"{solved} of {total} exercises")
     expect(nav_link(page, "01-transforms").locator(".wb-nav-done")).to_have_count(1)
 
 
@@ -137,7 +140,7 @@ def test_export_reset_import_restores_exactly(page, site_url):
     assert set(before) == {"0.1", "0.2", "0.3", "0.5", "0.6", "3.5"}
     assert before["0.2"]["revealed"] is True and before["0.5"]["code"] == ROTATE_OK
     table = page.locator("[data-wb-progress-panel] table")
-    expect(table.locator("tbody tr").nth(0)).to_contain_text(f"1 / {len(bank.chapter(0))}")
+    expect(table.locator("tbody tr").nth(0)).to_contain_text(f"1 of {len(bank.chapter(0))}")
 
     with page.expect_download() as download:
         page.get_by_role("button", name="Export progress").click()
@@ -157,22 +160,23 @@ def test_export_reset_import_restores_exactly(page, site_url):
     expect(page.locator("[data-wb-progress-message]")).to_contain_text("erased")
     assert records(page) == {}
     assert json.loads(stored(page))["exercises"] == {}
-    expect(table.locator("tbody tr").nth(0)).to_contain_text(f"0 / {len(bank.chapter(0))}")
+    expect(table.locator("tbody tr").nth(0)).to_contain_text(f"0 of {len(bank.chapter(0))}")
 
     text = import_file(page, json.dumps(exported))
     assert "6 added" in text
     assert records(page) == before
     assert json.loads(stored(page))["exercises"] == before
-    expect(table.locator("tbody tr").nth(0)).to_contain_text(f"1 / {len(bank.chapter(0))}")
+    expect(table.locator("tbody tr").nth(0)).to_contain_text(f"1 of {len(bank.chapter(0))}")
 
-    # Merging again: newest wins, the rest is kept, and the page says which.
+    # Merging again: field by field (CONTRACT.md), and the page says which records changed.
     newer = json.loads(json.dumps(exported))
     newer["exercises"]["0.6"].update(solved=True, last="1", updated=before["0.6"]["updated"] + 1000)
-    newer["exercises"]["0.1"].update(attempts=99, updated=before["0.1"]["updated"] - 1000)
+    newer["exercises"]["0.1"].update(attempts=99, last="0", updated=before["0.1"]["updated"] - 1000)
     text = import_file(page, json.dumps(newer))
-    assert "1 replaced" in text and "(0.6)" in text and "5 kept" in text
+    assert "2 combined" in text and "(0.1, 0.6)" in text and "4 already up to date" in text, text
     after = records(page)
-    assert after["0.6"]["solved"] is True and after["0.1"]["attempts"] == before["0.1"]["attempts"]
+    assert after["0.6"]["solved"] is True and after["0.6"]["last"] == "1"  # the newer record's answer
+    assert after["0.1"]["attempts"] == 99 and after["0.1"]["last"] == before["0.1"]["last"]  # counters: the larger
 
     # The chapter page shows the restored state.
     open_chapter(page, site_url, 0, wait_ready=False)
@@ -184,8 +188,9 @@ def test_export_reset_import_restores_exactly(page, site_url):
 
 
 def huge_file() -> str:
+    """Larger than any export this site can write (local storage holds at most 10 MB), so refused unread."""
     return json.dumps({"format": "robotics-math-workbook-progress", "version": 1,
-                       "exercises": {"0.1": {"last": "x" * 1500, "code": "#" * 1_200_000}}})
+                       "exercises": {"0.1": {"last": "x" * 1500, "code": "#" * 33_000_000}}})
 
 
 def test_malformed_or_hostile_import_is_refused_and_changes_nothing(page, site_url):
@@ -253,7 +258,7 @@ def test_full_storage_shows_a_message_and_keeps_the_answer(page, site_url):
       Storage.prototype.setItem = function () { throw new DOMException('quota', 'QuotaExceededError'); };
     }""")
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
-    expect(page.locator(".wb-notice")).to_contain_text("storage is full")
+    expect(page.locator(".wb-notice")).to_contain_text("storage for this site is full")
     assert records(page)["0.1"]["solved"] is True  # kept in memory: it can still be exported
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
 

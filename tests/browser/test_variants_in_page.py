@@ -89,11 +89,29 @@ def test_a_reload_keeps_the_variant_and_a_link_opens_it(page, site_url, context)
     assert link.endswith(f"variant={EX}-{n}#ex-0-1")
 
 
-def test_a_bad_variant_in_a_link_is_ignored(page, site_url):
-    page.goto(site_url + CHAPTERS[0] + "?variant=0.1-abc&variant=0.4-99999999")
+def test_a_bad_variant_in_a_link_says_so_in_the_page(page, site_url):
+    page.goto(site_url + CHAPTERS[0] + "?variant=0.1-abc&variant=9.9-12&variant=0.4-99999999")
     wait_runtime(page)
-    assert variant_of(exercise(page, EX)) == 0
+    el = exercise(page, EX)
+    assert variant_of(el) == 0
+    expect(el.locator(role("feedback"))).to_contain_text("“abc”")
+    expect(el.locator(role("feedback"))).to_contain_text("the workbook's numbers are shown")
+    expect(exercise(page, "0.4").locator(role("feedback"))).to_contain_text("“99999999”")
+    expect(page.locator('[data-wb-notice="variant-link"]')).to_contain_text("exercise “9.9”, which is not on this page")
     assert page.js_errors == []
+
+
+def test_new_numbers_are_named_in_words_and_the_contents_follow_the_title(page, site_url):
+    open_chapter(page, site_url, 0)
+    el = exercise(page, "0.4")
+    n = draw(el)
+    label = el.locator(role("variant-label")).inner_text()
+    assert str(n) not in label and "variant" not in label.lower(), label
+    title = page.locator("#ex-0-4-name").inner_text().strip()
+    toc = page.locator('.md-nav--secondary a[href$="#ex-0-4-title"]').first.inner_text().strip()
+    assert toc == title, (toc, title)
+    jump = page.locator('#wb-exercises a[data-wb-jump="0.4"]').inner_text()
+    assert title.split(" · ", 1)[1] in jump
 
 
 def record(page, ex_id: str) -> dict:

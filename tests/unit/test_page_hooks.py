@@ -14,15 +14,28 @@ import pytest
 from mkdocs.exceptions import PluginError
 
 THEME_HTML = (
+    '<div data-md-component="skip"><a href="#x" class="md-skip">Skip to content</a></div>'
+    '<header class="md-header md-header--shadow" data-md-component="header"><nav></nav></header>'
     '<div class="md-search" data-md-component="search" role="dialog"><input></div>'
     '<div class="md-progress" data-md-component="progress" role="progressbar"></div>'
 )
 
 
-def test_a11y_names_the_search_dialog_and_the_progress_bar():
+def test_a11y_names_the_search_dialog_and_moves_the_named_progress_bar_into_the_header():
     out = a11y.apply_fixes(THEME_HTML, "index.md")
     assert 'role="dialog" aria-label="Search"' in out
-    assert 'role="progressbar" aria-label="Loading the page"' in out
+    header = out[out.index("<header"):out.index("</header>")]
+    assert 'role="progressbar" aria-label="Loading the page"' in header
+    assert out.count('data-md-component="progress"') == 1
+
+
+def test_a11y_adds_skip_to_exercises_first_only_where_a_page_lists_exercises():
+    plain = a11y.add_skip_link(THEME_HTML, "related.md")
+    assert "Skip to exercises" not in plain
+    page = THEME_HTML + '<nav id="wb-exercises"></nav>'
+    out = a11y.add_skip_link(page, "chapters/00-rotations-2d.md")
+    assert out.index("Skip to exercises") < out.index("Skip to content")
+    assert 'href="#wb-exercises"' in out
 
 
 def test_a11y_fails_loudly_when_the_theme_markup_changed():
@@ -78,3 +91,15 @@ def test_csp_policy_lists_each_hash():
     assert "script-src 'self' 'wasm-unsafe-eval' 'sha256-AAA' 'sha256-BBB';" in text
     assert "default-src 'self'" in text and "object-src 'none'" in text
     assert "frame-ancestors" not in text  # ignored in a <meta>
+
+
+def test_search_text_reads_formulas_as_unicode_and_keeps_the_rest():
+    import search_text  # docs/hooks/search_text.py
+
+    text = r"Turn \(R(\theta)\) by \(\theta = \pi/6\): \[ \det R = \cos^2\theta + \sin^2\theta \] &amp; done"
+    out = search_text.math_as_text(text)
+    assert "\\" not in out
+    assert "R(θ)" in out and "π/6" in out and "det R" in out and "cos" in out
+    assert out.startswith("Turn ") and out.endswith("&amp; done")
+    # Text that comes out with markup characters is escaped again for the index's HTML.
+    assert search_text.math_as_text(r"\(a < b\)") == "a &lt; b"

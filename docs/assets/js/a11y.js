@@ -4,6 +4,10 @@
 // one that overflows gets tabindex=0 (the arrow keys then scroll it) and a name;
 // one that stops overflowing gives them back. Boxes are re-checked when the page
 // changes (instant navigation, a revealed derivation, a test run) or is resized.
+//
+// A box that scrolls is never cut silently: data-wb-overflow says on which side
+// more of it is hidden ("start", "end" or both), kept up to date as it scrolls,
+// and the stylesheet draws a fade and an arrow on that side.
 
 const BOXES = [
   [".md-typeset div.arithmatex, .md-typeset .katex-display", "Formula (scrolls sideways)"],
@@ -19,18 +23,36 @@ function scrolls(box) {
   return x || y;
 }
 
+/** Which sides of a box hide some of its content ("start end", "start", "end" or ""). */
+function hiddenSides(box) {
+  const left = box.scrollLeft > 1;
+  const right = box.scrollLeft + box.clientWidth < box.scrollWidth - 1;
+  return [left && "start", right && "end"].filter(Boolean).join(" ");
+}
+
+function showCue(box) {
+  const sides = hiddenSides(box);
+  if (box.dataset.wbOverflow !== sides) box.dataset.wbOverflow = sides;
+}
+
+const onScroll = (event) => showCue(event.currentTarget);
+
 function scan() {
   for (const [selector, label] of BOXES) {
     for (const box of document.querySelectorAll(selector)) {
       const mine = box.dataset.wbScrollable === "true";
       if (box.hidden || box.closest("[hidden]")) continue;
       if (scrolls(box)) {
+        showCue(box);
+        box.addEventListener("scroll", onScroll, { passive: true }); // the same listener is added once
         if (mine || box.hasAttribute("tabindex")) continue;
         Object.assign(box, { tabIndex: 0 });
         box.setAttribute("role", "group");
         box.setAttribute("aria-label", label);
         box.dataset.wbScrollable = "true";
-      } else if (mine) {
+      } else {
+        delete box.dataset.wbOverflow;
+        if (!mine) continue;
         box.removeAttribute("tabindex");
         box.removeAttribute("role");
         box.removeAttribute("aria-label");

@@ -1,5 +1,7 @@
 // The Build exercises' code editor: CodeMirror 6 with Python, 4-space indents,
 // Ctrl/Cmd-Enter to run, colours taken from the Material palette (light/dark).
+// Tab indents, so the way out (Escape, then Tab) is written under the editor,
+// for everyone to see, and the editor draws a focus ring (workbook.css).
 
 import { indentWithTab } from "@codemirror/commands";
 import { python } from "@codemirror/lang-python";
@@ -49,7 +51,11 @@ const paletteHighlight = HighlightStyle.define([
   { tag: t.invalid, color: "var(--md-code-hl-special-color)" },
 ]);
 
+let hints = 0;
+const HINT = "Tab indents. To leave the editor, press Esc, then Tab. Ctrl+Enter (⌘+Enter on a Mac) runs the tests.";
+
 export function createEditor(host, doc, { onChange, onRun }) {
+  const hint = Object.assign(document.createElement("p"), { className: "wb-editor-hint", id: `wb-editor-hint-${++hints}`, textContent: HINT });
   const view = new EditorView({
     parent: host,
     state: EditorState.create({
@@ -63,13 +69,14 @@ export function createEditor(host, doc, { onChange, onRun }) {
         EditorState.tabSize.of(4),
         paletteTheme,
         errorLine,
-        EditorView.contentAttributes.of({ "aria-label": "Python code editor. Tab indents; press Escape then Tab to leave.", tabindex: "0" }),
+        EditorView.contentAttributes.of({ "aria-label": "Python code editor", "aria-describedby": hint.id, tabindex: "0" }),
         EditorView.updateListener.of((update) => {
           if (update.docChanged) onChange(update.state.doc.toString());
         }),
       ],
     }),
   });
+  host.append(hint);
   return {
     view,
     getCode: () => view.state.doc.toString(),

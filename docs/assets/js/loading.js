@@ -7,7 +7,7 @@
 
 import { ATTR, BOOT_PHASE, OFFLINE, ROLE, RUNTIME, STATE, byRole, findRole } from "./contract.js";
 import { formatSize } from "./offline-ui.js";
-import { el } from "./progress-ui.js";
+import { el } from "./progress-view.js";
 
 const STEPS = [
   [BOOT_PHASE.download, "Download"],

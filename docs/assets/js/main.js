@@ -2,7 +2,7 @@
 // tab, and initialises every exercise on every page, including pages reached by
 // mkdocs-material's instant navigation.
 
-import { ATTR, ERROR, ROLE, RUNTIME, findRole, setRootState } from "./contract.js";
+import { ATTR, ERROR, ROLE, RUNTIME, STATE, findRole, setRootState } from "./contract.js";
 import { initExercise } from "./exercise.js";
 import { Progress } from "./progress.js";
 import { Runtime } from "./runtime.js";
@@ -12,6 +12,9 @@ import { initPractise } from "./practise.js";
 import { registerOffline } from "./offline.js";
 import { initScrollRegions } from "./a11y.js";
 import { initLoading } from "./loading.js";
+import { initJumps } from "./jump.js";
+import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
+import { strayVariantLinks } from "./variants.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
@@ -43,6 +46,7 @@ window.workbook = { runtime, progress };
 registerOffline(siteRoot, progress);
 initLoading();
 initScrollRegions();
+initJumps();
 
 const NO_WORKER = "This browser cannot run the Python grader (no Web Worker support).";
 const shared = {
@@ -81,32 +85,30 @@ async function renderMath(scope) {
 
 function initPage() {
   renderMath(document);
-  for (const el of exercises()) initExercise(el, shared);
+  for (const el of exercises()) {
+    try {
+      initExercise(el, shared);
+    } catch (err) {
+      // One exercise that cannot start must not stop the others.
+      el.setAttribute(ATTR.state, STATE.error);
+      findRole(el, ROLE.feedback)?.replaceChildren(Object.assign(document.createElement("p"), { textContent: `This exercise could not start: ${err.message}` }));
+    }
+  }
   initFigures(document, shared.runtime);
   if (!runtime) showRuntimeProblem(NO_WORKER);
   else if (runtime.failure) showRuntimeProblem(runtime.failure);
-  if (progress.notice) showNotice(progress.notice);
+  showProgressProblems(progress);
+  const stray = strayVariantLinks([...exercises()].map((el) => el.getAttribute(ATTR.exercise)));
+  if (stray.length && exercises().length) showNotice("variant-link", "This link", stray.join(" "));
   initProgressPage(progress, siteRoot);
   initPractise(shared, siteRoot);
-}
-
-function showNotice(text) {
-  const main = document.querySelector(".md-content__inner");
-  if (!main || main.querySelector(".wb-notice")) return;
-  const div = document.createElement("div");
-  div.className = "admonition warning wb-notice";
-  div.setAttribute("role", "alert");
-  div.innerHTML = '<p class="admonition-title">Progress</p>';
-  const p = document.createElement("p");
-  p.textContent = text;
-  div.append(p);
-  main.prepend(div);
 }
 
 document.addEventListener("workbook:runtime", (event) => {
   if (event.detail === RUNTIME.failed) showRuntimeProblem(runtime.failure);
 });
-document.addEventListener("workbook:storage-error", (event) => showNotice(event.detail));
+document.addEventListener("workbook:progress-problem", () => showProgressProblems(progress));
+document.addEventListener("workbook:progress-saved", () => ["full", "blocked"].forEach((kind) => clearNotice(`progress-${kind}`)));
 
 // mkdocs-material emits every page (the first and each instant navigation) on document$.
 if (window.document$ && typeof window.document$.subscribe === "function") {

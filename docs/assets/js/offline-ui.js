@@ -9,7 +9,7 @@
 //   script-written storage.
 
 import { ATTR, ROLE } from "./contract.js";
-import { el } from "./progress-ui.js";
+import { el } from "./progress-view.js";
 
 const MB = 1_000_000;
 

@@ -5,7 +5,7 @@
 
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
-import { dueLine, el, loadManifest } from "./progress-ui.js";
+import { dueLine, el, loadManifest } from "./progress-view.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
 
@@ -75,7 +75,7 @@ export async function initPractise(shared, siteRoot) {
     card.replaceChildren(el("p", { className: "wb-practise-loading", textContent: `Loading exercise ${id}…` }));
     try {
       const { node, chapter, href } = await exerciseFrom(manifest, id, siteRoot);
-      const heading = el("h2", { id: `${node.id}-title`, textContent: `${id} · ${manifest.titles?.[id] ?? ""}` });
+      const heading = el("h2", { id: `${node.id}-title` }, el("span", { id: `${node.id}-name`, textContent: `${id} · ${manifest.titles?.[id] ?? ""}` }));
       const from = el("p", { className: "wb-practise-from" }, "From ",
         el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }), ", with new numbers.");
       card.replaceChildren(heading, from, node);

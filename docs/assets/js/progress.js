@@ -4,30 +4,39 @@
 // attempts, last, code, draftOrder, updated} and, since version 2, the variant
 // on screen and what was done with each variant, with the review schedule:
 // {variant, done, clean, missed, revealedIn, box, due, reviewed} (review.js
-// says what they mean). Version-1 records are migrated on load and on import. A value that cannot be read is set
-// aside under a backup key, never silently wiped; a full quota is reported, not
-// swallowed (the record stays in memory and can still be exported).
+// says what they mean; progress-schema.js checks them and merges two copies).
 //
-// Export/import: a JSON file {format, version, exported, exercises}. An import is
-// checked field by field against FIELDS below (add a new record field there) and
-// merged per exercise, the newer `updated` winning; anything unexpected refuses
-// the whole file and changes nothing.
+// Never lost:
+// - Every write merges: it reads what storage holds now, merges this tab's
+//   records into it (progress-schema.js) and writes the result at once; then
+//   it does so again inside a Web Lock, so that tabs take turns repairing what
+//   a concurrent write dropped. Because a tab's view of localStorage may lag
+//   another tab's write (and where Web Locks are missing), every tab also
+//   merges each change another tab makes (the storage event) and writes back
+//   whatever it knows that the other did not: the copies converge.
+// - Storage that cannot be written (full, or blocked) never hides what it
+//   holds: the saved records are shown, the page says that new answers are
+//   not saved, and everything stays exportable from memory.
+// - A saved value that cannot be read (not JSON, a newer version, a field of
+//   the wrong type) is copied under a backup key before anything is written;
+//   if even that copy fails, nothing is written at all until it succeeds, and
+//   the page offers the unreadable text as a download.
 
-import { migrateRecord, TOP_BOX } from "./review.js";
+import { mergeData, mergeRecord, salvageRecord, same, canonical, isObject, EXPORT_FORMAT, SCHEMA_VERSION } from "./progress-schema.js";
+import { migrateRecord } from "./review.js";
 
-export const SCHEMA_VERSION = 2;
-export const EXPORT_FORMAT = "robotics-math-workbook-progress";
-export const MAX_IMPORT_BYTES = 1_000_000;
+export { MAX_IMPORT_BYTES, parseImport, SCHEMA_VERSION, EXPORT_FORMAT } from "./progress-schema.js";
 
-function storage() {
+const FULL = "Your browser's storage for this site is full, so new answers are not saved. Free some space (or export your progress to keep it), then answer again.";
+
+/** localStorage, or null where the browser refuses it (private mode, disabled). */
+function openStorage() {
   try {
     const s = window.localStorage;
-    const probe = "__workbook_probe__";
-    s.setItem(probe, "1");
-    s.removeItem(probe);
+    s.getItem("__workbook_probe__");
     return s;
   } catch {
-    return null; // private mode or storage disabled: keep progress in memory
+    return null;
   }
 }
 
@@ -37,138 +46,123 @@ const MIGRATIONS = {
   1: (data) => ({ ...data, version: 2, exercises: mapRecords(data.exercises, (r) => migrateRecord(r)) }),
 };
 
-// ---- The record schema (used to validate imports) ---------------------------
-const DAY_MS = 86_400_000;
-const isBool = (v) => typeof v === "boolean";
-const isKeyList = (v) => Array.isArray(v) && v.length <= 50 && v.every((k) => typeof k === "string" && k.length <= 200);
-// A vector or matrix answer is saved as its grid of entry texts, row by row.
-const isGrid = (v) => Array.isArray(v) && v.length >= 1 && v.length <= 12
-  && v.every((row) => Array.isArray(row) && row.length <= 12 && row.every((s) => typeof s === "string" && s.length <= 200));
-const MAX_VARIANT = 999_999;
-const isVariant = (v) => Number.isSafeInteger(v) && v >= 0 && v <= MAX_VARIANT;
-const isVariantList = (v) => Array.isArray(v) && v.length <= 100 && v.every(isVariant);
-const VARIANTS = [isVariantList, "a list of at most 100 variant numbers (0 to 999,999)"];
-const FIELDS = {
-  solved: [isBool, "true or false"],
-  revealed: [isBool, "true or false"],
-  solvedAfterReveal: [isBool, "true or false"],
-  hinted: [isBool, "true or false"],
-  attempts: [(v) => Number.isSafeInteger(v) && v >= 0 && v <= 1_000_000, "a whole number from 0 to 1,000,000"],
-  last: [(v) => (typeof v === "string" && v.length <= 2000) || Number.isFinite(v) || isKeyList(v) || isGrid(v), "a short answer (text, number, list of step keys or grid of entries)"],
-  draftOrder: [isKeyList, "a list of step keys"],
-  code: [(v) => typeof v === "string" && v.length <= 100_000, "text of at most 100,000 characters"],
-  updated: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS, "a time (milliseconds since 1970) not in the future"],
-  variant: [isVariant, "a variant number from 0 to 999,999"],
-  done: VARIANTS,
-  clean: VARIANTS,
-  missed: VARIANTS,
-  revealedIn: VARIANTS,
-  box: [(v) => Number.isInteger(v) && v >= 1 && v <= TOP_BOX, `a review box from 1 to ${TOP_BOX}`],
-  due: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + 366 * DAY_MS, "a time (milliseconds since 1970) within a year"],
-  reviewed: [(v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS, "a time (milliseconds since 1970) not in the future"],
-};
-const FORBIDDEN_KEYS = new Set(["__proto__", "constructor", "prototype"]);
-const isObject = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+class Unreadable extends Error {}
 
-class ImportError extends Error {}
-
-function checkKeys(obj, where) {
-  for (const key of Object.keys(obj)) {
-    if (FORBIDDEN_KEYS.has(key)) throw new ImportError(`${where} contains the forbidden key “${key}”.`);
-  }
-}
-
-function cleanRecord(id, raw) {
-  if (!isObject(raw)) throw new ImportError(`The entry for exercise ${id} is not an object.`);
-  checkKeys(raw, `The entry for exercise ${id}`);
-  const record = {};
-  for (const [field, value] of Object.entries(raw)) {
-    const rule = FIELDS[field];
-    if (!rule) throw new ImportError(`The entry for exercise ${id} has an unknown field “${field.slice(0, 40)}”.`);
-    if (!rule[0](value)) throw new ImportError(`In exercise ${id}, “${field}” must be ${rule[1]}.`);
-    record[field] = value;
-  }
-  return record;
-}
-
-/**
- * Check the text of a progress file. Returns {ok: true, exercises} with clean
- * records, or {ok: false, reason} saying what is wrong. `knownIds` (a Set) lists
- * the site's exercises; ids outside it are refused.
- */
-export function parseImport(text, knownIds) {
+/** Stored text -> {data, setAside}: the readable records, and what had to be left out. Throws Unreadable. */
+function parseStored(raw) {
+  let data;
   try {
-    if (typeof text !== "string") throw new ImportError("The file could not be read as text.");
-    if (text.length > MAX_IMPORT_BYTES) throw new ImportError(`The file is too large (over ${MAX_IMPORT_BYTES.toLocaleString("en")} characters); a progress file is much smaller.`);
-    let data;
-    try {
-      data = JSON.parse(text);
-    } catch {
-      throw new ImportError("The file is not valid JSON.");
-    }
-    if (!isObject(data)) throw new ImportError("The file does not hold a progress record (expected a JSON object).");
-    checkKeys(data, "The file");
-    if (data.format !== EXPORT_FORMAT) throw new ImportError("The file is not a Robotics Math Workbook progress export (its “format” is missing or different).");
-    if (!Number.isInteger(data.version) || data.version < 1) throw new ImportError("The file has no valid “version”.");
-    if (data.version > SCHEMA_VERSION) throw new ImportError(`The file was written by a newer version of the workbook (version ${data.version}); update this page first.`);
-    for (const key of Object.keys(data)) {
-      if (!["format", "version", "exported", "site", "exercises"].includes(key)) throw new ImportError(`The file has an unexpected entry “${key.slice(0, 40)}”.`);
-    }
-    if (!isObject(data.exercises)) throw new ImportError("The file has no “exercises” object.");
-    checkKeys(data.exercises, "The exercise list");
-    const exercises = {};
-    for (const [id, raw] of Object.entries(data.exercises)) {
-      if (knownIds && !knownIds.has(id)) throw new ImportError(`The file mentions exercise “${id.slice(0, 20)}”, which this workbook does not have.`);
-      const record = cleanRecord(id, raw);
-      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load
-    }
-    return { ok: true, exercises };
-  } catch (err) {
-    if (err instanceof ImportError) return { ok: false, reason: err.message };
-    return { ok: false, reason: "The file could not be checked." };
+    data = JSON.parse(raw);
+  } catch {
+    throw new Unreadable("it is not valid JSON");
   }
+  if (!isObject(data) || !isObject(data.exercises)) throw new Unreadable("it is not a progress record");
+  if ((data.version ?? 0) > SCHEMA_VERSION) throw new Unreadable(`it was written by a newer version of the workbook (${data.version})`);
+  while ((data.version ?? 0) < SCHEMA_VERSION) {
+    const step = MIGRATIONS[data.version ?? 0];
+    if (!step) throw new Unreadable(`no migration from version ${data.version}`);
+    data = step(data);
+  }
+  const exercises = {};
+  const setAside = {};
+  for (const [id, raw] of Object.entries(data.exercises)) {
+    const { record, bad } = salvageRecord(raw);
+    if (record) exercises[id] = record;
+    if (bad !== null) setAside[id] = bad;
+  }
+  const reset = Number.isFinite(data.reset) ? data.reset : 0;
+  return { data: { version: SCHEMA_VERSION, ...(reset ? { reset } : {}), exercises }, setAside };
 }
+
+const emptyData = () => ({ version: SCHEMA_VERSION, exercises: {} });
 
 export class Progress {
   constructor(siteRoot) {
     const scope = new URL(siteRoot).pathname.replace(/\/+$/, "") || "/";
     this.key = `robotics-workbook:${scope}:progress`;
-    this.store = storage();
+    this.store = openStorage();
     this.listeners = new Set();
+    this.problems = []; // {kind, message, download?}: what the page must tell the learner
+    this.pending = null; // a backup that must be written before anything else
+    this.queued = false;
     this.data = this.load();
-    // Another tab saved progress: take it over, so both tabs agree.
+    if (!this.store) return;
+    this.probe();
+    // Another tab saved: merge it in, and write back what this tab knows that it did not.
     window.addEventListener("storage", (event) => {
-      if (event.key !== this.key || event.storageArea !== this.store) return;
-      this.data = this.load();
-      this.notify(null, null);
+      if (event.key !== this.key || event.storageArea !== this.store || event.newValue === null) return;
+      let theirs;
+      try {
+        theirs = parseStored(event.newValue).data;
+      } catch {
+        return; // unreadable here (e.g. a newer version in another tab): leave it to that tab
+      }
+      this.absorb(theirs);
+      if (!same(theirs, this.data)) this.persist();
     });
   }
 
   load() {
-    const empty = { version: SCHEMA_VERSION, exercises: {} };
-    if (!this.store) return empty;
+    if (!this.store) {
+      this.report("unavailable", "This browser does not let the workbook store anything, so your answers last only until you close this page. Export your progress to keep it.");
+      return emptyData();
+    }
     const raw = this.store.getItem(this.key);
-    if (raw === null) return empty;
+    if (raw === null) return emptyData();
     try {
-      let data = JSON.parse(raw);
-      if (!data || typeof data !== "object" || typeof data.exercises !== "object") throw new Error("not a progress record");
-      while ((data.version ?? 0) < SCHEMA_VERSION) {
-        const step = MIGRATIONS[data.version ?? 0];
-        if (!step) throw new Error(`no migration from version ${data.version}`);
-        data = step(data);
+      const { data, setAside } = parseStored(raw);
+      const ids = Object.keys(setAside);
+      if (ids.length) {
+        const what = ids.slice(0, 6).map((id) => (isObject(setAside[id]) ? `${id} (${Object.keys(setAside[id]).join(", ")})` : id)).join("; ");
+        this.keepAside(raw, `Part of your saved progress could not be read (exercise ${what}); the rest is shown as usual.`);
       }
-      if (data.version > SCHEMA_VERSION) throw new Error(`written by a newer version (${data.version})`);
       return data;
     } catch (err) {
-      const backup = `${this.key}:backup:${Date.now()}`;
-      try {
-        this.store.setItem(backup, raw);
-      } catch {
-        /* nothing more we can keep */
-      }
-      this.notice = `Saved progress could not be read (${err.message}); it was kept aside as “${backup}” and a fresh record started.`;
-      return empty;
+      if (!(err instanceof Unreadable)) throw err;
+      this.keepAside(raw, `Your saved progress could not be read (${err.message}), so this page starts from an empty record.`);
+      return emptyData();
     }
+  }
+
+  /** Storage already full when the page opens: say so now, not after the first answer is lost. */
+  probe() {
+    const key = `${this.key}:probe`;
+    try {
+      this.store.setItem(key, "x".repeat(1024)); // about what one answer adds
+      this.store.removeItem(key);
+    } catch {
+      this.failed("full");
+    }
+  }
+
+  /** Copy `raw` under a backup key before anything is written; say where it is, or that nothing will be written until it is. */
+  keepAside(raw, why) {
+    const backup = `${this.key}:backup:${Date.now()}`;
+    this.pending = { key: backup, raw };
+    this.keptRaw = raw;
+    const download = { name: "robotics-math-workbook-unreadable-progress.json", text: raw };
+    if (this.writeBackup()) {
+      this.report("set-aside", `${why} The saved text is kept unchanged under “${backup}” in this browser's storage.`, download);
+    } else {
+      this.report("blocked", `${why} There is no room to keep a copy of it, so nothing will be saved until there is: download it, or free some space.`, download);
+    }
+  }
+
+  writeBackup() {
+    if (!this.pending) return true;
+    try {
+      this.store.setItem(this.pending.key, this.pending.raw);
+      this.pending = null;
+      return true;
+    } catch {
+      return false;
+    }
+  }
+
+  report(kind, message, download = null) {
+    const problem = { kind, message, download };
+    this.problems.push(problem);
+    document.dispatchEvent(new CustomEvent("workbook:progress-problem", { detail: problem }));
   }
 
   get(id) {
@@ -182,8 +176,9 @@ export class Progress {
 
   update(id, patch) {
     const next = { ...this.get(id), ...patch, updated: Date.now() };
+    for (const [k, v] of Object.entries(next)) if (v === undefined) delete next[k];
     this.data.exercises[id] = next;
-    this.save();
+    this.persist();
     this.notify(id, next);
     return next;
   }
@@ -192,17 +187,71 @@ export class Progress {
     for (const fn of this.listeners) fn(id, record);
   }
 
-  save() {
-    if (!this.store) return true;
-    try {
-      this.store.setItem(this.key, JSON.stringify(this.data));
-      this.saveError = null;
-      return true;
-    } catch (err) {
-      this.saveError = "Your browser's storage is full, so this progress is not saved yet. Free some space (or export your progress) to keep it.";
-      document.dispatchEvent(new CustomEvent("workbook:storage-error", { detail: this.saveError }));
-      return false;
+  /** Take in another copy of the store (another tab's); tell the page if anything changed. */
+  absorb(theirs) {
+    const merged = mergeData(theirs, this.data);
+    if (same(merged, this.data)) return false;
+    this.data = merged;
+    this.notify(null, null);
+    return true;
+  }
+
+  /**
+   * Write now (read, merge, write), then once more inside the Web Lock that
+   * every tab of this site shares: that second pass reads again and writes back
+   * anything a concurrent write from another tab dropped.
+   */
+  persist() {
+    this.flush();
+    if (!this.store || this.queued || !navigator.locks?.request) return;
+    this.queued = true;
+    const again = () => {
+      this.queued = false;
+      this.flush();
+    };
+    navigator.locks.request(this.key, again).catch(again);
+  }
+
+  /** Read what is stored, merge, write: the one place that writes the record. */
+  flush() {
+    if (!this.store) return false;
+    if (!this.writeBackup()) return this.failed("blocked");
+    const raw = this.store.getItem(this.key);
+    let stored = emptyData();
+    if (raw !== null && raw !== this.keptRaw) {
+      try {
+        stored = parseStored(raw).data;
+      } catch {
+        // Changed since load into something unreadable (another tab, a newer version): keep it first.
+        this.keepAside(raw, "Another copy of your saved progress could not be read.");
+        if (this.pending) return this.failed("blocked");
+      }
     }
+    this.absorb(stored);
+    if (raw !== null && same(stored, this.data)) return this.saved();
+    try {
+      this.store.setItem(this.key, canonical(this.data));
+      return this.saved();
+    } catch {
+      return this.failed("full");
+    }
+  }
+
+  saved() {
+    if (this.unsaved) {
+      this.unsaved = false;
+      this.problems = this.problems.filter((p) => p.kind !== "full" && p.kind !== "blocked");
+      document.dispatchEvent(new CustomEvent("workbook:progress-saved"));
+    }
+    return true;
+  }
+
+  failed(kind) {
+    if (!this.unsaved) { // said once; the next answer tries again
+      this.unsaved = true;
+      if (kind === "full") this.report("full", FULL);
+    }
+    return false;
   }
 
   /** The export file's content (an object; JSON.stringify it). */
@@ -211,35 +260,32 @@ export class Progress {
   }
 
   /**
-   * Merge clean records (from parseImport): per exercise, the record with the
-   * newer `updated` wins; a tie keeps the one here. Returns the ids added,
-   * replaced and kept.
+   * Merge clean records (from parseImport) into these, field by field
+   * (progress-schema.js). Returns the ids added, changed and already up to date.
    */
   merge(records) {
-    const summary = { added: [], replaced: [], kept: [] };
-    const next = { ...this.data.exercises };
+    const summary = { added: [], merged: [], unchanged: [] };
     for (const [id, record] of Object.entries(records)) {
-      const mine = next[id];
+      const mine = this.data.exercises[id];
+      const next = mergeRecord(mine, record);
       if (!mine) summary.added.push(id);
-      else if ((record.updated ?? 0) > (mine.updated ?? 0)) summary.replaced.push(id);
-      else {
-        summary.kept.push(id);
+      else if (same(mine, next)) {
+        summary.unchanged.push(id);
         continue;
-      }
-      next[id] = structuredClone(record);
+      } else summary.merged.push(id);
+      this.data.exercises[id] = next;
     }
-    if (summary.added.length || summary.replaced.length) {
-      this.data.exercises = next;
-      this.save();
+    if (summary.added.length || summary.merged.length) {
+      this.persist();
       this.notify(null, null);
     }
     return summary;
   }
 
-  /** Forget every exercise's record (answers, code, solved marks). */
+  /** Forget every exercise's record (answers, code, solved marks), in every tab. */
   reset() {
-    this.data.exercises = {};
-    this.save();
+    this.data = { version: SCHEMA_VERSION, reset: Date.now(), exercises: {} };
+    this.persist();
     this.notify(null, null);
   }
 

@@ -18,7 +18,7 @@ const MINUTE = 60_000;
 const DAY = 86_400_000;
 export const INTERVAL_MS = [0, 10 * MINUTE, DAY, 3 * DAY, 8 * DAY, 21 * DAY];
 export const TOP_BOX = INTERVAL_MS.length - 1;
-const KEEP = 100; // the most variants a list remembers
+export const KEEP = 100; // the most variants a list remembers
 
 const has = (list, v) => Array.isArray(list) && list.includes(v);
 const add = (list, v) => (has(list, v) ? list : [...(list || []), v].slice(-KEEP));

@@ -8,20 +8,43 @@
 import { ATTR, ROLE, STATE, findRole } from "./contract.js";
 import { decodeBase64 } from "./exercise.js";
 import { showMessage } from "./feedback.js";
+import { retitle } from "./jump.js";
 
 const PARAM = "variant";
 export const MAX_VARIANT = 999_999;
 
 const encode = (text) => btoa(Array.from(new TextEncoder().encode(text), (b) => String.fromCharCode(b)).join(""));
 
+const idOf = (value) => value.slice(0, Math.max(0, value.lastIndexOf("-")));
+const numberIn = (value) => {
+  const n = value.slice(value.lastIndexOf("-") + 1);
+  return /^\d{1,6}$/.test(n) ? Number(n) : null;
+};
+const quote = (text) => `“${text.length > 40 ? `${text.slice(0, 40)}…` : text}”`;
+
 /** The variant a link asks for, for exercise `id` (?variant=ID-N), or null. */
 export function linkedVariant(id, href = location.href) {
   for (const value of new URL(href).searchParams.getAll(PARAM)) {
-    const cut = value.lastIndexOf("-");
-    const n = value.slice(cut + 1);
-    if (value.slice(0, cut) === id && /^\d{1,6}$/.test(n)) return Number(n);
+    if (idOf(value) === id && numberIn(value) !== null) return numberIn(value);
   }
   return null;
+}
+
+/** A link's ?variant= for exercise `id` that names no set of numbers (the text), or null. */
+function badLinkedVariant(id, href = location.href) {
+  const values = new URL(href).searchParams.getAll(PARAM).filter((v) => idOf(v) === id);
+  return values.length && values.every((v) => numberIn(v) === null) ? values[0] : null;
+}
+
+/**
+ * What is wrong with the address's ?variant= values that name no exercise on
+ * this page (`ids`): sentences for the page, none if all is well.
+ */
+export function strayVariantLinks(ids, href = location.href) {
+  const here = new Set(ids);
+  return new URL(href).searchParams.getAll(PARAM).filter((v) => !here.has(idOf(v))).map((v) => (idOf(v)
+    ? `The address asks for new numbers for exercise ${quote(idOf(v))}, which is not on this page.`
+    : `The address's “variant=${quote(v).slice(1, -1)}” does not name an exercise: a link to new numbers reads like “variant=0.4-1234” (exercise 0.4, set 1234).`));
 }
 
 /** `href` with exercise `id` at variant `n` (0 drops it) and its anchor. */
@@ -52,17 +75,19 @@ function closePanel(ctx, role, buttonRole) {
 }
 
 function setTitle(ctx, title) {
-  const heading = document.getElementById(`${ctx.el.id}-title`);
-  const text = heading?.firstChild;
-  if (title && text?.nodeType === Node.TEXT_NODE) text.textContent = `${ctx.id} · ${title}`;
+  const name = document.getElementById(`${ctx.el.id}-name`); // the heading's text (docs/hooks/exercises.py)
+  if (!title || !name) return;
+  name.textContent = `${ctx.id} · ${title}`;
+  retitle(`${ctx.el.id}-title`, ctx.id, title); // the list of exercises and the table of contents
 }
 
 function showControls(ctx, n) {
   const { el, id } = ctx;
-  findRole(el, ROLE.originalVariant).hidden = n === 0;
-  findRole(el, ROLE.variantLabel).textContent = n === 0 ? "The workbook's numbers" : `New numbers: variant ${n}`;
+  // The Practise page always shows new numbers: it offers no way back to the book's.
+  findRole(el, ROLE.originalVariant).hidden = n === 0 || !ctx.remember;
+  findRole(el, ROLE.variantLabel).textContent = n === 0 ? "The workbook's numbers" : "New numbers, drawn for you";
   const link = findRole(el, ROLE.variantLink);
-  link.hidden = n === 0;
+  link.hidden = n === 0 || !ctx.remember;
   link.href = variantHref(id, n, el.id);
 }
 
@@ -104,7 +129,7 @@ export async function showVariant(ctx, n, { remember = true } = {}) {
   el.setAttribute(ATTR.state, record.done?.includes(v.variant) ? STATE.correct : STATE.unanswered);
   showControls(ctx, v.variant);
   if (remember) {
-    ctx.progress.update(ctx.id, { variant: v.variant, last: undefined });
+    ctx.progress.update(ctx.id, { variant: v.variant, last: null }); // null, not absent: an older copy must not bring the old answer back
     history.replaceState(history.state, "", variantHref(ctx.id, v.variant, el.id));
   }
   el.setAttribute(ATTR.variant, String(v.variant));
@@ -119,6 +144,7 @@ export async function initVariants(ctx, { start = null } = {}) {
   const { el } = ctx;
   ctx.variant = 0;
   const remember = start === null;
+  ctx.remember = remember;
   findRole(el, ROLE.newVariant).addEventListener("click", () => showVariant(ctx, freshVariant(ctx.variant), { remember }));
   findRole(el, ROLE.originalVariant).addEventListener("click", () => showVariant(ctx, 0, { remember }));
   findRole(el, ROLE.variantLink).addEventListener("click", (event) => {
@@ -130,10 +156,17 @@ export async function initVariants(ctx, { start = null } = {}) {
     );
   });
   const wanted = start ?? linkedVariant(ctx.id) ?? ctx.progress.get(ctx.id).variant ?? 0;
+  const bad = remember ? badLinkedVariant(ctx.id) : null;
   showControls(ctx, 0);
+  let shown = true;
   if (wanted) {
-    findRole(el, ROLE.variantLabel).textContent = `Drawing variant ${wanted}…`;
-    return showVariant(ctx, wanted, { remember });
+    findRole(el, ROLE.variantLabel).textContent = "Drawing new numbers…";
+    shown = await showVariant(ctx, wanted, { remember });
   }
-  return true;
+  if (bad !== null) {
+    const now = ctx.variant ? "the numbers you had here last time are shown" : "the workbook's numbers are shown";
+    showMessage(el, `This page's address asks for numbers ${quote(bad.slice(bad.lastIndexOf("-") + 1))} for this exercise, `
+      + `but a set of numbers is a whole number from 1 to 999,999 (as in “variant=${ctx.id}-1234”): ${now}.`);
+  }
+  return shown;
 }
