@@ -122,27 +122,3 @@ def _exists(path: str) -> bool:
             return True
     except OSError:
         return False
-
-
-def needed_by(code: str) -> bool:
-    """Whether running ``code`` may need the rest: it imports a module of the rest,
-    or one that is neither built in nor in the core (a package such as NumPy,
-    whose loader uses the rest)."""
-    found = finder()
-    if found is None or found.mounted:
-        return False
-    try:
-        import ast
-
-        tree = ast.parse(code)
-    except (SyntaxError, ValueError):
-        return False
-    tops = set()
-    for node in ast.walk(tree):
-        if isinstance(node, ast.Import):
-            tops.update(alias.name.split(".")[0] for alias in node.names)
-        elif isinstance(node, ast.ImportFrom) and node.module and not node.level:
-            tops.add(node.module.split(".")[0])
-    rest_tops = {name.split(".")[0] for name in found.names}
-    return any(top in rest_tops or (top not in sys.builtin_module_names and top not in sys.modules
-                                    and importlib.machinery.PathFinder.find_spec(top) is None) for top in tops)

@@ -62,11 +62,3 @@ def test_a_failed_fetch_is_an_import_error_with_a_reason(rest):
         import wbtest_rest_mod  # noqa: F401
     assert not finder.mounted
 
-
-def test_needed_by_reads_the_imports(rest, monkeypatch):
-    finder, _ = rest
-    monkeypatch.setattr(lazy_stdlib, "finder", lambda: finder)
-    assert lazy_stdlib.needed_by("import wbtest_rest_pkg.sub\n")
-    assert lazy_stdlib.needed_by("import numpy_not_installed_here\n")
-    assert not lazy_stdlib.needed_by("import math\nfrom json import dumps\n")
-    assert not lazy_stdlib.needed_by("def f(:\n")

@@ -2,6 +2,10 @@
 //
 //   const { py, from, why, stages } = await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
 //
+// Both workers start here: the grader (worker.js: the core standard library and a
+// snapshot) and the sandbox for learners' code (sandbox.js: its own standard
+// library and lock file, no snapshot, Python's output silenced: `lockFileURL`,
+// `quiet`).
 // - `stdLibURL`: the standard library zip to start with (the grader: the small
 //   core of scripts/split_stdlib.py, which holds the grading package too).
 // - `snapshotURL`: a memory snapshot made at build time (scripts/build_snapshot.mjs)
@@ -243,7 +247,8 @@ function patchWasm(url, meter) {
 }
 
 // ---- The start ----------------------------------------------------------------------------
-export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null }) {
+export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null, lockFileURL = null,
+  quiet = false }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
   const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "pyodide-lock.json", fileIn(indexURL, stdLibURL)];
   if (snapshotURL) files.push(fileIn(indexURL, snapshotURL));
@@ -258,7 +263,8 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
   mark("pyodide.js");
   // Pyodide reads this option after loading pyodide.asm.js: the moment to decide
   // (not enumerable, so that loadPyodide's copy of its options does not read it earlier).
-  const options = { indexURL, stdLibURL };
+  const plain = { indexURL, stdLibURL, ...(lockFileURL && { lockFileURL }), ...(quiet && { stdout: () => {}, stderr: () => {} }) };
+  const options = { ...plain };
   let skipped = !download;
   Object.defineProperty(options, "_loadSnapshot", {
     enumerable: false,
@@ -282,7 +288,7 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
   } catch (err) {
     if (skipped) throw err;
     unpatch();
-    const py = await loadPyodide({ indexURL, stdLibURL });
+    const py = await loadPyodide(plain);
     return { py, from: "boot", why: String((err && err.message) || err), stages };
   }
 }

@@ -19,7 +19,7 @@
 // {type: "progress"}, {type: "started"} when the code starts (the page's time
 // limit starts then) and {type: "reply", reply}: {ok: true, value: REPORT,
 // recycle} or {ok: false, error}.
-/* global loadPyodide, importScripts */
+import { startPyodide } from "./boot.js";
 import { ERROR } from "./contract.js";
 
 const post = self.postMessage.bind(self);
@@ -80,8 +80,7 @@ const mark = (name) => (stages[name] = Math.round(performance.now() - started));
 
 const ready = (async () => {
   const lock = networkFetch(LOCK).then((r) => r.json());
-  importScripts(indexURL + "pyodide.js");
-  const py = await loadPyodide({ indexURL, stdLibURL: STDLIB, lockFileURL: LOCK, stdout: () => {}, stderr: () => {} });
+  const { py } = await startPyodide({ indexURL, stdLibURL: STDLIB, lockFileURL: LOCK, quiet: true });
   mark("booted");
   const runner = py.pyimport("workbook_sandbox.runner");
   const allowed = new Set(Object.values((await lock).packages).map((p) => new URL(p.file_name, indexURL).href));

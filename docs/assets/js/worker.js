@@ -99,7 +99,7 @@ self.onmessage = (event) => {
     } catch (err) {
       const text = String((err && err.message) || err);
       reply = /MemoryError|out of memory/i.test(text)
-        ? failure(ERROR.memory, "Your code ran out of memory. The Python runtime was restarted; your code is kept.")
+        ? failure(ERROR.memory, "The grader ran out of memory. The Python runtime was restarted.")
         : failure(ERROR.runtime, "The Python runtime failed: " + text.split("\n").slice(-2).join(" "));
     }
     self.postMessage({ id: msg.id, type: "reply", reply });
