@@ -1,6 +1,8 @@
-"""The exercise bank: one module per chapter, ``chN_topic.py``.
+"""The exercise bank: the modules ``chN_*.py`` hold chapter N's exercises.
 
-Each chapter module defines ``EXERCISES``, a tuple of exercises in page order.
+A chapter may span several modules (``ch6_arm_kinematics.py`` for the derivations,
+``ch6_code.py`` for its Build and Debug exercises, say). Each defines ``EXERCISES``;
+the chapter is their union in the order of the ids (6.2 before 6.10).
 Chapters are imported lazily, so grading exercise 4.2 imports chapter 4 only.
 """
 
@@ -14,26 +16,26 @@ from ..kinds.base import Exercise
 
 
 @cache
-def _chapter_modules() -> dict[int, str]:
-    found = {}
+def _chapter_modules() -> dict[int, list[str]]:
+    found: dict[int, list[str]] = {}
     for info in pkgutil.iter_modules(__path__):
         head, _, _ = info.name.partition("_")
         if head.startswith("ch") and head[2:].isdigit():
-            found[int(head[2:])] = f"{__name__}.{info.name}"
-    return dict(sorted(found.items()))
+            found.setdefault(int(head[2:]), []).append(f"{__name__}.{info.name}")
+    return {n: sorted(names) for n, names in sorted(found.items())}
 
 
 @cache
 def chapter(n: int) -> tuple[Exercise, ...]:
     """The exercises of chapter ``n``, in page order."""
-    name = _chapter_modules().get(n)
-    if name is None:
+    names = _chapter_modules().get(n)
+    if names is None:
         raise KeyError(f"no chapter {n}")
-    exercises = importlib.import_module(name).EXERCISES
+    exercises = [ex for name in names for ex in importlib.import_module(name).EXERCISES]
     for ex in exercises:
         if ex.id.split(".")[0] != str(n):
             raise ValueError(f"exercise {ex.id} sits in chapter {n}'s module")
-    return exercises
+    return tuple(sorted(exercises, key=lambda ex: int(ex.id.split(".")[1])))
 
 
 def grid(matrix) -> tuple[tuple[float, ...], ...]:
