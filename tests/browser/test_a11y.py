@@ -45,6 +45,16 @@ def settle_page(page: Page) -> None:
     }""", timeout=SLOW)
 
 
+def wait_practise_card(page: Page) -> None:
+    """The Practise card's exercise started and showing its new numbers: the prompt is dimmed
+    (aria-busy) while they are drawn, and a Derive exercise arrives with the chapter's variant 0."""
+    page.wait_for_function("""() => {
+      const ex = document.querySelector('.wb-practise-card [data-exercise-id]');
+      return !!ex && !!ex.dataset.wbReady && !ex.hasAttribute('aria-busy') &&
+        (ex.dataset.kind !== 'derive' || ex.dataset.variant !== '0');
+    }""", timeout=SLOW)
+
+
 def open_all_help(page: Page) -> None:
     for button in page.locator((role("hint") + ', ' + role("reveal"))).all():
         button.click()
@@ -76,7 +86,7 @@ def test_axe_finds_no_violation_on_any_page(page, site_url, scheme):
         settle_page(page)
         if path == "practise/":  # with an exercise on the card
             page.get_by_role("button", name="Practise another").click()
-            page.locator(".wb-practise-card [data-exercise-id][data-wb-ready]").wait_for()
+            wait_practise_card(page)
         open_all_help(page)
         problems = audit(page)
         if path == "progress/":

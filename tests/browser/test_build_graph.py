@@ -46,7 +46,8 @@ CASES = {
     "scripts/build_snapshot.mjs": ["build/snapshot.stamp", *BUNDLE],
     "scripts/split_stdlib.py": ["build/stdlib.stamp", "build/snapshot.stamp", *BUNDLE],
     "scripts/stdlib_probe.mjs": ["build/stdlib.stamp", "build/snapshot.stamp", *BUNDLE],
-    "scripts/build_wheel.py": ["build/wheel.stamp", *BUNDLE],
+    # the wheel writes the lock file that sandbox_files.py (in the stdlib step) reads
+    "scripts/build_wheel.py": PACKAGE,
     "scripts/vendor.py": RUNTIME,
     "scripts/pyodide-0.27.7.sha256": RUNTIME,
     "package-lock.json": ["node_modules/.installed", *RUNTIME],

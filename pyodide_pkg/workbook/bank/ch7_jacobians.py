@@ -167,7 +167,7 @@ def _unit_jacobian(p):
         "values": {
             "deg1": "" if t1 == 0 else "°", "t12": fmt(t1 + t2),
             "s1": fmt(s1), "c1": fmt(c1), "s12": fmt(s12), "c12": fmt(c12),
-            "a11": f"-{fmt(s1)}" if s1 >= 0 else fmt(-s1), "b11": signed(-s12), "b21": signed(c12),
+            "a11": fmt(-s1), "b11": signed(-s12), "b21": signed(c12),
             "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
             "x": fmt(x), "y": fmt(y), "link2": _link2_direction(t1 + t2),
             "det": fmt(jacobian_det(1, 1, r1, r2)),
