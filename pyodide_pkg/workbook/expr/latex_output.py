@@ -125,7 +125,7 @@ def _latex_raw(node: tuple) -> str:
             return rf"{left} \cdot {right}"
         if _prec(b) == 3:
             return rf"{left} \cdot {_paren(right)}"
-        if b[0] == "num" or (b[0] == "unit" and b[1][0] == "num"):
+        if right[:1].isdigit() or right[:1] == ".":  # 2, 2^{2}, 3 m: two numbers side by side read as one
             return rf"{left} \cdot {right}"
         if right.startswith("\\") and not right.startswith(r"\left"):
             return _join(left, right)
