@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from workbook_sandbox.runner import MESSAGE_CAP, STDOUT_CAP, TRACEBACK_CAP
@@ -89,10 +89,25 @@ class Report:
     cases: list[dict[str, Any]]
     stdout: str
     stopped: str | None
+    figure: list[dict[str, Any]] = field(default_factory=list)  # the run figure's own runs (closed-loop drivers)
 
 
-def read_report(raw: Any, count: int) -> Report:
-    """The sandbox's report (a dict, or its JSON text) checked and cut to size; ``count`` cases at most.
+def _case(case: Any) -> dict[str, Any]:
+    """One case of a report: its value, or its error (and what a closed-loop driver had so far)."""
+    case = case if isinstance(case, dict) else {}
+    if "error" in case:
+        out = {"error": _error(case["error"])}
+        if "partial" in case:
+            out["partial"] = _value(case["partial"])
+        return out
+    if "value" in case:
+        return {"value": _value(case["value"])}
+    return {"skipped": True}
+
+
+def read_report(raw: Any, count: int, figure_count: int = 0) -> Report:
+    """The sandbox's report (a dict, or its JSON text) checked and cut to size; ``count`` cases at most
+    (and ``figure_count`` runs of a run figure).
     Raises GradingError("bad-request") when it is not a report at all."""
     if isinstance(raw, str):
         if len(raw) > REPORT_CAP:
@@ -104,21 +119,15 @@ def read_report(raw: Any, count: int) -> Report:
     if not isinstance(raw, dict) or not isinstance(raw.get("cases", []), list):
         raise GradingError("bad-request", UNREADABLE)
     load = raw.get("load")
-    cases = []
-    for case in raw.get("cases", [])[:count]:
-        case = case if isinstance(case, dict) else {}
-        if "error" in case:
-            cases.append({"error": _error(case["error"])})
-        elif "value" in case:
-            cases.append({"value": _value(case["value"])})
-        else:
-            cases.append({"skipped": True})
+    cases = [_case(case) for case in raw.get("cases", [])[:count]]
+    figure = raw.get("figure") if isinstance(raw.get("figure"), list) else []
     stdout = _text(raw.get("stdout"), STDOUT_CAP)
     if raw.get("cut") is True or len(raw.get("stdout") or "") > STDOUT_CAP:
         stdout += "\n… (output cut)"
     stopped = raw.get("stopped") if raw.get("stopped") in ("interrupt", "memory") else None
     return Report({**_error(load), "phase": "syntax" if load.get("phase") == "syntax" else "load"}
-                  if isinstance(load, dict) else None, raw.get("missing") is True, cases, stdout, stopped)
+                  if isinstance(load, dict) else None, raw.get("missing") is True, cases, stdout, stopped,
+                  [_case(case) for case in figure[:figure_count]])
 
 
 # ---- Comparing ---------------------------------------------------------------------------

@@ -35,6 +35,7 @@ from workbook_sandbox.values import show
 
 from ..build_judge import Case, Report, compare, hidden_summary, read_report
 from ..contract import ROLE, TAG
+from ..figures import runs
 from ..verdict import Verdict
 from .base import Exercise, Page, escape, role_attr
 
@@ -46,7 +47,9 @@ class Build(Exercise):
     """``examples`` are the visible cases (argument tuples, usually the workbook's
     own numbers); ``random_args`` draws the hidden cases from a seeded RNG;
     ``harness`` names the driver that exercises the function on a case
-    (``workbook_sandbox.harness``: ``"call"`` calls it once).
+    (``workbook_sandbox.harness``: ``"call"`` calls it once). ``run_figure`` names
+    the picture drawn after a run, the learner's function beside the reference
+    (``workbook.figures.runs``); its frames go in the verdict's ``data["figure"]``.
     """
 
     function: str = ""
@@ -61,6 +64,7 @@ class Build(Exercise):
     abs_tol: float = 1e-9
     time_limit: float = 5.0
     harness: str = "call"
+    run_figure: str = ""
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
     reveal_label: ClassVar[str] = "Show solution"
@@ -79,7 +83,11 @@ class Build(Exercise):
 
     def job(self) -> str:
         """What the sandbox needs to run the learner's code (JSON): the function's name, the driver, the cases."""
-        return json.dumps({"function": self.function, "harness": self.harness, "cases": self.arguments()})
+        job = {"function": self.function, "harness": self.harness, "cases": self.arguments()}
+        figure = runs.trace_job(self)
+        if figure is not None:
+            job["figure"] = figure
+        return json.dumps(job)
 
     def cases(self, arguments: list[list]) -> list[Case]:
         """The grader's cases: how each is shown and what the reference gives (run through the same driver)."""
@@ -94,8 +102,13 @@ class Build(Exercise):
     def judge(self, report: Any) -> Verdict:
         """The verdict on a run, from the sandbox's report (JSON text or a dict)."""
         arguments = self.arguments()
-        read = read_report(report, len(arguments))
-        return _verdict(self, read, self.cases(arguments))
+        figure = runs.trace_job(self)
+        read = read_report(report, len(arguments), len(figure["cases"]) if figure else 0)
+        cases = self.cases(arguments)
+        verdict = _verdict(self, read, cases)
+        if self.run_figure and read.load is None and not read.missing:
+            verdict.data["figure"] = runs.draw_run(self, read, cases, arguments)
+        return verdict
 
     def check(self, code: object) -> Verdict:
         """The whole run in this process: job, the learner's code, judgement."""
@@ -118,7 +131,28 @@ class Build(Exercise):
             f'<button type="button" class="md-button" {role_attr(ROLE.reset)}>Reset to starter</button></div>'
             f'<div class="wb-tests" {role_attr(ROLE.tests)} hidden></div>'
             f'<pre class="wb-stdout" {role_attr(ROLE.stdout)} hidden></pre>'
-            f"</div>"
+            f"{self._run_figure(base)}</div>"
+        )
+
+    def _run_figure(self, base: str) -> str:
+        """The run figure's place, hidden until a run draws it (``docs/assets/js/run-figure.js``)."""
+        if not self.run_figure:
+            return ""
+        return (
+            f'<figure class="wb-figure wb-run-figure" {role_attr(ROLE.run_figure)} data-figure="{escape(self.run_figure)}" '
+            f'aria-labelledby="{base}-run-title" hidden>'
+            f'<figcaption class="wb-run-title" id="{base}-run-title">Your function, drawn</figcaption>'
+            f'<p class="wb-run-readout" {role_attr(ROLE.readout)} aria-live="polite"></p>'
+            f'<div class="wb-fig-canvas" {role_attr(ROLE.run_canvas)} role="img" aria-describedby="{base}-run-desc"></div>'
+            f'<p class="wb-run-description" id="{base}-run-desc" {role_attr(ROLE.run_description)}></p>'
+            f'<div class="wb-run-steps">'
+            f'<button type="button" class="md-button" {role_attr(ROLE.run_previous)}>Previous case</button>'
+            f'<label class="wb-run-case"><span id="{base}-run-case">Case</span> '
+            f'<input type="range" min="0" max="0" step="1" value="0" {role_attr(ROLE.run_case)} '
+            f'aria-labelledby="{base}-run-case"></label>'
+            f'<button type="button" class="md-button" {role_attr(ROLE.run_next)}>Next case</button>'
+            f'<output class="wb-run-case-label" {role_attr(ROLE.run_case_label)}></output></div>'
+            f"</figure>"
         )
 
 

@@ -1,0 +1,51 @@
+"""What every run figure shares: the key (yours and the reference), a message on the picture,
+and points kept inside it (a learner's function may return anything)."""
+
+from __future__ import annotations
+
+import math
+from html import escape
+
+from ..svg import Canvas
+
+YOURS = "wb-fig-a"  # the learner's function: solid, thick
+REFERENCE = "wb-fig-c wb-fig-dash"  # the reference: dashed
+INPUT = "wb-fig-muted"
+
+
+def inside(c: Canvas, p: tuple[float, float], margin: float = 0.0) -> tuple[float, float]:
+    """``p`` moved onto the picture's edge when it lies beyond it (its drawing says so with a message).
+
+    >>> inside(Canvas(100, 100, (-1, 1), (-1, 1)), (5.0, -0.5))
+    (1.0, -0.5)
+    """
+    (x0, x1), (y0, y1) = c.xrange, c.yrange
+    return (min(max(p[0], x0 + margin), x1 - margin), min(max(p[1], y0 + margin), y1 - margin))
+
+
+def off_picture(c: Canvas, p: tuple[float, float]) -> bool:
+    (x0, x1), (y0, y1) = c.xrange, c.yrange
+    return not (x0 <= p[0] <= x1 and y0 <= p[1] <= y1)
+
+
+def finite(*values: float) -> bool:
+    return all(isinstance(v, (int, float)) and math.isfinite(v) for v in values)
+
+
+def key(c: Canvas, yours: str = "yours", reference: str = "reference") -> None:
+    """The two line styles, named, in the top-left corner."""
+    x, y = c.left + 14, c.top + 16
+    c.add(f'<line x1="{x}" y1="{y}" x2="{x + 22}" y2="{y}" class="{YOURS} wb-fig-thick"/>')
+    c.add(f'<text x="{x + 28}" y="{y + 4}" class="wb-fig-label wb-fig-small {YOURS}">{yours}</text>')
+    y += 18
+    c.add(f'<line x1="{x}" y1="{y}" x2="{x + 22}" y2="{y}" class="{REFERENCE}"/>')
+    c.add(f'<text x="{x + 28}" y="{y + 4}" class="wb-fig-label wb-fig-small wb-fig-c">{reference}</text>')
+    c.taken.append((x - 2, c.top + 4, x + 120, y + 8))
+
+
+def message(c: Canvas, text: str) -> None:
+    """What went wrong, along the bottom of the picture (cut to fit)."""
+    if text:
+        short = text if len(text) <= 60 else text[:59] + "…"
+        c.add(f'<text x="{c.left + c.width / 2:.1f}" y="{c.top + c.height - 8:.1f}" text-anchor="middle" '
+              f'class="wb-fig-label wb-fig-small wb-fig-bad">{escape(short)}</text>')
