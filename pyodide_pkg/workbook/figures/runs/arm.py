@@ -7,7 +7,7 @@ import math
 from ...number_format import compact
 from ..svg import Canvas
 from . import Drawn, RunFigure
-from .marks import INPUT, REFERENCE, YOURS, finite, inside, key, message, off_picture
+from .marks import INPUT, REFERENCE, YOURS, finite, inside, key, message, off_picture, with_message
 
 
 def frame(d: Drawn) -> tuple[str, str]:
@@ -35,15 +35,14 @@ def frame(d: Drawn) -> tuple[str, str]:
         c.dot(shown, 5, f"{YOURS} wb-fig-solid")
         c.label(shown, "your tip", f"wb-fig-label wb-fig-small {YOURS}", toward=(shown[0] - elbow[0], shown[1] - elbow[1]))
     c.label(tip, "true tip", "wb-fig-label wb-fig-small wb-fig-c", toward=(tip[0] - elbow[0], tip[1] - elbow[1]))
-    message(c, said)
+    below = message(c, said)
     pose = (f"links {compact(L1)} and {compact(L2)} at θ1 = {compact(math.degrees(t1))}°, "
             f"θ2 = {compact(math.degrees(t2))}°")
     where = (f"your function puts the tip at ({compact(got[0])}, {compact(got[1])})" if got is not None
              else "your function gave no tip to draw")
     description = f"{d.label}: {pose}; the true tip is at ({compact(tip[0])}, {compact(tip[1])}); {where}."
-    if said:
-        description += f" {said[0].upper()}{said[1:]}" + ("" if said.endswith(".") else ".")
-    return c.svg(f"forward_kinematics_2link, {d.label}: the arm, its true tip and yours"), description
+    description = with_message(description, said)
+    return c.svg(f"forward_kinematics_2link, {d.label}: the arm, its true tip and yours", extra_height=below), description
 
 
 RUN = RunFigure(name="arm", title="Your forward kinematics, drawn", unit="m", frame=frame, points=True)

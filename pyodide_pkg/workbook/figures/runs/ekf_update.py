@@ -9,7 +9,7 @@ import math
 from ...number_format import compact
 from ..svg import Canvas
 from . import Drawn, RunFigure
-from .marks import INPUT, REFERENCE, YOURS, finite, key, message
+from .marks import INPUT, REFERENCE, YOURS, finite, key, message, with_message
 
 ROWS = 4
 
@@ -41,7 +41,7 @@ def frame(d: Drawn) -> tuple[str, str]:
     spread = [x - math.sqrt(P), x + math.sqrt(P), z - math.sqrt(R), z + math.sqrt(R), want[0]]
     lo, hi = min(spread), max(spread)
     pad = max(0.5, 0.25 * (hi - lo))
-    c = Canvas(440, 250, (lo - pad, hi + pad), (0.3, ROWS + 1.4), pad=(12, 12, 12, 40), aspect=False)
+    c = Canvas(440, 250, (lo - pad, hi + pad), (0.3, ROWS + 1.4), pad=(12, 12, 12, 26), aspect=False)
     step = 10 ** math.floor(math.log10(max(hi - lo + 2 * pad, 1e-9) / 2))
     k = math.ceil((lo - pad) / step)
     while k * step <= hi + pad:
@@ -56,15 +56,14 @@ def frame(d: Drawn) -> tuple[str, str]:
     if got is not None:
         wrong = _bar(c, 3, got[0], got[1], YOURS, "after (yours)")
         said = said or (f"your estimate has {wrong}" if wrong else "")
-    message(c, said)
+    below = message(c, said)
     yours = (f"yours gives x = {compact(got[0])} with variance {compact(got[1])}" if got is not None
              else "your function gave no estimate to draw")
     description = (f"{d.label}: before the update x = {compact(x)} with variance {compact(P)}; the measurement "
                    f"z = {compact(z)} with variance {compact(R)}; the reference gives x = {compact(want[0])} with "
                    f"variance {compact(want[1])}; {yours}.")
-    if said:
-        description += f" {said[0].upper()}{said[1:]}" + ("" if said.endswith(".") else ".")
-    return c.svg(f"ekf_update, {d.label}: the estimate before and after, yours and the reference"), description
+    description = with_message(description, said)
+    return c.svg(f"ekf_update, {d.label}: the estimate before and after, yours and the reference", extra_height=below), description
 
 
 RUN = RunFigure(name="ekf-update", title="Your Kalman update, drawn", unit="", frame=frame)

@@ -43,9 +43,42 @@ def key(c: Canvas, yours: str = "yours", reference: str = "reference") -> None:
     c.taken.append((x - 2, c.top + 4, x + 120, y + 8))
 
 
-def message(c: Canvas, text: str) -> None:
-    """What went wrong, along the bottom of the picture (cut to fit)."""
-    if text:
-        short = text if len(text) <= 60 else text[:59] + "…"
-        c.add(f'<text x="{c.left + c.width / 2:.1f}" y="{c.top + c.height - 8:.1f}" text-anchor="middle" '
-              f'class="wb-fig-label wb-fig-small wb-fig-bad">{escape(short)}</text>')
+def lines(text: str, width: int = 62, most: int = 2) -> list[str]:
+    """``text`` in lines of at most ``width`` characters, broken between words; the last cut short.
+
+    >>> lines("one two three", 8)
+    ['one two', 'three']
+    >>> lines("a " * 40, 10, 1)
+    ['a a a a a…']
+    """
+    out: list[str] = []
+    for word in text.split():
+        if out and len(out[-1]) + 1 + len(word) <= width:
+            out[-1] += " " + word
+        else:
+            out.append(word[:width])
+    if len(out) > most:
+        out = out[:most]
+        out[-1] = out[-1][: width - 1] + "…"
+    return out
+
+
+def message(c: Canvas, text: str) -> float:
+    """What went wrong, under the picture (two lines at most); returns the height it takes."""
+    rows = lines(text)
+    for k, row in enumerate(rows):
+        y = c.top + c.height + 6 + 15 * k
+        c.add(f'<text x="{c.left + c.width / 2:.1f}" y="{y:.1f}" text-anchor="middle" '
+              f'class="wb-fig-label wb-fig-small wb-fig-bad">{escape(row)}</text>')
+    return 15.0 * len(rows) + (6 if rows else 0)
+
+
+def with_message(description: str, said: str) -> str:
+    """The description, with what went wrong as a sentence of its own.
+
+    >>> with_message("test 1: a point.", "your point lies beyond the edge")
+    'test 1: a point. Your point lies beyond the edge.'
+    """
+    if not said:
+        return description
+    return f"{description} {said[0].upper()}{said[1:]}" + ("" if said.endswith(".") else ".")

@@ -7,7 +7,7 @@ from __future__ import annotations
 from ...number_format import compact
 from ..svg import Canvas
 from . import Drawn, RunFigure, Trace
-from .marks import REFERENCE, YOURS, key, message
+from .marks import REFERENCE, YOURS, key, message, with_message
 
 DT, STEPS = 0.1, 60
 GAINS = ((10, 5, 2), (4, 2, 0.5))
@@ -22,7 +22,7 @@ def _curve(ys: list[float]) -> list[tuple[float, float]]:
 def frame(d: Drawn) -> tuple[str, str]:
     Kp, Ki, Kd, dt, steps = d.args
     duration = dt * steps
-    c = Canvas(440, 280, (0.0, duration), Y_RANGE, pad=(42, 14, 12, 44), aspect=False)
+    c = Canvas(440, 280, (0.0, duration), Y_RANGE, pad=(42, 14, 12, 30), aspect=False)
     for y in (0.0, 0.5, 1.0, 1.5, 2.0):
         c.line((0, y), (duration, y), "wb-fig-grid")
         c.text((0, y), f"{y:g}", "wb-fig-label wb-fig-small wb-fig-muted", dx=-6, dy=4, anchor="end")
@@ -37,7 +37,7 @@ def frame(d: Drawn) -> tuple[str, str]:
         c.polyline(_curve(got), f"{YOURS} wb-fig-thick")
     if got and (d.message or len(got) < len(d.want)):
         c.dot(_curve(got)[-1], 5, f"wb-fig-bad wb-fig-solid")
-    message(c, d.message)
+    below = message(c, d.message)
     gains = f"Kp = {compact(Kp)}, Ki = {compact(Ki)}, Kd = {compact(Kd)}"
     ref_end = compact(d.want[-1])
     if got:
@@ -46,9 +46,8 @@ def frame(d: Drawn) -> tuple[str, str]:
         yours = "your pid_step gave no output to draw"
     description = (f"{d.label}: a step to 1 under {gains}, every {compact(dt)} s for {compact(duration)} s; "
                    f"with the reference the output ends at {ref_end}; {yours}.")
-    if d.message:
-        description += f" {d.message}"
-    return c.svg(f"pid_step, {d.label}: step response, yours over the reference's"), description
+    description = with_message(description, d.message)
+    return c.svg(f"pid_step, {d.label}: step response, yours over the reference's", extra_height=below), description
 
 
 RUN = RunFigure(name="pid", title="Your PID controller in a closed loop", unit="", frame=frame,

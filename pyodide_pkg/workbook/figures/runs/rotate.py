@@ -7,7 +7,7 @@ import math
 from ...number_format import compact
 from ..svg import Canvas
 from . import Drawn, RunFigure
-from .marks import INPUT, REFERENCE, YOURS, finite, inside, key, message, off_picture
+from .marks import INPUT, REFERENCE, YOURS, finite, inside, key, message, off_picture, with_message
 
 
 def frame(d: Drawn) -> tuple[str, str]:
@@ -32,14 +32,13 @@ def frame(d: Drawn) -> tuple[str, str]:
         c.arrow((0, 0), shown, f"{YOURS} wb-fig-thick")
         c.dot(shown, 4, f"{YOURS} wb-fig-solid")
         c.label(shown, "yours", f"wb-fig-label wb-fig-small {YOURS}", toward=shown)
-    message(c, said)
+    below = message(c, said)
     turn = f"p = ({compact(x)}, {compact(y)}) turned by {compact(math.degrees(theta))}°"
     where = (f"your function puts it at ({compact(got[0])}, {compact(got[1])})" if got is not None
              else "your function gave no point to draw")
     description = f"{d.label}: {turn}; the reference puts it at ({compact(want[0])}, {compact(want[1])}); {where}."
-    if said:
-        description += f" {said[0].upper()}{said[1:]}" + ("" if said.endswith(".") else ".")
-    return c.svg(f"rotate_2d, {d.label}: yours and the reference"), description
+    description = with_message(description, said)
+    return c.svg(f"rotate_2d, {d.label}: yours and the reference", extra_height=below), description
 
 
 RUN = RunFigure(name="rotate", title="Your rotate_2d, drawn", unit="", frame=frame, points=True)
