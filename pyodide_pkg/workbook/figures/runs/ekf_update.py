@@ -17,7 +17,7 @@ ROWS = 4
 def _bar(c: Canvas, row: int, mean: float, variance: float, cls: str, name: str) -> str:
     """One estimate as mean ± σ on its row; returns what is wrong with it ("" when nothing)."""
     y = ROWS - row
-    c.text((c.xrange[0], y), name, f"wb-fig-label wb-fig-small {cls.split()[0]}", dx=4, dy=-8, anchor="start")
+    c.text((c.xrange[0], y), name, f"wb-fig-label wb-fig-small {cls.split()[0]}", dx=-8, dy=4, anchor="end")
     if not finite(mean, variance):
         return "not a finite number"
     lo, hi = c.xrange
@@ -41,7 +41,7 @@ def frame(d: Drawn) -> tuple[str, str]:
     spread = [x - math.sqrt(P), x + math.sqrt(P), z - math.sqrt(R), z + math.sqrt(R), want[0]]
     lo, hi = min(spread), max(spread)
     pad = max(0.5, 0.25 * (hi - lo))
-    c = Canvas(440, 250, (lo - pad, hi + pad), (0.3, ROWS + 1.4), pad=(12, 12, 12, 26), aspect=False)
+    c = Canvas(480, 250, (lo - pad, hi + pad), (0.3, ROWS + 1.4), pad=(128, 12, 12, 26), aspect=False)
     step = 10 ** math.floor(math.log10(max(hi - lo + 2 * pad, 1e-9) / 2))
     k = math.ceil((lo - pad) / step)
     while k * step <= hi + pad:
@@ -49,8 +49,8 @@ def frame(d: Drawn) -> tuple[str, str]:
         c.text((k * step, 0.3), compact(k * step), "wb-fig-label wb-fig-small wb-fig-muted", dy=16)
         k += 1
     key(c)
-    _bar(c, 0, x, P, INPUT, "before: x, P")
-    _bar(c, 1, z, R, "wb-fig-b", "measurement: z, R")
+    _bar(c, 0, x, P, INPUT, "before (x, P)")
+    _bar(c, 1, z, R, "wb-fig-b", "measurement (z, R)")
     _bar(c, 2, want[0], want[1], REFERENCE, "after (reference)")
     said = d.message
     if got is not None:

@@ -33,14 +33,15 @@ def finite(*values: float) -> bool:
 
 
 def key(c: Canvas, yours: str = "yours", reference: str = "reference") -> None:
-    """The two line styles, named, in the top-left corner."""
-    x, y = c.left + 14, c.top + 16
+    """The two line styles, named, in the top-left corner of the plot."""
+    x, y = c.xy(c.xrange[0], c.yrange[1])
+    x, y = round(x + 10, 1), round(y + 14, 1)
     c.add(f'<line x1="{x}" y1="{y}" x2="{x + 22}" y2="{y}" class="{YOURS} wb-fig-thick"/>')
     c.add(f'<text x="{x + 28}" y="{y + 4}" class="wb-fig-label wb-fig-small {YOURS}">{yours}</text>')
     y += 18
     c.add(f'<line x1="{x}" y1="{y}" x2="{x + 22}" y2="{y}" class="{REFERENCE}"/>')
     c.add(f'<text x="{x + 28}" y="{y + 4}" class="wb-fig-label wb-fig-small wb-fig-c">{reference}</text>')
-    c.taken.append((x - 2, c.top + 4, x + 120, y + 8))
+    c.taken.append((x - 2, y - 30, x + 120, y + 8))
 
 
 def lines(text: str, width: int = 62, most: int = 2) -> list[str]:

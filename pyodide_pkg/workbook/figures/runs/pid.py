@@ -47,10 +47,8 @@ def frame(d: Drawn) -> tuple[str, str]:
     description = (f"{d.label}: a step to 1 under {gains}, every {compact(dt)} s for {compact(duration)} s; "
                    f"with the reference the output ends at {ref_end}; {yours}.")
     description = with_message(description, d.message)
-    return c.svg(f"pid_step, {d.label}: step response, yours over the reference's", extra_height=below), description
+    return c.svg(f"pid_step, {d.label} ({gains}): step response, yours over the reference's", extra_height=below), description
 
 
 RUN = RunFigure(name="pid", title="Your PID controller in a closed loop", unit="", frame=frame,
-                trace=Trace("pid_loop", tuple((*g, DT, STEPS) for g in GAINS),
-                            tuple(f"run {k + 1} (Kp = {compact(g[0])}, Ki = {compact(g[1])}, Kd = {compact(g[2])})"
-                                  for k, g in enumerate(GAINS))))
+                trace=Trace("pid_loop", tuple((*g, DT, STEPS) for g in GAINS)))
