@@ -127,7 +127,7 @@ def test_a_closed_loop_run_stops_at_nan():
                                "    return (p + i + d if e > 0.5 else float('nan'), new_integral)")
     fig = figure_of(ex.check(code))
     well_formed(fig)
-    assert "the output became NaN at sample" in fig["readout"]
+    assert re.search(r"Stopped: sample \d+ is NaN", fig["readout"])
 
 
 def test_a_wrong_hidden_case_is_drawn_and_named():

@@ -68,6 +68,7 @@ class RunFigure:
     frame: Callable[[Drawn], tuple[str, str]]  # the case's SVG and a sentence describing it
     trace: Trace | None = None
     points: bool = False  # the output is a point (x, y): its error is the distance, not the largest difference
+    width: int | None = None  # a trajectory: 0, of numbers; n, of rows of n numbers (None: one call's value)
 
 
 def get(name: str) -> RunFigure:
@@ -84,11 +85,13 @@ def names() -> list[str]:
 
 
 def flat(value: Any) -> list[float]:
-    """Every number in a (nested) value, in order.
+    """Every number in a (nested) value, in order (None, a refusal, holds none).
 
-    >>> flat([1, [2.5, 3]])
-    [1.0, 2.5, 3.0]
+    >>> flat([1, [2.5, None, True]])
+    [1.0, 2.5, 1.0]
     """
+    if value is None:
+        return []
     if isinstance(value, (list, tuple)):
         return [x for v in value for x in flat(v)]
     return [float(value)]
@@ -113,23 +116,42 @@ def distance(got: Any, want: Any) -> float:
     5.0
     """
     g, w = flat(got), flat(want)
+    if len(g) != 2 or len(w) != 2:
+        return largest_gap(got, want)
     return math.hypot(g[0] - w[0], g[1] - w[1])
 
 
-def series(value: dict[str, Any]) -> tuple[list[float], str]:
-    """A trajectory from a reported value: its numbers up to the first that is not finite, and why it
-    stops there ("" when it does not)."""
-    items = value.get("items")
-    if items is None:
-        return [], f"expected a list of numbers, got {value.get('type', 'object')} {value.get('text', '')}"
-    out: list[float] = []
-    for k, item in enumerate(items):
+def _sample(item: dict[str, Any], width: int) -> float | list[float] | str:
+    """One sample of a trajectory: a number (``width`` 0) or a row of ``width`` numbers; or why it is not."""
+    if width == 0:
         x = item.get("number")
         if x is None:
-            return out, f"sample {k} is {item.get('type', 'object')} {item.get('text', '')}, not a number"
-        if not math.isfinite(x):
-            return out, f"the output became {compact(x)} at sample {k}"
-        out.append(x)
+            return f"{item.get('type', 'object')} {item.get('text', '')}, not a number"
+        return x if math.isfinite(x) else f"{compact(x)}"
+    row = item.get("items")
+    if row is None or len(row) != width or item.get("length") != width:
+        return f"{item.get('type', 'object')} {item.get('text', '')}, not {width} numbers"
+    out = [_sample(v, 0) for v in row]
+    bad = next((v for v in out if isinstance(v, str)), None)
+    return out if bad is None else bad
+
+
+def series(value: dict[str, Any], width: int = 0) -> tuple[list, str]:
+    """A trajectory from a reported value: its samples (numbers, or rows of ``width`` numbers) up to the
+    first that is not finite, and why it stops there ("" when it does not).
+
+    >>> series({"items": [{"number": 1.0}, {"number": float("nan")}]})
+    ([1.0], 'sample 1 is NaN')
+    """
+    items = value.get("items")
+    if items is None:
+        return [], f"expected a list, got {value.get('type', 'object')} {value.get('text', '')}"
+    out: list = []
+    for k, item in enumerate(items):
+        sample = _sample(item, width)
+        if isinstance(sample, str):
+            return out, f"sample {k} is {sample}"
+        out.append(sample)
     return out, ""
 
 
@@ -157,11 +179,11 @@ def _call_case(label: str, args: tuple, want: Any, outcome: dict[str, Any], poin
     return drawn
 
 
-def _trace_case(label: str, args: tuple, want: list[float], outcome: dict[str, Any]) -> Drawn:
+def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], width: int) -> Drawn:
     drawn = Drawn(label, args, want, got=[])
     value = outcome.get("value", outcome.get("partial"))
     if value is not None:
-        drawn.got, why = series(value)
+        drawn.got, why = series(value, width)
         if why:
             drawn.message = f"Stopped: {why}."
     if "error" in outcome:
@@ -174,13 +196,13 @@ def _trace_case(label: str, args: tuple, want: list[float], outcome: dict[str, A
     return drawn
 
 
-def _reference(fn: Callable[..., Any], drive: Callable[..., Any], args: tuple) -> list[float]:
+def _reference(fn: Callable[..., Any], drive: Callable[..., Any], args: tuple) -> list:
     """The reference through the driver (the grader's own run; it keeps at most TRACE_CAP samples)."""
     try:
         out = drive(fn, *copy.deepcopy(args))
     except harness.Partial as stop:  # the reference never fails on the cases chosen; be safe anyway
         out = stop.so_far
-    return [float(y) for y in out][:TRACE_CAP]
+    return [float(y) if not isinstance(y, (list, tuple)) else [float(v) for v in y] for y in out][:TRACE_CAP]
 
 
 # ---- the figure --------------------------------------------------------------------------
@@ -193,13 +215,17 @@ def _items(fig: RunFigure, ex: Any, report: Any, cases: list, arguments: list[li
         drive = harness.driver(fig.trace.harness)
         outcomes = report.figure + [{"skipped": True}] * (len(fig.trace.cases) - len(report.figure))
         labels = fig.trace.names or tuple(f"run {k + 1}" for k in range(len(fig.trace.cases)))
-        runs = [_trace_case(label, args, _reference(ex.reference, drive, args), outcome)
+        runs = [_trace_case(label, args, _reference(ex.reference, drive, args), outcome, fig.width or 0)
                 for label, args, outcome in zip(labels, fig.trace.cases, outcomes)]
         return runs, runs
     outcomes = report.cases + [{"skipped": True}] * (len(cases) - len(report.cases))
     shown = len(ex.examples)
-    items = [_call_case(f"test {k + 1}" if k < shown else f"hidden case {k - shown + 1}", tuple(args), case.want,
-                        outcome, fig.points) for k, (args, case, outcome) in enumerate(zip(arguments, cases, outcomes))]
+    def one(label: str, args: tuple, want: Any, outcome: dict[str, Any]) -> Drawn:
+        if fig.width is None:
+            return _call_case(label, args, want, outcome, fig.points)
+        return _trace_case(label, args, want, outcome, fig.width)
+    items = [one(f"test {k + 1}" if k < shown else f"hidden case {k - shown + 1}", tuple(args), case.want, outcome)
+             for k, (args, case, outcome) in enumerate(zip(arguments, cases, outcomes))]
     hidden = items[shown:]
     off = [d for d in hidden if d.error is not None and d.error > max(ex.abs_tol, 1e-9)
            + ex.rel_tol * max(map(abs, flat(d.want)), default=0.0)]
