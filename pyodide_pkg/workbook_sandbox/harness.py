@@ -54,6 +54,17 @@ def call(fn: Callable[..., Any], *args: Any) -> Any:
     return fn(*args)
 
 
+def _step(so_far: Any, read: Callable[[Any, str], Any], what: str, fn: Callable[..., Any], *args: Any) -> Any:
+    """One step of a closed loop: ``fn(*args)`` read by ``read``; Partial(so_far) from any failure of
+    the function (an interrupt or running out of memory goes through: the run stops there)."""
+    try:
+        return read(fn(*args), what)
+    except (KeyboardInterrupt, MemoryError):
+        raise
+    except BaseException as err:
+        raise Partial(so_far) from err
+
+
 def _pair(got: Any, what: str) -> tuple[float, float]:
     """Two numbers from what a step returned, or TypeError saying what came back."""
     try:
@@ -64,8 +75,10 @@ def _pair(got: Any, what: str) -> tuple[float, float]:
         raise TypeError(f"{what}: expected a pair of numbers, got {shown} ({err})") from None
 
 
-def pid_loop(fn: Callable[..., Any], Kp: float, Ki: float, Kd: float, dt: float, steps: int) -> list[float]:
+def pid_loop(fn: Callable[..., Any], Kp: float, Ki: float, Kd: float, dt: float, steps: int,
+             *limits: float) -> list[float]:
     """Closed loop: ``fn`` (a ``pid_step``) drives the plant for ``steps`` samples of ``dt`` seconds.
+    With ``limits`` (u_min, u_max), ``fn`` is a clamped controller and is passed them too.
 
     Each sample reads e = TARGET − y, asks ``fn`` for (u, integral), then moves the
     plant (semi-implicit Euler). Returns the outputs y, starting with y = 0; it stops
@@ -80,12 +93,7 @@ def pid_loop(fn: Callable[..., Any], Kp: float, Ki: float, Kd: float, dt: float,
     ys = [y]
     for k in range(int(steps)):
         e = TARGET - y
-        try:
-            u, integral = _pair(fn(e, e_prev, integral, Kp, Ki, Kd, dt), f"step {k + 1}")
-        except (KeyboardInterrupt, MemoryError):
-            raise
-        except BaseException as err:
-            raise Partial(ys) from err
+        u, integral = _step(ys, _pair, f"step {k + 1}", fn, e, e_prev, integral, Kp, Ki, Kd, dt, *limits)
         e_prev = e
         velocity += (u - DAMPING * velocity - STIFFNESS * y) / MASS * dt
         y += velocity * dt
@@ -95,7 +103,42 @@ def pid_loop(fn: Callable[..., Any], Kp: float, Ki: float, Kd: float, dt: float,
     return ys
 
 
-DRIVERS: dict[str, Callable[..., Any]] = {"call": call, "pid_loop": pid_loop}
+def _state(got: Any, what: str) -> tuple[list[float], list[list[float]]]:
+    """A pose (x, y, θ) and its 3×3 covariance from what a step returned, or TypeError saying what came back."""
+    try:
+        x, P = got
+        x, P = [float(a) for a in x], [[float(a) for a in row] for row in P]
+        if len(x) != 3 or len(P) != 3 or any(len(row) != 3 for row in P):
+            raise ValueError("wrong sizes")
+    except (TypeError, ValueError) as err:
+        raise TypeError(f"{what}: expected (x, P), a pose of 3 numbers and a 3×3 covariance, got "
+                        f"{type(got).__name__} ({err})") from None
+    return x, P
+
+
+def ekf_track(fn: Callable[..., Any], x: list, P: list, controls: list, dt: float, Q: list) -> list[list[float]]:
+    """Closed loop: ``fn`` (an ``ekf_predict(x, P, v, omega, dt, Q)``) is fed its own output, once per
+    command (v, ω) in ``controls``. Returns, from the start, each step's x, y, θ and the x–y block of P
+    (pxx, pxy, pyy): one row of six numbers per step.
+
+    >>> still = lambda x, P, v, omega, dt, Q: (x, P)
+    >>> ekf_track(still, [1, 2, 0], [[1, 0, 0], [0, 2, 0], [0, 0, 3]], [(0, 0)], 1, None)
+    [[1.0, 2.0, 0.0, 1.0, 0.0, 2.0], [1.0, 2.0, 0.0, 1.0, 0.0, 2.0]]
+    """
+    def row(x: list[float], P: list[list[float]]) -> list[float]:
+        return [*x, P[0][0], P[0][1], P[1][1]]
+
+    x, P = _state((x, P), "the start")
+    rows = [row(x, P)]
+    for k, (v, omega) in enumerate(controls):
+        x, P = _step(rows, _state, f"step {k + 1}", fn, list(x), [list(r) for r in P], v, omega, dt, Q)
+        rows.append(row(x, P))
+        if not all(math.isfinite(a) for a in rows[-1]):
+            break
+    return rows
+
+
+DRIVERS: dict[str, Callable[..., Any]] = {"call": call, "pid_loop": pid_loop, "ekf_track": ekf_track}
 
 
 def driver(name: str) -> Callable[..., Any]:

@@ -35,7 +35,9 @@ from workbook_sandbox import harness
 from ...build_judge import Mismatch, numbers
 from ...number_format import compact
 
-MODULES = {"rotate": "rotate", "ekf-update": "ekf_update", "arm": "arm", "pid": "pid"}
+MODULES = {"rotate": "rotate", "ekf-update": "ekf_update", "arm": "arm", "pid": "pid", "ik": "ik",
+           "jacobian": "jacobian", "pid-clamp": "pid_clamp", "pose-graph": "pose_graph",
+           "ekf-predict": "ekf_predict", "capstone": "capstone"}
 TRACE_CAP = 64  # samples of a trajectory the report carries (workbook_sandbox.values.ITEMS_CAP)
 
 

@@ -10,21 +10,35 @@ from . import Drawn, RunFigure
 from .marks import INPUT, REFERENCE, YOURS, finite, inside, key, message, off_picture, with_message
 
 
+def workspace(L1: float, L2: float, reference: str = "reference") -> Canvas:
+    """A picture of the arm's reach: the grid, the key, the circle the tip can reach, the base."""
+    reach = (abs(L1) + abs(L2)) * 1.2 or 1.0
+    c = Canvas(360, 320, (-reach, reach), (-reach, reach), pad=(12, 12, 12, 24))
+    c.grid(10 ** math.floor(math.log10(reach)) / 2, labels=False)
+    key(c, reference=reference)
+    c.circle((0, 0), abs(L1) + abs(L2), f"{INPUT} wb-fig-thin wb-fig-dash")
+    if abs(L1 - L2) > 1e-9:
+        c.circle((0, 0), abs(L1 - L2), f"{INPUT} wb-fig-thin wb-fig-dash")
+    c.dot((0, 0), 6, f"{INPUT} wb-fig-solid")
+    return c
+
+
+def draw_arm(c: Canvas, elbow, tip, cls: str) -> None:
+    """The two links, base to elbow to tip; the elbow a dot, the tip a ring."""
+    c.polyline([(0, 0), inside(c, elbow), inside(c, tip)], f"{cls} wb-fig-thick")
+    colour = cls.split()[0]
+    c.dot(inside(c, elbow), 4, f"{colour} wb-fig-solid")
+    c.dot(inside(c, tip), 6, colour)
+    c.keep_clear([(0, 0), elbow, tip])
+
+
 def frame(d: Drawn) -> tuple[str, str]:
     L1, L2, t1, t2 = d.args
     elbow = (L1 * math.cos(t1), L1 * math.sin(t1))
     tip = tuple(d.want)
     got = tuple(d.got) if d.got is not None and finite(*d.got) else None
-    reach = (abs(L1) + abs(L2)) * 1.2 or 1.0
-    c = Canvas(360, 320, (-reach, reach), (-reach, reach), pad=(12, 12, 12, 24))
-    c.grid(10 ** math.floor(math.log10(reach)) / 2, labels=False)
-    key(c, reference="true arm")
-    c.circle((0, 0), abs(L1) + abs(L2), f"{INPUT} wb-fig-thin wb-fig-dash")
-    c.polyline([(0, 0), elbow, tip], f"{REFERENCE} wb-fig-thick")
-    c.dot(elbow, 4, "wb-fig-c wb-fig-solid")
-    c.dot(tip, 6, "wb-fig-c")
-    c.dot((0, 0), 6, f"{INPUT} wb-fig-solid")
-    c.keep_clear([(0, 0), elbow, tip])
+    c = workspace(L1, L2, reference="true arm")
+    draw_arm(c, elbow, tip, REFERENCE)
     said = d.message
     if got is not None:
         shown = inside(c, got)

@@ -20,7 +20,7 @@ def _curve(ys: list[float]) -> list[tuple[float, float]]:
 
 
 def frame(d: Drawn) -> tuple[str, str]:
-    Kp, Ki, Kd, dt, steps = d.args
+    Kp, Ki, Kd, dt, steps, *limits = d.args
     duration = dt * steps
     c = Canvas(440, 280, (0.0, duration), Y_RANGE, pad=(42, 14, 12, 30), aspect=False)
     for y in (0.0, 0.5, 1.0, 1.5, 2.0):
@@ -38,7 +38,8 @@ def frame(d: Drawn) -> tuple[str, str]:
     if got and (d.message or len(got) < len(d.want)):
         c.dot(_curve(got)[-1], 5, f"wb-fig-bad wb-fig-solid")
     below = message(c, d.message)
-    gains = f"Kp = {compact(Kp)}, Ki = {compact(Ki)}, Kd = {compact(Kd)}"
+    gains = f"Kp = {compact(Kp)}, Ki = {compact(Ki)}, Kd = {compact(Kd)}" + (
+        f", output held in [{compact(limits[0])}, {compact(limits[1])}]" if limits else "")
     ref_end = compact(d.want[-1])
     if got:
         yours = (f"with your pid_step the output is {compact(got[-1])} after {compact((len(got) - 1) * dt)} s")
