@@ -37,7 +37,7 @@ from ...number_format import compact
 
 MODULES = {"rotate": "rotate", "ekf-update": "ekf_update", "arm": "arm", "pid": "pid", "ik": "ik",
            "jacobian": "jacobian", "pid-clamp": "pid_clamp", "pose-graph": "pose_graph",
-           "ekf-predict": "ekf_predict", "capstone": "capstone"}
+           "ekf-predict": "ekf_predict", "capstone": "capstone", "frames": "frames", "axis-angle": "axis_angle"}
 TRACE_CAP = 64  # samples of a trajectory the report carries (workbook_sandbox.values.ITEMS_CAP)
 
 
