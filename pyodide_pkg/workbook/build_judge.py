@@ -45,6 +45,8 @@ class Case:
 
 
 def _rounded(value: Any) -> Any:
+    if value is None or isinstance(value, bool):
+        return value
     if isinstance(value, (list, tuple)):
         return tuple(_rounded(v) for v in value)
     return round(value, 6) if math.isfinite(value) else value
@@ -143,8 +145,12 @@ def _what(value: dict[str, Any]) -> str:
 
 
 def numbers(value: dict[str, Any], want: Any) -> Any:
-    """The numbers ``value`` carries, shaped as ``want`` (a number or a sequence of them, maybe nested);
-    Mismatch when it has another shape."""
+    """The numbers ``value`` carries, shaped as ``want`` (a number or a sequence of them, maybe nested;
+    None where the reference refuses); Mismatch when it has another shape."""
+    if want is None:
+        if value["type"] != "NoneType":
+            raise Mismatch(f"expected None (the reference refuses this input), got {_what(value)}")
+        return None
     if not isinstance(want, (list, tuple)):
         if "number" not in value:
             if value["type"] == "int":
@@ -166,9 +172,24 @@ def numbers(value: dict[str, Any], want: Any) -> Any:
 
 
 def close(got: Any, want: Any, rel_tol: float, abs_tol: float) -> bool:
+    return first_difference(got, want, rel_tol, abs_tol) is None
+
+
+def first_difference(got: Any, want: Any, rel_tol: float, abs_tol: float, at: str = "") -> tuple | None:
+    """Where ``got`` first disagrees with ``want`` (same shape): ``(index path, got, want)``, or None.
+
+    >>> first_difference([[1.0, 2.0], [3.0, 4.5]], [[1.0, 2.0], [3.0, 4.0]], 1e-6, 1e-9)
+    ('[1][1]', 4.5, 4.0)
+    """
+    if want is None or got is None:
+        return None if got is want else (at, got, want)
     if isinstance(want, (list, tuple)):
-        return all(close(g, w, rel_tol, abs_tol) for g, w in zip(got, want))
-    return math.isclose(got, want, rel_tol=rel_tol, abs_tol=max(abs_tol, 1e-9))
+        for i, (g, w) in enumerate(zip(got, want)):
+            found = first_difference(g, w, rel_tol, abs_tol, f"{at}[{i}]")
+            if found is not None:
+                return found
+        return None
+    return None if math.isclose(got, want, rel_tol=rel_tol, abs_tol=max(abs_tol, 1e-9)) else (at, got, want)
 
 
 def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float) -> dict[str, Any]:
@@ -185,7 +206,10 @@ def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float) -> 
         got = numbers(value, case.want)
     except Mismatch as err:
         return {**out, "actual": value["text"], "passed": False, "message": str(err)}
-    return {**out, "actual": show(_rounded(got)), "passed": close(got, case.want, rel_tol, abs_tol), "message": ""}
+    found = first_difference(got, case.want, rel_tol, abs_tol)
+    message = "" if found is None or not found[0] else (
+        f"first difference at {found[0]}: expected {show(_rounded(found[2]))}, got {show(_rounded(found[1]))}")
+    return {**out, "actual": show(_rounded(got)), "passed": found is None, "message": message}
 
 
 def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float) -> list[dict[str, Any]]:
@@ -195,10 +219,10 @@ def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float) -
 
 
 def hidden_summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
-    """One row for all the hidden cases: the first that fails, or 'all agree'."""
-    summary = {"name": f"{len(rows)} hidden random cases"}
+    """One row for all the hidden cases (edge cases, then random ones): the first that fails, or 'all agree'."""
+    summary = {"name": f"{len(rows)} hidden cases"}
     for r in rows:
         if not r["passed"]:
             return {**r, **summary}
-    return {**summary, "input": f"{len(rows)} random inputs", "expected": "reference values",
+    return {**summary, "input": f"{len(rows)} hidden inputs", "expected": "reference values",
             "actual": "all agree", "passed": True, "message": ""}

@@ -45,7 +45,8 @@ STDOUT_CAP = runner.STDOUT_CAP
 @dataclass(frozen=True)
 class Build(Exercise):
     """``examples`` are the visible cases (argument tuples, usually the workbook's
-    own numbers); ``random_args`` draws the hidden cases from a seeded RNG;
+    own numbers); ``edge_cases`` are hidden cases that every run tries (a zero time step, an unreachable
+    target, an angle past ±π), then ``random_args`` draws the other hidden cases from a seeded RNG;
     ``harness`` names the driver that exercises the function on a case
     (``workbook_sandbox.harness``: ``"call"`` calls it once). ``run_figure`` names
     the picture drawn after a run, the learner's function beside the reference
@@ -59,6 +60,8 @@ class Build(Exercise):
     reference: Callable[..., Any] | None = None
     examples: tuple[tuple, ...] = ()
     random_args: Callable[[random.Random], tuple] | None = None
+    edge_cases: tuple[tuple, ...] = ()
+    describe: Callable[..., str] | None = None  # how a case is named in a test row (default: the call)
     hidden_count: int = 20
     rel_tol: float = 1e-6
     abs_tol: float = 1e-9
@@ -75,7 +78,7 @@ class Build(Exercise):
 
     def hidden_cases(self) -> list[tuple]:
         rng = random.Random(f"hidden:{self.id}")
-        return [self.random_args(rng) for _ in range(self.hidden_count)]
+        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]
 
     def arguments(self) -> list[list]:
         """Every case's arguments, examples first, as the sandbox receives them (through JSON)."""
@@ -95,8 +98,8 @@ class Build(Exercise):
         out = []
         for i, args in enumerate(arguments):
             want = _numbers(drive(self.reference, *copy.deepcopy(args)))
-            out.append(Case("example" if i < len(self.examples) else "hidden",
-                            f"{self.function}({', '.join(show(a) for a in args)})", want))
+            name = self.describe(*args) if self.describe else f"{self.function}({', '.join(show(a) for a in args)})"
+            out.append(Case("example" if i < len(self.examples) else "hidden", name, want))
         return out
 
     def judge(self, report: Any) -> Verdict:
@@ -163,7 +166,10 @@ EXERCISE = Build
 
 
 def _numbers(value: Any) -> Any:
-    """The reference's output as floats, keeping its nesting (tuples become lists)."""
+    """The reference's output as floats, keeping its nesting (tuples become lists); None (a refusal,
+    such as an unreachable target) and booleans (a yes/no test) stay as they are."""
+    if value is None or isinstance(value, bool):
+        return value
     if isinstance(value, (list, tuple)) or (hasattr(value, "__iter__") and not isinstance(value, (str, dict))):
         return [_numbers(v) for v in value]
     return float(value)
