@@ -63,8 +63,9 @@ def well_formed(fig: dict) -> None:
         assert "Traceback" not in frame["description"]
 
 
-def test_the_four_builds_have_run_figures():
+def test_every_build_has_a_run_figure():
     assert {"0.5", "4.5", "6.5", "8.4"} <= set(IDS)
+    assert IDS == [ex.id for ex in bank.all_exercises() if ex.kind == "build"]
     assert set(runs.names()) >= {ex.run_figure for ex in BUILDS}
 
 
@@ -75,7 +76,7 @@ def test_the_solution_draws_the_reference(exercise_id):
     assert verdict.status == "correct"
     fig = figure_of(verdict)
     well_formed(fig)
-    assert re.match(r"Largest error 0( m)? at ", fig["readout"]), fig["readout"]
+    assert re.match(r"Largest error 0( m| rad)?: yours agrees with the reference on every case$", fig["readout"])
     for frame in fig["frames"]:
         assert ": error 0" in frame["readout"] and "Your function" not in frame["readout"]
 
@@ -85,12 +86,13 @@ def test_the_starter_names_its_largest_error_and_case(exercise_id):
     ex = bank.get(exercise_id)
     fig = figure_of(ex.check(ex.starter))
     well_formed(fig)
-    match = re.match(r"Largest error ([\d.]+)( m)? at (test \d+|hidden case \d+|run \d+.*)$", fig["readout"])
+    match = re.match(r"Largest error ([\d.]+)( m| rad)? at (test \d+|hidden case \d+|run \d+)(;|$)", fig["readout"])
     assert match, fig["readout"]
     assert float(match.group(1)) > 0.01
-    # the figure opens on the worst case drawn, and names its error
+    # the figure opens on the worst case drawn: one that failed outright, or the largest error
     start = fig["frames"][fig["start"]]
-    assert float(re.search(r"error ([\d.]+)", start["readout"]).group(1)) > 0
+    error = re.search(r": error ([\d.]+)", start["readout"])
+    assert "Your function" in start["readout"] or float(error.group(1)) > 0, start["readout"]
 
 
 @pytest.mark.parametrize("exercise_id", IDS)
@@ -178,3 +180,26 @@ def test_the_widget_holds_the_run_figure_roles():
                  "run_case_label"):
         assert f'data-role="{getattr(ROLE, role)}"' in html
     assert 'role="img"' in html and "aria-describedby" in html and " hidden>" in html
+
+
+HALF_WAY = {  # a solution that raises part-way through a closed loop: (exercise, line to add, the line it follows)
+    "8.8": "    if 0 < e < 0.5:\n        raise ZeroDivisionError('half way')\n",
+    "3.10": "    if x[0] > 1.0:\n        raise ZeroDivisionError('half way')\n",
+    "9.9": "    if x[0] > 1.0:\n        raise ZeroDivisionError('half way')\n",
+}
+
+
+@pytest.mark.parametrize("exercise_id", sorted(HALF_WAY))
+def test_every_closed_loop_is_drawn_as_far_as_it_got(exercise_id):
+    ex = bank.get(exercise_id)
+    head, _, body = ex.solution.partition(f"def {ex.function}(")
+    signature, _, rest = body.partition("\n")
+    docstring, _, rest = rest.partition("\n")
+    code = f"{head}def {ex.function}({signature}\n{docstring}\n{HALF_WAY[exercise_id]}{rest}"
+    fig = figure_of(ex.check(code))
+    well_formed(fig)
+    frame = fig["frames"][fig["start"]]
+    steps = int(re.search(r"Stopped after (\d+) steps", frame["readout"]).group(1))
+    assert steps > 0, frame["readout"]
+    assert "half way" in frame["readout"] and "half way" in frame["svg"]
+    assert re.search(r": error 0\b", frame["readout"]), frame["readout"]

@@ -41,6 +41,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=relative_pose,
+        run_figure="frames",
         examples=(
             ((0, 0, 0), (2, 1, 0.5)),
             ((1, 2, math.pi / 2), (1, 3, math.pi / 2)),

@@ -48,6 +48,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=rotate_axis_angle,
+        run_figure="axis-angle",
         examples=(
             ((0, 0, 1), math.pi / 2, (1, 0, 0)),
             ((1, 0, 0), math.pi, (0, 1, 0)),

@@ -52,6 +52,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=ekf_predict_wrapped,
+        run_figure="ekf-predict",
         examples=(
             ((0, 0, 0), _P34, 1, 0, 1, _Q34),
             ((0, 0, math.pi / 2), _P34, 1, 0, 0.5, _Q34),

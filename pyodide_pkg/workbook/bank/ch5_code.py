@@ -52,6 +52,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=gauss_newton_step_1d,
+        run_figure="pose-graph",
         examples=(
             ((0, 1, 2), ((0, 1, 1, 1), (1, 2, 1, 1), (0, 2, 2.2, 1))),
             ((0, 1, 2), ((0, 1, 1, 1), (1, 2, 1, 1), (0, 2, 2.2, 10))),

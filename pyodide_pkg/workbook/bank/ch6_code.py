@@ -52,6 +52,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=ik_2link,
+        run_figure="ik",
         examples=(
             (1, 1, 1, 1, True),
             (1, 1, 1, 1, False),

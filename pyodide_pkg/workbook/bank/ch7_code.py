@@ -34,6 +34,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=jacobian_singular,
+        run_figure="jacobian",
         examples=(
             (1, 1, 0, math.pi / 2),
             (1, 1, math.pi / 6, math.pi / 4),

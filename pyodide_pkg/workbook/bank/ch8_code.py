@@ -28,6 +28,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=pid_step_clamped,
+        run_figure="pid-clamp",
         examples=(
             (3, 3, 0, 2, 0, 0, 1, -10, 10),
             (1, 3, 8, 1, 0.1, 0.5, 1, -10, 10),

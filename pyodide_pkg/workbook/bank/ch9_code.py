@@ -89,6 +89,7 @@ EXERCISES = (
         ),
         solution=_SOLUTION,
         reference=nav_step,
+        run_figure="capstone",
         harness="nav_loop",
         describe=_describe,
         examples=(

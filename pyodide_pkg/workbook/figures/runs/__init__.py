@@ -71,6 +71,7 @@ class RunFigure:
     trace: Trace | None = None
     points: bool = False  # the output is a point (x, y): its error is the distance, not the largest difference
     width: int | None = None  # a trajectory: 0, of numbers; n, of rows of n numbers (None: one call's value)
+    with_start: bool = True  # a trajectory's first sample is where it starts (not a step's outcome)
 
 
 def get(name: str) -> RunFigure:
@@ -181,7 +182,7 @@ def _call_case(label: str, args: tuple, want: Any, outcome: dict[str, Any], poin
     return drawn
 
 
-def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], width: int) -> Drawn:
+def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], width: int, start: int) -> Drawn:
     drawn = Drawn(label, args, want, got=[])
     value = outcome.get("value", outcome.get("partial"))
     if value is not None:
@@ -189,10 +190,10 @@ def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], wi
         if why:
             drawn.message = f"Stopped: {why}."
     if "error" in outcome:
-        drawn.message = f"Stopped after {max(0, len(drawn.got) - 1)} steps: your function {_failure(outcome)}."
+        drawn.message = f"Stopped after {max(0, len(drawn.got) - start)} steps: your function {_failure(outcome)}."
     elif value is None:
         drawn.message = "The run stopped before this case."
-    if len(drawn.got) > 1:  # the first sample is where every run starts
+    if len(drawn.got) > start:  # a start alone compares nothing
         common = min(len(drawn.got), len(want))
         drawn.error = largest_gap(drawn.got[:common], want[:common])
     return drawn
@@ -217,7 +218,7 @@ def _items(fig: RunFigure, ex: Any, report: Any, cases: list, arguments: list[li
         drive = harness.driver(fig.trace.harness)
         outcomes = report.figure + [{"skipped": True}] * (len(fig.trace.cases) - len(report.figure))
         labels = fig.trace.names or tuple(f"run {k + 1}" for k in range(len(fig.trace.cases)))
-        runs = [_trace_case(label, args, _reference(ex.reference, drive, args), outcome, fig.width or 0)
+        runs = [_trace_case(label, args, _reference(ex.reference, drive, args), outcome, fig.width or 0, int(fig.with_start))
                 for label, args, outcome in zip(labels, fig.trace.cases, outcomes)]
         return runs, runs
     outcomes = report.cases + [{"skipped": True}] * (len(cases) - len(report.cases))
@@ -225,7 +226,7 @@ def _items(fig: RunFigure, ex: Any, report: Any, cases: list, arguments: list[li
     def one(label: str, args: tuple, want: Any, outcome: dict[str, Any]) -> Drawn:
         if fig.width is None:
             return _call_case(label, args, want, outcome, fig.points)
-        return _trace_case(label, args, want, outcome, fig.width)
+        return _trace_case(label, args, want, outcome, fig.width, int(fig.with_start))
     items = [one(f"test {k + 1}" if k < shown else f"hidden case {k - shown + 1}", tuple(args), case.want, outcome)
              for k, (args, case, outcome) in enumerate(zip(arguments, cases, outcomes))]
     hidden = items[shown:]
@@ -246,7 +247,10 @@ def _readout(fig: RunFigure, items: list[Drawn]) -> str:
     if errors:
         worst = max(errors, key=lambda d: d.error)
         unit = f" {fig.unit}" if fig.unit else ""
-        parts.append(f"largest error {compact(worst.error)}{unit} at {worst.label}")
+        if compact(worst.error) == "0":
+            parts.append(f"largest error 0{unit}: yours agrees with the reference on every case")
+        else:
+            parts.append(f"largest error {compact(worst.error)}{unit} at {worst.label}")
     if failed is not None:
         parts.append(f"{failed.label}: {failed.message}")
     text = "; ".join(parts) or "nothing to compare"

@@ -44,4 +44,5 @@ def frame(d: Drawn) -> tuple[str, str]:
     return c.svg(f"nav_step, {d.label}: the path driven, yours over the reference's", extra_height=below), description
 
 
-RUN = RunFigure(name="capstone", title="The path your navigation loop drives", unit="", frame=frame, width=3)
+RUN = RunFigure(name="capstone", title="The path your navigation loop drives", unit="", frame=frame, width=3,
+                with_start=False)
