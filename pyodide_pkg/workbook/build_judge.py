@@ -19,7 +19,7 @@ from __future__ import annotations
 
 import json
 import math
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from typing import Any
 
 from workbook_sandbox.runner import MESSAGE_CAP, STDOUT_CAP, TRACEBACK_CAP
@@ -45,6 +45,8 @@ class Case:
 
 
 def _rounded(value: Any) -> Any:
+    if value is None or isinstance(value, bool):
+        return value
     if isinstance(value, (list, tuple)):
         return tuple(_rounded(v) for v in value)
     return round(value, 6) if math.isfinite(value) else value
@@ -89,10 +91,25 @@ class Report:
     cases: list[dict[str, Any]]
     stdout: str
     stopped: str | None
+    figure: list[dict[str, Any]] = field(default_factory=list)  # the run figure's own runs (closed-loop drivers)
 
 
-def read_report(raw: Any, count: int) -> Report:
-    """The sandbox's report (a dict, or its JSON text) checked and cut to size; ``count`` cases at most.
+def _case(case: Any) -> dict[str, Any]:
+    """One case of a report: its value, or its error (and what a closed-loop driver had so far)."""
+    case = case if isinstance(case, dict) else {}
+    if "error" in case:
+        out = {"error": _error(case["error"])}
+        if "partial" in case:
+            out["partial"] = _value(case["partial"])
+        return out
+    if "value" in case:
+        return {"value": _value(case["value"])}
+    return {"skipped": True}
+
+
+def read_report(raw: Any, count: int, figure_count: int = 0) -> Report:
+    """The sandbox's report (a dict, or its JSON text) checked and cut to size; ``count`` cases at most
+    (and ``figure_count`` runs of a run figure).
     Raises GradingError("bad-request") when it is not a report at all."""
     if isinstance(raw, str):
         if len(raw) > REPORT_CAP:
@@ -104,21 +121,15 @@ def read_report(raw: Any, count: int) -> Report:
     if not isinstance(raw, dict) or not isinstance(raw.get("cases", []), list):
         raise GradingError("bad-request", UNREADABLE)
     load = raw.get("load")
-    cases = []
-    for case in raw.get("cases", [])[:count]:
-        case = case if isinstance(case, dict) else {}
-        if "error" in case:
-            cases.append({"error": _error(case["error"])})
-        elif "value" in case:
-            cases.append({"value": _value(case["value"])})
-        else:
-            cases.append({"skipped": True})
+    cases = [_case(case) for case in raw.get("cases", [])[:count]]
+    figure = raw.get("figure") if isinstance(raw.get("figure"), list) else []
     stdout = _text(raw.get("stdout"), STDOUT_CAP)
     if raw.get("cut") is True or len(raw.get("stdout") or "") > STDOUT_CAP:
         stdout += "\n… (output cut)"
     stopped = raw.get("stopped") if raw.get("stopped") in ("interrupt", "memory") else None
     return Report({**_error(load), "phase": "syntax" if load.get("phase") == "syntax" else "load"}
-                  if isinstance(load, dict) else None, raw.get("missing") is True, cases, stdout, stopped)
+                  if isinstance(load, dict) else None, raw.get("missing") is True, cases, stdout, stopped,
+                  [_case(case) for case in figure[:figure_count]])
 
 
 # ---- Comparing ---------------------------------------------------------------------------
@@ -134,8 +145,12 @@ def _what(value: dict[str, Any]) -> str:
 
 
 def numbers(value: dict[str, Any], want: Any) -> Any:
-    """The numbers ``value`` carries, shaped as ``want`` (a number or a sequence of them, maybe nested);
-    Mismatch when it has another shape."""
+    """The numbers ``value`` carries, shaped as ``want`` (a number or a sequence of them, maybe nested;
+    None where the reference refuses); Mismatch when it has another shape."""
+    if want is None:
+        if value["type"] != "NoneType":
+            raise Mismatch(f"expected None (the reference refuses this input), got {_what(value)}")
+        return None
     if not isinstance(want, (list, tuple)):
         if "number" not in value:
             if value["type"] == "int":
@@ -157,9 +172,24 @@ def numbers(value: dict[str, Any], want: Any) -> Any:
 
 
 def close(got: Any, want: Any, rel_tol: float, abs_tol: float) -> bool:
+    return first_difference(got, want, rel_tol, abs_tol) is None
+
+
+def first_difference(got: Any, want: Any, rel_tol: float, abs_tol: float, at: str = "") -> tuple | None:
+    """Where ``got`` first disagrees with ``want`` (same shape): ``(index path, got, want)``, or None.
+
+    >>> first_difference([[1.0, 2.0], [3.0, 4.5]], [[1.0, 2.0], [3.0, 4.0]], 1e-6, 1e-9)
+    ('[1][1]', 4.5, 4.0)
+    """
+    if want is None or got is None:
+        return None if got is want else (at, got, want)
     if isinstance(want, (list, tuple)):
-        return all(close(g, w, rel_tol, abs_tol) for g, w in zip(got, want))
-    return math.isclose(got, want, rel_tol=rel_tol, abs_tol=max(abs_tol, 1e-9))
+        for i, (g, w) in enumerate(zip(got, want)):
+            found = first_difference(g, w, rel_tol, abs_tol, f"{at}[{i}]")
+            if found is not None:
+                return found
+        return None
+    return None if math.isclose(got, want, rel_tol=rel_tol, abs_tol=max(abs_tol, 1e-9)) else (at, got, want)
 
 
 def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float) -> dict[str, Any]:
@@ -176,7 +206,10 @@ def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float) -> 
         got = numbers(value, case.want)
     except Mismatch as err:
         return {**out, "actual": value["text"], "passed": False, "message": str(err)}
-    return {**out, "actual": show(_rounded(got)), "passed": close(got, case.want, rel_tol, abs_tol), "message": ""}
+    found = first_difference(got, case.want, rel_tol, abs_tol)
+    message = "" if found is None or not found[0] else (
+        f"first difference at {found[0]}: expected {show(_rounded(found[2]))}, got {show(_rounded(found[1]))}")
+    return {**out, "actual": show(_rounded(got)), "passed": found is None, "message": message}
 
 
 def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float) -> list[dict[str, Any]]:
@@ -186,10 +219,10 @@ def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float) -
 
 
 def hidden_summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
-    """One row for all the hidden cases: the first that fails, or 'all agree'."""
-    summary = {"name": f"{len(rows)} hidden random cases"}
+    """One row for all the hidden cases (edge cases, then random ones): the first that fails, or 'all agree'."""
+    summary = {"name": f"{len(rows)} hidden cases"}
     for r in rows:
         if not r["passed"]:
             return {**r, **summary}
-    return {**summary, "input": f"{len(rows)} random inputs", "expected": "reference values",
+    return {**summary, "input": f"{len(rows)} hidden inputs", "expected": "reference values",
             "actual": "all agree", "passed": True, "message": ""}

@@ -42,6 +42,7 @@ ANSWER_KINDS: tuple[str, ...] = tuple(DATA["answerKinds"])
 STATUSES: tuple[str, ...] = tuple(DATA["statuses"])
 ERRORS: tuple[str, ...] = tuple(DATA["errors"])
 OPS: dict[str, dict[str, Any]] = DATA["ops"]
+BUILD_FUNCTIONS: dict[str, str] = DATA["buildFunctions"]  # exercise id -> the signature the learner writes
 
 
 def role_attr(role: str) -> str:

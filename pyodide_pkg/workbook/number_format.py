@@ -128,6 +128,19 @@ def prose(x: float) -> str:
     return fmt(x).replace("-", "\u2212")
 
 
+def compact(x: float) -> str:
+    """:func:`prose` for a number of ordinary size; one beyond a million in powers of ten
+    (``1.414 × 10^300``), as a learner's runaway output may be.
+
+    >>> compact(-0.5), compact(2.5e12), compact(-1e300)
+    ('−0.5', '2.500 × 10^12', '−1.000 × 10^300')
+    """
+    if not math.isfinite(x) or abs(x) < 1e6:
+        return prose(x)
+    mantissa, exponent = f"{x:.3e}".split("e")
+    return f"{mantissa} × 10^{int(exponent)}".replace("-", "\u2212")
+
+
 def paren(x: float) -> str:
     """A number as a factor in TeX: negative ones in parentheses.
 

@@ -2,7 +2,12 @@
 
 A *job* comes from the grader (``workbook.kinds.build``)::
 
-    {"function": "rotate_2d", "harness": "call", "cases": [[3, 0, 1.5707963267948966], ...]}
+    {"function": "rotate_2d", "harness": "call", "cases": [[3, 0, 1.5707963267948966], ...],
+     "figure": {"harness": "pid_loop", "cases": [[8, 3, 1.5, 0.1, 60]]}}
+
+``figure`` is optional: the runs a run figure draws besides the tests (a
+closed-loop driver's trajectories), made after the tests and reported as
+``"figure": [CASE, ...]`` in the same form.
 
 :func:`run` compiles the code under the file name ``<your code>`` (so that
 tracebacks can be cut down to the learner's own frames), executes it in a fresh
@@ -14,8 +19,9 @@ capped. What the code changed in loaded modules is put back when the run ends
     {"load": null | ERROR, "missing": false, "cases": [CASE, ...],
      "stdout": "...", "cut": false, "stopped": null | "interrupt" | "memory"}
 
-with ``CASE`` = ``{"value": VALUE}`` or ``{"error": ERROR}`` (or ``{"skipped": true}``
-after a run was stopped), ``VALUE`` what :func:`~workbook_sandbox.values.encode`
+with ``CASE`` = ``{"value": VALUE}`` or ``{"error": ERROR}`` (plus ``"partial": VALUE``,
+what a closed-loop driver had when the function failed), or ``{"skipped": true}``
+after a run was stopped, ``VALUE`` what :func:`~workbook_sandbox.values.encode`
 makes of the returned value, and ``ERROR`` = ``{"type", "message", "line",
 "traceback"}``. Nothing in it is a verdict: the grader compares the values with
 its own and decides.
@@ -106,6 +112,9 @@ class Run:
         self.function = str(job["function"])
         self.drive = harness.driver(job.get("harness", "call"))
         self.cases = [tuple(args) for args in job["cases"]]
+        figure = job.get("figure") or {}
+        self.figure_drive = harness.driver(figure.get("harness", "call"))
+        self.figure_cases = [tuple(args) for args in figure.get("cases", ())]
         self.code = code
         self.lines = code.split("\n")
         self.out = _CappedIO()
@@ -116,6 +125,8 @@ class Run:
         or when memory runs out."""
         try:
             return True, action()
+        except harness.Partial as stop:  # a closed-loop driver stopped: the function's own error, and the trajectory
+            return True, stop
         except MemoryError as err:
             raise _Stop("memory", error_info(err, self.lines)) from None
         except KeyboardInterrupt as err:
@@ -142,12 +153,24 @@ class Run:
             return None
         return fn
 
-    def case(self, fn: Callable[..., Any], args: tuple) -> dict[str, Any]:
-        ok, got = self.guarded(lambda: self.drive(fn, *copy.deepcopy(args)))
+    def case(self, fn: Callable[..., Any], args: tuple, drive: Callable[..., Any] | None = None) -> dict[str, Any]:
+        drive = drive or self.drive
+        ok, got = self.guarded(lambda: drive(fn, *copy.deepcopy(args)))
         if not ok:
             return {"error": got}
+        if isinstance(got, harness.Partial):
+            return self.partial(got)
         ok, value = self.guarded(lambda: encode(got))
         return {"value": value} if ok else {"error": value}
+
+    def partial(self, stop: harness.Partial) -> dict[str, Any]:
+        """What a closed-loop driver had when the function failed, and the function's error."""
+        cause = stop.__cause__ if stop.__cause__ is not None else stop  # drivers let interrupts through
+        out: dict[str, Any] = {"error": error_info(cause, self.lines)}
+        ok, value = self.guarded(lambda: encode(stop.so_far))
+        if ok:
+            out["partial"] = value
+        return out
 
     def run(self, restore: Restore) -> dict[str, Any]:
         cases = self.report["cases"]
@@ -157,13 +180,19 @@ class Run:
                 fn = self.load()
                 for args in self.cases if fn is not None else ():
                     cases.append(self.case(fn, args))
+                if fn is not None and self.figure_cases:
+                    self.report["figure"] = figure = []
+                    cases = figure  # a stop from here on is the figure's runs' to report
+                    for args in self.figure_cases:
+                        figure.append(self.case(fn, args, self.figure_drive))
             except _Stop as stop:
                 self.report["stopped"] = stop.why
                 if fn is None:
                     self.report["load"] = {**stop.info, "phase": "load"}
                 else:
+                    total = len(self.cases) if cases is self.report["cases"] else len(self.figure_cases)
                     cases.append({"error": stop.info})
-                    cases += [{"skipped": True}] * (len(self.cases) - len(cases))
+                    cases += [{"skipped": True}] * (total - len(cases))
         self.report["stdout"] = self.out.getvalue()
         self.report["cut"] = bool(getattr(self.out, "cut", False))
         return self.report

@@ -20,7 +20,7 @@ from . import __doc__ as PACKAGE_DOC
 from .baseline import write_baseline
 from .browser import Browsers
 from .config import BASELINE_PATH, CACHE_CONTROL, CH0, CHROMIUM_ARGS, DEFAULT_PROFILES, GRADED, PROFILES, SITE
-from .environment import git_info, machine_info, parser_worst_case, snapshot_info
+from .environment import git_info, machine_info, parser_worst_case, run_figure_times, snapshot_info
 from .network_report import collect_network, network_targets
 from .phases import LOCAL_PHASES, Phases
 from .records import summary
@@ -131,6 +131,9 @@ def build_report(args, seen: dict, started: dt.datetime, t0: float, machine: dic
     parser = parser_worst_case()
     metrics["parser_worst_ms"] = summary([parser["max_ms"]])
     metrics["parser_worst_case"] = parser
+    drawn = run_figure_times()
+    metrics["run_figure_p50_ms"] = summary([drawn["max_p50_ms"]])
+    metrics["run_figure_times"] = drawn
     return {
         "date": started.isoformat(timespec="seconds"),
         "duration_s": round(time.monotonic() - t0, 1),

@@ -80,3 +80,32 @@ def parser_worst_case(repeats: int = 20) -> dict:
         worst[name] = round(max(times), 3)
     slowest = max(worst, key=worst.get)
     return {"max_ms": worst[slowest], "slowest_input": slowest, "per_input_max_ms": worst}
+
+
+def run_figure_times(repeats: int = 50) -> dict:
+    """Drawing each Build exercise's run figure (workbook.figures.runs), natively: p50 over ``repeats``
+    draws of the figure of a wrong run (the starter code: every case off, the worst ones drawn too)."""
+    import json
+    import statistics
+
+    from workbook import bank
+    from workbook.build_judge import read_report
+    from workbook.figures import runs
+    from workbook_sandbox import runner
+
+    per = {}
+    for ex in bank.all_exercises():
+        if ex.kind != "build" or not getattr(ex, "run_figure", ""):
+            continue
+        arguments, trace = ex.arguments(), runs.trace_job(ex)
+        report = read_report(runner.run(json.loads(ex.job()), ex.starter), len(arguments),
+                             len(trace["cases"]) if trace else 0)
+        cases = ex.cases(arguments)
+        times = []
+        for _ in range(repeats):
+            t = time.perf_counter()
+            runs.draw_run(ex, report, cases, arguments)
+            times.append((time.perf_counter() - t) * 1000)
+        per[ex.id] = round(statistics.median(times), 3)
+    slowest = max(per, key=per.get) if per else None
+    return {"max_p50_ms": per.get(slowest), "slowest": slowest, "per_exercise_p50_ms": per, "repeats": repeats}

@@ -20,7 +20,7 @@ import pytest
 
 from workbook import bank
 from workbook.answer_kinds.expression.mark import equivalent
-from workbook.contract import KINDS
+from workbook.contract import BUILD_FUNCTIONS, KINDS
 from workbook.kinds.build import Build
 from workbook.kinds.debug import Debug
 from workbook.kinds.derive import Derive
@@ -99,12 +99,18 @@ def test_pages_place_every_exercise_exactly_once():
 
 
 def test_build_functions_follow_the_page_contract():
-    assert {e.id: e.signature for e in BY_KIND["build"]} == {
+    # The four of the page contract's minimum keep their signatures; the contract lists every one.
+    assert {e.id: e.signature for e in BY_KIND["build"]} == BUILD_FUNCTIONS
+    assert {k: BUILD_FUNCTIONS[k] for k in ("0.5", "4.5", "6.5", "8.4")} == {
         "0.5": "rotate_2d(x, y, theta)",
         "4.5": "ekf_update(x, P, z, R)",
         "6.5": "forward_kinematics_2link(L1, L2, theta1, theta2)",
         "8.4": "pid_step(e, e_prev, integral, Kp, Ki, Kd, dt)",
     }
+
+
+def test_the_readme_states_the_number_of_exercises():
+    assert f"{len(ALL)} exercises" in (ROOT / "README.md").read_text()
 
 
 NUMBER = re.compile(r"[-−]?\d+(?:\.\d+)?")

@@ -155,6 +155,7 @@ EXERCISES = (
             "    return (c * x - s * y, s * x + c * y)\n"
         ),
         reference=rotate_2d,
+        run_figure="rotate",
         examples=((3, 0, math.pi / 2), (1, 1, math.pi / 4), (2, -1, 0.0), (1, 0, math.pi)),
         random_args=lambda rng: (rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-math.pi, math.pi)),
     ),

@@ -295,6 +295,7 @@ EXERCISES = (
             "    return (x + K * (z - x), (1 - K) * P)\n"
         ),
         reference=ekf_update,
+        run_figure="ekf-update",
         examples=((5.866, 0.5, 5.7, 0.2), (0.0, 1.0, 1.0, 1.0), (2.0, 1.0, 3.0, 0.0), (10.0, 0.1, 12.0, 2.0)),
         random_args=lambda rng: (rng.uniform(-10, 10), rng.uniform(0.01, 5), rng.uniform(-10, 10), rng.uniform(0.01, 5)),
     ),

@@ -237,6 +237,7 @@ EXERCISES = (
             "    return (x, y)\n"
         ),
         reference=forward_kinematics_2link,
+        run_figure="arm",
         examples=((1, 1, 0.0, 0.0), (1, 1, _T1, _T2), (1, 1, 0.0, math.pi / 2), (2, 1, math.pi / 2, math.pi)),
         random_args=lambda rng: (rng.uniform(0.1, 3), rng.uniform(0.1, 3),
                                  rng.uniform(-math.pi, math.pi), rng.uniform(-math.pi, math.pi)),

@@ -214,6 +214,7 @@ EXERCISES = (
             "    return (p + i + d, new_integral)\n"
         ),
         reference=pid_step,
+        run_figure="pid",
         examples=(
             (3, 3, 0, 2, 0, 0, 1),
             (5, 0, 0, 1, 0.1, 0.5, 1),

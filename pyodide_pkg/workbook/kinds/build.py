@@ -35,6 +35,7 @@ from workbook_sandbox.values import show
 
 from ..build_judge import Case, Report, compare, hidden_summary, read_report
 from ..contract import ROLE, TAG
+from ..figures import runs
 from ..verdict import Verdict
 from .base import Exercise, Page, escape, role_attr
 
@@ -44,9 +45,12 @@ STDOUT_CAP = runner.STDOUT_CAP
 @dataclass(frozen=True)
 class Build(Exercise):
     """``examples`` are the visible cases (argument tuples, usually the workbook's
-    own numbers); ``random_args`` draws the hidden cases from a seeded RNG;
+    own numbers); ``edge_cases`` are hidden cases that every run tries (a zero time step, an unreachable
+    target, an angle past ±π), then ``random_args`` draws the other hidden cases from a seeded RNG;
     ``harness`` names the driver that exercises the function on a case
-    (``workbook_sandbox.harness``: ``"call"`` calls it once).
+    (``workbook_sandbox.harness``: ``"call"`` calls it once). ``run_figure`` names
+    the picture drawn after a run, the learner's function beside the reference
+    (``workbook.figures.runs``); its frames go in the verdict's ``data["figure"]``.
     """
 
     function: str = ""
@@ -56,11 +60,14 @@ class Build(Exercise):
     reference: Callable[..., Any] | None = None
     examples: tuple[tuple, ...] = ()
     random_args: Callable[[random.Random], tuple] | None = None
+    edge_cases: tuple[tuple, ...] = ()
+    describe: Callable[..., str] | None = None  # how a case is named in a test row (default: the call)
     hidden_count: int = 20
     rel_tol: float = 1e-6
     abs_tol: float = 1e-9
     time_limit: float = 5.0
     harness: str = "call"
+    run_figure: str = ""
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
     reveal_label: ClassVar[str] = "Show solution"
@@ -71,7 +78,7 @@ class Build(Exercise):
 
     def hidden_cases(self) -> list[tuple]:
         rng = random.Random(f"hidden:{self.id}")
-        return [self.random_args(rng) for _ in range(self.hidden_count)]
+        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]
 
     def arguments(self) -> list[list]:
         """Every case's arguments, examples first, as the sandbox receives them (through JSON)."""
@@ -79,7 +86,11 @@ class Build(Exercise):
 
     def job(self) -> str:
         """What the sandbox needs to run the learner's code (JSON): the function's name, the driver, the cases."""
-        return json.dumps({"function": self.function, "harness": self.harness, "cases": self.arguments()})
+        job = {"function": self.function, "harness": self.harness, "cases": self.arguments()}
+        figure = runs.trace_job(self)
+        if figure is not None:
+            job["figure"] = figure
+        return json.dumps(job)
 
     def cases(self, arguments: list[list]) -> list[Case]:
         """The grader's cases: how each is shown and what the reference gives (run through the same driver)."""
@@ -87,15 +98,23 @@ class Build(Exercise):
         out = []
         for i, args in enumerate(arguments):
             want = _numbers(drive(self.reference, *copy.deepcopy(args)))
-            out.append(Case("example" if i < len(self.examples) else "hidden",
-                            f"{self.function}({', '.join(show(a) for a in args)})", want))
+            name = self.describe(*args) if self.describe else f"{self.function}({', '.join(show(a) for a in args)})"
+            out.append(Case("example" if i < len(self.examples) else "hidden", name, want))
         return out
 
     def judge(self, report: Any) -> Verdict:
         """The verdict on a run, from the sandbox's report (JSON text or a dict)."""
         arguments = self.arguments()
-        read = read_report(report, len(arguments))
-        return _verdict(self, read, self.cases(arguments))
+        figure = runs.trace_job(self)
+        read = read_report(report, len(arguments), len(figure["cases"]) if figure else 0)
+        cases = self.cases(arguments)
+        verdict = _verdict(self, read, cases)
+        if self.run_figure and read.load is None and not read.missing:
+            try:
+                verdict.data["figure"] = runs.draw_run(self, read, cases, arguments)
+            except Exception:  # a fault of the drawing must never cost the learner the verdict
+                pass  # (tests/unit/test_run_figures.py looks for the figure on every odd output)
+        return verdict
 
     def check(self, code: object) -> Verdict:
         """The whole run in this process: job, the learner's code, judgement."""
@@ -118,7 +137,28 @@ class Build(Exercise):
             f'<button type="button" class="md-button" {role_attr(ROLE.reset)}>Reset to starter</button></div>'
             f'<div class="wb-tests" {role_attr(ROLE.tests)} hidden></div>'
             f'<pre class="wb-stdout" {role_attr(ROLE.stdout)} hidden></pre>'
-            f"</div>"
+            f"{self._run_figure(base)}</div>"
+        )
+
+    def _run_figure(self, base: str) -> str:
+        """The run figure's place, hidden until a run draws it (``docs/assets/js/run-figure.js``)."""
+        if not self.run_figure:
+            return ""
+        return (
+            f'<figure class="wb-figure wb-run-figure" {role_attr(ROLE.run_figure)} data-figure="{escape(self.run_figure)}" '
+            f'aria-labelledby="{base}-run-title" hidden>'
+            f'<figcaption class="wb-run-title" id="{base}-run-title">Your function, drawn</figcaption>'
+            f'<p class="wb-run-readout" {role_attr(ROLE.readout)} aria-live="polite"></p>'
+            f'<div class="wb-fig-canvas" {role_attr(ROLE.run_canvas)} role="img" aria-describedby="{base}-run-desc"></div>'
+            f'<p class="wb-run-description" id="{base}-run-desc" {role_attr(ROLE.run_description)}></p>'
+            f'<div class="wb-run-steps">'
+            f'<button type="button" class="md-button" {role_attr(ROLE.run_previous)}>Previous case</button>'
+            f'<label class="wb-run-case"><span id="{base}-run-case">Case</span> '
+            f'<input type="range" min="0" max="0" step="1" value="0" {role_attr(ROLE.run_case)} '
+            f'aria-labelledby="{base}-run-case"></label>'
+            f'<button type="button" class="md-button" {role_attr(ROLE.run_next)}>Next case</button>'
+            f'<output class="wb-run-case-label" {role_attr(ROLE.run_case_label)}></output></div>'
+            f"</figure>"
         )
 
 
@@ -126,7 +166,10 @@ EXERCISE = Build
 
 
 def _numbers(value: Any) -> Any:
-    """The reference's output as floats, keeping its nesting (tuples become lists)."""
+    """The reference's output as floats, keeping its nesting (tuples become lists); None (a refusal,
+    such as an unreachable target) and booleans (a yes/no test) stay as they are."""
+    if value is None or isinstance(value, bool):
+        return value
     if isinstance(value, (list, tuple)) or (hasattr(value, "__iter__") and not isinstance(value, (str, dict))):
         return [_numbers(v) for v in value]
     return float(value)

@@ -9,6 +9,7 @@ import math
 from typing import NamedTuple, Sequence
 
 from .linalg import Matrix, Vector, det2, matvec
+from .pose_graph import wrap_angle
 
 
 def forward_kinematics_2link(L1: float, L2: float, theta1: float, theta2: float) -> tuple[float, float]:
@@ -181,3 +182,34 @@ def end_effector_velocity(J: Matrix, qdot: Sequence[float]) -> Vector:
     [-1, 1]
     """
     return matvec(J, list(qdot))
+
+
+def ik_2link(L1: float, L2: float, x: float, y: float, elbow_up: bool):
+    """Exercise 6.7: the joint angles (θ1, θ2) for one elbow, θ1 brought into (−π, π];
+    None when the target is out of reach (the refusal a caller can test for).
+
+    >>> [round(math.degrees(a), 6) + 0.0 for a in ik_2link(1, 1, 1, 1, True)]
+    [90.0, -90.0]
+    >>> ik_2link(2, 1, 3, 1, False) is None
+    True
+    """
+    if not is_reachable(L1, L2, x, y):
+        return None
+    sol = inverse_kinematics_2link(L1, L2, x, y)
+    theta1, theta2 = sol.elbow_up if elbow_up else sol.elbow_down
+    return wrap_angle(theta1), theta2
+
+
+SINGULAR_DET = 1e-9  # |det J| below this counts as singular (a float at θ2 = π is about 1e-16, not 0)
+
+
+def jacobian_singular(L1: float, L2: float, theta1: float, theta2: float) -> tuple[Matrix, bool]:
+    """Exercise 7.8: the Jacobian and whether the arm is at a singularity (|det J| < SINGULAR_DET).
+
+    >>> J, singular = jacobian_singular(1, 1, 0, math.pi)
+    >>> singular, round(jacobian_det(1, 1, 0, math.pi), 12) + 0.0
+    (True, 0.0)
+    >>> jacobian_singular(1, 1, 0, math.pi / 2)[1]
+    False
+    """
+    return jacobian_2link(L1, L2, theta1, theta2), abs(jacobian_det(L1, L2, theta1, theta2)) < SINGULAR_DET

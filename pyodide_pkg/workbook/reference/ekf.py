@@ -9,6 +9,7 @@ from __future__ import annotations
 import math
 
 from .linalg import Matrix, add, identity, inverse, matmul, matvec, sub, transpose
+from .pose_graph import wrap_angle
 
 
 def motion_model(state, v: float, omega: float, dt: float) -> tuple[float, float, float]:
@@ -68,6 +69,17 @@ def ekf_predict(state, P: Matrix, v: float, omega: float, dt: float, Q: Matrix):
     F = motion_jacobian(state, v, omega, dt)
     P_pred = add(matmul(matmul(F, P), transpose(F)), Q)
     return motion_model(state, v, omega, dt), P_pred
+
+
+def ekf_predict_wrapped(state, P: Matrix, v: float, omega: float, dt: float, Q: Matrix):
+    """Exercise 3.10: :func:`ekf_predict` with the heading brought back into (−π, π].
+
+    >>> s, _ = ekf_predict_wrapped((0, 0, 3), [[0] * 3] * 3, 0, 1, 0.5, [[0] * 3] * 3)
+    >>> round(s[2], 4)
+    -2.7832
+    """
+    (x, y, theta), P_pred = ekf_predict(state, P, v, omega, dt, Q)
+    return (x, y, wrap_angle(theta)), P_pred
 
 
 def range_bearing(state, landmark) -> tuple[float, float]:

@@ -206,3 +206,28 @@ def step_metrics(ts: Sequence[float], ys: Sequence[float], target: float = 1.0, 
     if abs(final) > 1000:
         settling = None
     return StepMetrics(overshoot, settling, target - final)
+
+
+def pid_step_clamped(e: float, e_prev: float, integral: float, Kp: float, Ki: float, Kd: float, dt: float,
+                     u_min: float, u_max: float) -> tuple[float, float]:
+    """Exercise 8.8: one PID step with the output held in [u_min, u_max] and anti-windup.
+
+    The integral grows by e·dt unless the unclamped output would then lie beyond a limit with
+    the error pushing further that way: then it keeps its old value (conditional integration).
+    dt = 0 means no time passed: no integration and no derivative term.
+
+    Exercise 8.2's third step with the output capped at 0.5: the integral stays at 8.
+
+    >>> u, s = pid_step_clamped(1, 3, 8, 1, 0.1, 0.5, 1, -0.5, 0.5)
+    >>> u, s
+    (0.5, 8)
+    >>> pid_step_clamped(2, 1, 0, 1, 1, 1, 0, -10, 10)
+    (2.0, 0)
+    """
+    d = Kd * (e - e_prev) / dt if dt > 0 else 0.0
+    new_integral = integral + e * dt
+    u = Kp * e + Ki * new_integral + d
+    if (u > u_max and e > 0) or (u < u_min and e < 0):
+        new_integral = integral
+        u = Kp * e + Ki * integral + d
+    return min(u_max, max(u_min, u)), new_integral

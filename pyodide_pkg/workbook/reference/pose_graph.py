@@ -278,3 +278,34 @@ def gauss_newton(poses: Sequence[Pose], edges: Sequence[Edge], fixed: int = 0,
         if costs[-2] - cost <= tol * max(costs[-2], 1e-12):
             break
     return x, costs
+
+
+def gauss_newton_step_1d(x: Sequence[float], edges: Sequence[tuple[int, int, float, float]]):
+    """Exercise 5.8: one Gauss–Newton step on three poses along a line, pose 0 held fixed.
+
+    ``edges`` are ``(i, j, z, w)``: pose j measured ``z`` ahead of pose i, with weight (information) w.
+    Each edge's error is e = z − (x_j − x_i); the step solves H Δ = −b over poses 1 and 2, with
+    H = Σ w JᵀJ and b = Σ w Jᵀe (J = ∂e/∂x: +1 at i, −1 at j). Returns ``(errors before the step,
+    poses after it)``, or None when H is singular (a pose no edge ties to the anchor).
+
+    Odometry says 1 and 1, the loop closure says 2.2: the mismatch of 0.2 is shared out.
+
+    >>> errors, after = gauss_newton_step_1d([0, 1, 2], [(0, 1, 1, 1), (1, 2, 1, 1), (0, 2, 2.2, 1)])
+    >>> [round(e, 4) + 0.0 for e in errors], [round(p, 4) + 0.0 for p in after]
+    ([0.0, 0.0, 0.2], [0.0, 1.0667, 2.1333])
+    >>> gauss_newton_step_1d([0, 1, 2], [(0, 1, 1, 1)]) is None
+    True
+    """
+    errors = [z - (x[j] - x[i]) for i, j, z, w in edges]
+    H = [[0.0] * 3 for _ in range(3)]
+    b = [0.0] * 3
+    for (i, j, _, w), e in zip(edges, errors):
+        for a, ja in ((i, 1.0), (j, -1.0)):
+            b[a] += w * ja * e
+            for c, jc in ((i, 1.0), (j, -1.0)):
+                H[a][c] += w * ja * jc
+    free = [row[1:] for row in H[1:]]
+    if free[0][0] * free[1][1] - free[0][1] * free[1][0] == 0:
+        return None
+    step = matvec(inverse(free), [-b[1], -b[2]])
+    return errors, [x[0], x[1] + step[0], x[2] + step[1]]

@@ -8,6 +8,7 @@
 // stutters on, an editor nobody is looking at yet.
 import { ATTR, ROLE, RUNTIME, findRole } from "../contract.js";
 import { renderTests, setPending, showMessage } from "../feedback.js";
+import { runFigure } from "../run-figure.js";
 import { withSandbox } from "../sandbox-client.js";
 
 const runtimeSettled = new Promise((resolve) => {
@@ -91,6 +92,7 @@ export function init(ctx) {
   const runButton = findRole(ctx.el, ROLE.run);
   const limitMs = Number(host.dataset.timeLimit || 5) * 1000;
   const editor = lazyEditor(ctx, host, () => run());
+  const figure = runFigure(ctx.el);
 
   async function run() {
     setPending(ctx.el); // at once: building the editor first may take a moment
@@ -100,6 +102,7 @@ export function init(ctx) {
     const reply = await ctx.submit("run", { code: ed.getCode() }, { limitMs, onProgress: (text) => showMessage(ctx.el, text) });
     runButton.disabled = false;
     renderTests(ctx.el, reply);
+    figure.show(reply);
     const line = reply.ok && reply.value.data?.error?.line;
     if (line) ed.markLine(line);
   }

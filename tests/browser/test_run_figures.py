@@ -1,0 +1,71 @@
+"""Run figures in the page: after a run of 6.5 and 8.4 the Build widget draws the learner's
+function beside the reference (role run-figure); the keyboard steps through the cases; the
+picture is named and described for screen readers; a wrong run shows its largest error."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from playwright.sync_api import Page, expect
+
+from helpers import exercise, open_chapter, role, run_build, set_editor
+from workbook import bank
+
+
+def figure(ex):
+    return ex.locator(role("run-figure"))
+
+
+@pytest.mark.parametrize("chapter, ex_id", [(6, "6.5"), (8, "8.4")])
+def test_a_correct_run_draws_the_learners_function(page: Page, site_url, chapter, ex_id):
+    open_chapter(page, site_url, chapter)
+    ex = exercise(page, ex_id)
+    fig = figure(ex)
+    expect(fig).to_be_hidden()
+    set_editor(page, ex, bank.get(ex_id).solution)
+    assert run_build(ex) == "correct"
+    expect(fig).to_be_visible()
+    canvas = fig.locator(role("run-canvas"))
+    expect(canvas.locator("svg")).to_be_visible()
+    assert canvas.locator("svg .wb-fig-a").count() > 0  # the learner's own trace is drawn
+    expect(fig.locator(role("readout"))).to_have_text(re.compile(r"^Largest error 0( m)?: yours agrees"))
+    # named and described for assistive technology
+    assert canvas.get_attribute("role") == "img"
+    assert canvas.get_attribute("aria-label")
+    described = fig.locator("#" + canvas.get_attribute("aria-describedby"))
+    expect(described).to_have_text(re.compile(r"\w+"))
+    assert fig.get_attribute("aria-labelledby")
+
+
+def test_the_keyboard_steps_through_the_cases(page: Page, site_url):
+    open_chapter(page, site_url, 6)
+    ex = exercise(page, "6.5")
+    set_editor(page, ex, bank.get("6.5").solution)
+    assert run_build(ex) == "correct"
+    fig = figure(ex)
+    label = fig.locator(role("run-case-label"))
+    expect(label).to_have_text(re.compile(r"^test 1: "))
+    first = fig.locator(role("run-canvas")).get_attribute("aria-label")
+    fig.locator(role("run-case")).focus()
+    page.keyboard.press("ArrowRight")
+    expect(label).to_have_text(re.compile(r"^test 2: "))
+    assert fig.locator(role("run-canvas")).get_attribute("aria-label") != first
+    fig.locator(role("run-next")).focus()
+    page.keyboard.press("Enter")
+    expect(label).to_have_text(re.compile(r"^test 3: "))
+    fig.locator(role("run-previous")).focus()
+    page.keyboard.press("Enter")
+    expect(label).to_have_text(re.compile(r"^test 2: "))
+    assert fig.locator(role("run-case")).get_attribute("aria-valuetext").startswith("test 2")
+
+
+def test_a_wrong_run_shows_its_largest_error(page: Page, site_url):
+    open_chapter(page, site_url, 8)
+    ex = exercise(page, "8.4")
+    set_editor(page, ex, bank.get("8.4").starter)
+    assert run_build(ex) == "incorrect"
+    fig = figure(ex)
+    expect(fig).to_be_visible()
+    expect(fig.locator(role("readout"))).to_have_text(re.compile(r"^Largest error 0\.\d+ at run \d"))
+    expect(fig.locator(role("run-case-label"))).to_have_text(re.compile(r"error 0\.\d+"))
