@@ -26,7 +26,7 @@ import copy
 import json
 import random
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Callable, ClassVar
 
 from workbook_sandbox import harness, runner
@@ -35,6 +35,7 @@ from workbook_sandbox.values import show
 
 from ..build_judge import Case, Report, compare, hidden_summary, read_report
 from ..contract import ROLE, TAG
+from ..variants import check_seed
 from ..verdict import Verdict
 from .base import Exercise, Page, escape, role_attr
 
@@ -61,6 +62,7 @@ class Build(Exercise):
     abs_tol: float = 1e-9
     time_limit: float = 5.0
     harness: str = "call"
+    seed: int = 0  # which hidden cases: 0 the exercise's own, any other a fresh draw (a review, new cases)
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
     reveal_label: ClassVar[str] = "Show solution"
@@ -69,8 +71,14 @@ class Build(Exercise):
     def signature(self) -> str:
         return f"{self.function}({', '.join(self.params)})"
 
+    def variant(self, seed: object) -> "Build":
+        """This exercise with seed ``seed``'s hidden cases (the examples stay): the page's ``variant``."""
+        seed = check_seed(seed)
+        return self if seed == self.seed else replace(self, seed=seed)
+
     def hidden_cases(self) -> list[tuple]:
-        rng = random.Random(f"hidden:{self.id}")
+        """The hidden cases, the same for the same seed (the seed 0 ones are the exercise's own)."""
+        rng = random.Random(f"hidden:{self.id}" + (f":{self.seed}" if self.seed else ""))
         return [self.random_args(rng) for _ in range(self.hidden_count)]
 
     def arguments(self) -> list[list]:
