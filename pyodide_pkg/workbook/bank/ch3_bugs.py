@@ -54,9 +54,10 @@ def _covariance_bug() -> str:
     F = motion_jacobian(*_EAST)
     right = predicted_covariance(F, _P, _Q)
     wrong = add(matmul(matmul(transpose(F), _P), F), _Q)
-    return (f"P⁻ = F P Fᵀ + Q: F carries the uncertainty forward, Fᵀ only brings it back into place. With the "
-            f"factors swapped, the doubt about the heading is no longer turned into doubt about where the robot "
-            f"went. Driving east at 1 m/s for 1 s with a heading variance of {fmt(_P[2][2])} rad², the sideways "
+    return (f"P⁻ = F P Fᵀ + Q: F on the left and Fᵀ on the right carry the doubt about the heading, through F's θ "
+            f"column, into the doubt about where the robot went. Swapped, Fᵀ P F carries it the other way, from "
+            f"the position into the heading. Driving east at {fmt(_EAST[1])} m/s for {fmt(_EAST[3])} s with a "
+            f"heading variance of {fmt(_P[2][2])} rad², the sideways "
             f"variance should grow to {fmt(right[1][1])} m² (σ = {fmt(math.sqrt(right[1][1]))} m) but stays "
             f"{fmt(wrong[1][1])} m² (σ = {fmt(math.sqrt(wrong[1][1]))} m), and the heading's variance grows to "
             f"{fmt(wrong[2][2])} rad² instead of {fmt(right[2][2])}. The filter is overconfident about where it "
