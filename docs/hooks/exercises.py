@@ -10,8 +10,8 @@ answer kind without its package (``workbook/answer_kinds/A/`` and
 ``docs/assets/js/answer-kinds/A.js``), an unknown figure, and a ``{{name}}``
 placeholder that the exercise's generator does not fill (``exercise_text.py``).
 It also writes ``assets/exercises.json`` (the chapters and the ids on each, each
-exercise's title, and which ones draw variants: for the progress pages and the
-review queue) and exposes the contract to the theme
+exercise's title, which ones draw variants and which join the review queue: for the
+progress pages and the Practise page) and exposes the contract to the theme
 templates as ``config.extra.contract``.
 """
 
@@ -32,7 +32,7 @@ from render_exercise import PageTools, chapter_list_html, dom_id, exercise_html,
 from render_figure import figure_html
 from workbook import bank, figures
 from workbook.answer_kinds import classes as answer_classes
-from workbook.contract import ANSWER_KINDS, DATA, KINDS
+from workbook.contract import ANSWER_KINDS, DATA, KINDS, REVIEW_KINDS
 from workbook.variants import VariantError, fill
 
 SLOT = '<div data-wb-slot="{id}"></div>'
@@ -192,6 +192,8 @@ def on_post_build(config, **kwargs):
     out.parent.mkdir(parents=True, exist_ok=True)
     everything = bank.all_exercises()
     variants = [ex.id for ex in everything if getattr(ex, "vary", None) is not None]
+    reviewed = [ex.id for ex in everything if ex.kind in REVIEW_KINDS]
     titles = {ex.id: ex.title for ex in everything}
-    out.write_text(json.dumps({"version": 2, "chapters": chapters, "variants": variants, "titles": titles},
+    out.write_text(json.dumps({"version": 2, "chapters": chapters, "variants": variants, "reviewed": reviewed,
+                               "titles": titles},
                               ensure_ascii=False, separators=(",", ":")))

@@ -39,6 +39,7 @@ TAG = _names(DATA["tags"])
 ERROR = _names(DATA["errors"])
 KINDS: tuple[str, ...] = tuple(DATA["kinds"])
 ANSWER_KINDS: tuple[str, ...] = tuple(DATA["answerKinds"])
+REVIEW_KINDS: tuple[str, ...] = tuple(DATA["reviewKinds"])  # the kinds that join the review queue
 STATUSES: tuple[str, ...] = tuple(DATA["statuses"])
 ERRORS: tuple[str, ...] = tuple(DATA["errors"])
 OPS: dict[str, dict[str, Any]] = DATA["ops"]

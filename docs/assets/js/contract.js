@@ -15,6 +15,7 @@ export const OFFLINE = names(contract.offlineStates);
 export const BOOT_PHASE = names(contract.bootPhases);
 export const KINDS = Object.freeze([...contract.kinds]);
 export const ANSWER_KINDS = Object.freeze([...contract.answerKinds]);
+export const REVIEW_KINDS = Object.freeze([...contract.reviewKinds]); // the kinds that join the review queue
 
 /** `[data-role="NAME"]`, optionally with more attribute tests. */
 export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;

@@ -2,7 +2,7 @@
 // store: the parts every kind shares (state, attempts, hint and derivation); the
 // kind's own widget is docs/assets/js/kinds/<kind>.js, loaded by name.
 
-import { ATTR, ROLE, STATE, findRole } from "./contract.js";
+import { ATTR, REVIEW_KINDS, ROLE, STATE, findRole } from "./contract.js";
 import { setPending, showMessage, showReply } from "./feedback.js";
 import { afterGrade, afterReveal } from "./review.js";
 
@@ -93,8 +93,11 @@ function replayEarlySubmit(el) {
 export function initExercise(el, shared) {
   if (el.dataset.wbReady) return;
   el.dataset.wbReady = "true";
-  const ctx = { ...shared, el, id: el.getAttribute(ATTR.exercise), variant: 0 };
-  ctx.reviewed = el.hasAttribute(ATTR.variant); // exercises that draw variants join the review queue
+  const kind = el.getAttribute(ATTR.kind);
+  // The variant: a Derive exercise's numbers (variants.js sets it), a Build exercise's hidden
+  // tests (a review on the Practise page starts a fresh seed), and what a review's answers count for.
+  const ctx = { ...shared, el, id: el.getAttribute(ATTR.exercise), variant: shared.start ?? 0 };
+  ctx.reviewed = REVIEW_KINDS.includes(kind); // Derive, Build and Debug join the review queue
   ctx.submit = (op, payload, options) => submit(ctx, op, { ...payload, variant: ctx.variant }, options);
   const saved = ctx.progress.get(ctx.id);
   const onScreen = shared.start ?? saved.variant ?? 0;
@@ -103,7 +106,6 @@ export function initExercise(el, shared) {
     showMessage(el, saved.solvedAfterReveal ? "Solved earlier (after revealing the solution)." : "Solved earlier.");
   }
   initHelp(ctx);
-  const kind = el.getAttribute(ATTR.kind);
   import(`./kinds/${kind}.js`)
     .then((module) => module.init(ctx))
     .then(() => replayEarlySubmit(el))

@@ -5,11 +5,13 @@
 
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
-import { dueLine, el, loadManifest } from "./progress-view.js";
+import { dueLine, el, loadManifest, reviewedIds } from "./progress-view.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
 
-const pages = new Map(); // chapter address -> Promise<Document>
+const pages = new Map();
+// What is new about a review, by kind (a Debug program is the same: find its bug again).
+const FRESH = { derive: ", with new numbers.", build: ", with new hidden tests." }; // chapter address -> Promise<Document>
 
 function chapterPage(href) {
   if (!pages.has(href)) {
@@ -33,7 +35,7 @@ async function exerciseFrom(manifest, id, siteRoot) {
 
 /** The next exercise to serve: the longest overdue, else (`anyway`) the next to fall due or any. */
 function pick(manifest, progress, skip, anyway) {
-  const ids = manifest.variants || [];
+  const ids = reviewedIds(manifest);
   const due = dueIds(progress, ids).filter((id) => id !== skip);
   if (due.length || !anyway) return due[0] ?? null;
   const queued = ids.filter((id) => id !== skip && inQueue(progress.get(id)))
@@ -62,7 +64,7 @@ export async function initPractise(shared, siteRoot) {
   const say = () => {
     const { text } = dueLine(manifest, progress);
     status.textContent = current ? `${text} Now: exercise ${current}.` : text;
-    const others = dueIds(progress, manifest.variants || []).filter((id) => id !== current).length;
+    const others = dueIds(progress, reviewedIds(manifest)).filter((id) => id !== current).length;
     next.textContent = others ? "Next due exercise" : "Practise another";
   };
 
@@ -77,7 +79,7 @@ export async function initPractise(shared, siteRoot) {
       const { node, chapter, href } = await exerciseFrom(manifest, id, siteRoot);
       const heading = el("h2", { id: `${node.id}-title` }, el("span", { id: `${node.id}-name`, textContent: `${id} · ${manifest.titles?.[id] ?? ""}` }));
       const from = el("p", { className: "wb-practise-from" }, "From ",
-        el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }), ", with new numbers.");
+        el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }), FRESH[node.getAttribute(ATTR.kind)] ?? ".");
       card.replaceChildren(heading, from, node);
       initExercise(node, { ...shared, start: freshVariant() });
     } catch (err) {

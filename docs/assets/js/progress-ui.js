@@ -48,7 +48,7 @@ function chapterSummary(manifest, progress, siteRoot) {
     else article.prepend(box);
   }
   box.classList.toggle("is-done", count.done);
-  const review = count.masterable ? [el("span", { className: "wb-bar-note", textContent: `Review: ${reviewText(count)}.` })] : [];
+  const review = count.reviewable ? [el("span", { className: "wb-bar-note", textContent: `Review: ${reviewText(count)}.` })] : [];
   const finished = count.done ? [el("span", { className: "wb-bar-note wb-finished", textContent: "✓ Chapter finished." })] : [];
   box.replaceChildren(...countBars(count), ...review, ...finished);
 }

@@ -25,14 +25,19 @@ export function el(tag, props = {}, ...children) {
   return node;
 }
 
+/** The exercises that join the review queue (Derive, Build and Debug; an older manifest: the Derive ones). */
+export const reviewedIds = (manifest) => manifest.reviewed || manifest.variants || [];
+
 /**
  * The counts of `ids`. Solved: one variant answered before its derivation was
- * opened. Mastered: MASTERED different variants solved so, which only the
- * exercises that draw variants (`manifest.variants`: the Derive ones) can be.
- * Due: of those in the review queue, the ones whose time has come.
+ * opened (a Build exercise: its tests passed). Mastered: MASTERED different
+ * variants solved so, which only the exercises that draw variants
+ * (`manifest.variants`: the Derive ones) can be. Due: of those in the review
+ * queue (`manifest.reviewed`), the ones whose time has come.
  */
 export function tally(manifest, progress, ids) {
   const drawing = new Set(manifest.variants || []);
+  const reviewed = new Set(reviewedIds(manifest));
   const count = { solved: 0, afterReveal: 0, mastered: 0, masterable: 0, total: ids.length };
   for (const id of ids) {
     const r = progress.get(id);
@@ -43,7 +48,8 @@ export function tally(manifest, progress, ids) {
       if (isMastered(r)) count.mastered++;
     }
   }
-  const queued = ids.filter((id) => drawing.has(id));
+  const queued = ids.filter((id) => reviewed.has(id));
+  count.reviewable = queued.length;
   count.due = dueIds(progress, queued).length;
   count.nextDue = nextDue(progress, queued);
   count.done = ids.length > 0 && count.solved + count.afterReveal === ids.length;
@@ -85,8 +91,11 @@ export function countBars(count) {
   return out;
 }
 
-export const MASTERY_RULE = `Solved: answered correctly before opening the solution. Mastered: solved that way with ${MASTERED} different sets of numbers, `
-  + "which only the exercises that draw new numbers (the Derive ones) can offer, so they alone count towards it.";
+export const MASTERY_RULE = "Solved: answered correctly before opening the solution (a Build exercise: all its tests pass; "
+  + `a Debug exercise: the buggy line found). Mastered: solved that way with ${MASTERED} different sets of numbers, `
+  + "which only the exercises that draw new numbers (the Derive ones) can offer, so they alone count towards it. "
+  + "Review: Derive, Build and Debug exercises come back when they are due, Derive ones with new numbers and Build ones "
+  + "with new hidden tests.";
 
 export function reviewText(count) {
   if (count.due) return `${plural(count.due, "exercise")} due for review`;
@@ -96,7 +105,7 @@ export function reviewText(count) {
 
 /** The review queue in a sentence (the home page, the Practise page). */
 export function dueLine(manifest, progress) {
-  const ids = manifest.variants || [];
+  const ids = reviewedIds(manifest);
   const due = dueIds(progress, ids).length;
   const next = nextDue(progress, ids);
   if (due) return { due, text: `${due} exercise${due === 1 ? " is" : "s are"} due for review.` };

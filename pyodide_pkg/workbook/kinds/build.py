@@ -26,7 +26,7 @@ import copy
 import json
 import random
 import sys
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from typing import Any, Callable, ClassVar
 
 from workbook_sandbox import harness, runner
@@ -36,6 +36,7 @@ from workbook_sandbox.values import show
 from ..build_judge import Case, Report, compare, hidden_summary, read_report
 from ..contract import ROLE, TAG
 from ..figures import runs
+from ..variants import check_seed
 from ..verdict import Verdict
 from .base import Exercise, Page, escape, role_attr
 
@@ -68,6 +69,7 @@ class Build(Exercise):
     time_limit: float = 5.0
     harness: str = "call"
     run_figure: str = ""
+    seed: int = 0  # which hidden cases: 0 the exercise's own, any other a fresh draw (a review, new cases)
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
     reveal_label: ClassVar[str] = "Show solution"
@@ -76,8 +78,14 @@ class Build(Exercise):
     def signature(self) -> str:
         return f"{self.function}({', '.join(self.params)})"
 
+    def variant(self, seed: object) -> "Build":
+        """This exercise with seed ``seed``'s hidden cases (the examples stay): the page's ``variant``."""
+        seed = check_seed(seed)
+        return self if seed == self.seed else replace(self, seed=seed)
+
     def hidden_cases(self) -> list[tuple]:
-        rng = random.Random(f"hidden:{self.id}")
+        """The edge cases, then random ones: the same for the same seed (the seed 0 ones are the exercise's own)."""
+        rng = random.Random(f"hidden:{self.id}" + (f":{self.seed}" if self.seed else ""))
         return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]
 
     def arguments(self) -> list[list]:

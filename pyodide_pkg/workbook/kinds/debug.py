@@ -6,7 +6,7 @@ from dataclasses import dataclass, field
 from typing import Any, Callable, ClassVar, Mapping
 
 from ..verdict import Verdict
-from .base import ATTR, ROLE, Exercise, Page, check_button, form, role_attr
+from .base import ATTR, ROLE, Exercise, Page, check_button, escape, form, role_attr
 
 
 @dataclass(frozen=True)
@@ -14,6 +14,8 @@ class Debug(Exercise):
     """``notes`` maps every other line number (1-based) to a word on what that
     line does right; ``bug`` explains the bug; ``fixed_line`` is the repair,
     used by the tests to prove the program then agrees with ``reference``.
+    ``symptom`` names a drawing of what the bug does (``workbook.figures.symptoms``),
+    built into the widget hidden and shown with the explanation once the bug is found.
     """
 
     code: str = ""
@@ -24,6 +26,7 @@ class Debug(Exercise):
     function: str = ""
     reference: Callable[..., Any] | None = None
     cases: tuple[tuple, ...] = ()
+    symptom: str = ""
     kind: ClassVar[str] = "debug"
 
     @property
@@ -56,7 +59,18 @@ class Debug(Exercise):
             f"Click the line with the bug (or move with the arrow keys and press Space).</p>"
             f'<ol class="wb-code highlight" role="listbox" aria-labelledby="{base}-lines-label" '
             f'aria-describedby="{base}-feedback">{rows}</ol>{check_button()}'
-        ))
+        )) + self._symptom_html(base)
+
+    def _symptom_html(self, base: str) -> str:
+        """The symptom's figure, hidden until the bug is found (build side only)."""
+        if not self.symptom:
+            return ""
+        from ..figures.symptoms import render
+
+        svg, text = render(self.symptom)
+        return (f'<figure class="wb-symptom" {role_attr(ROLE.symptom)} id="{base}-symptom" hidden>'
+                f'<div class="wb-fig-canvas">{svg}</div>'
+                f'<figcaption>What the bug does: {escape(text)}</figcaption></figure>')
 
 
 EXERCISE = Debug

@@ -165,6 +165,22 @@ def innovation(z, h) -> list[float]:
     return [zi - hi for zi, hi in zip(z, h)]
 
 
+def innovation_wrapped(z, h) -> list[float]:
+    """The innovation of a (range, bearing) sighting, the bearing brought into (−π, π].
+
+    Two bearings either side of ±π point almost the same way, but their plain
+    difference is nearly 2π (the bug of exercise 4.9); wrapped, it is the
+    small angle between them.
+
+    >>> [round(v, 4) for v in innovation((4.8, -3.1), (5, 3.1))]
+    [-0.2, -6.2]
+    >>> [round(v, 4) for v in innovation_wrapped((4.8, -3.1), (5, 3.1))]
+    [-0.2, 0.0832]
+    """
+    nu = innovation(z, h)
+    return [nu[0], wrap_angle(nu[1]), *nu[2:]]
+
+
 def ekf_update_matrix(x, P: Matrix, z, h, H: Matrix, R: Matrix):
     """The general update, given the predicted measurement ``h`` = h(x⁻).
 

@@ -69,6 +69,54 @@ def pid_step(e: float, e_prev: float, integral: float, Kp: float, Ki: float, Kd:
     return u, new_integral
 
 
+def pid_step_saturated(e: float, e_prev: float, integral: float, Kp: float, Ki: float, Kd: float,
+                       dt: float, u_max: float, anti_windup: bool = True) -> tuple[float, float]:
+    """One PID step whose output saturates at ±``u_max``, without integral windup.
+
+    Returns ``(u, new_integral)``: u clipped into [−u_max, u_max]; the integral
+    grows by e·dt only when the output with that growth is not saturated
+    (conditional integration). A saturated actuator cannot act on a larger
+    integral, so one that kept growing (``anti_windup=False``: the bug of
+    exercise 8.9) would only have to be unwound later, by overshooting.
+
+    >>> pid_step_saturated(1, 1, 0, 2, 1, 0, 0.1, 5)
+    (2.1, 0.1)
+    >>> pid_step_saturated(4, 4, 0.5, 2, 1, 0, 0.1, 5)
+    (5, 0.5)
+    >>> pid_step_saturated(4, 4, 0.5, 2, 1, 0, 0.1, 5, anti_windup=False)
+    (5, 0.9)
+    """
+    _check_dt(dt)
+    candidate = integral + e * dt
+    u = Kp * e + Ki * candidate + Kd * (e - e_prev) / dt
+    u_out = max(-u_max, min(u_max, u))
+    return u_out, (integral if anti_windup and u_out != u else candidate)
+
+
+def simulate_saturated(step, Kp: float, Ki: float, Kd: float, u_max: float, dt: float = 0.01,
+                       duration: float = 10.0, target: float = 1.0) -> tuple[list[float], list[float]]:
+    """:func:`simulate_step_response`'s plant (ÿ + 2ẏ + y = u) driven by ``step``, a function
+    with :func:`pid_step_saturated`'s arguments (the controller under test, whose output saturates).
+
+    >>> ts, ys = simulate_saturated(pid_step_saturated, 6, 4, 1, 2.5)
+    >>> round(ys[-1], 3), round(max(ys), 3)
+    (1.0, 1.033)
+    """
+    _check_dt(dt)
+    y = velocity = integral = 0.0
+    e_prev = target - y
+    ts, ys = [0.0], [y]
+    for k in range(1, int(round(duration / dt)) + 1):
+        e = target - y
+        u, integral = step(e, e_prev, integral, Kp, Ki, Kd, dt, u_max)
+        e_prev = e
+        velocity += (u - 2.0 * velocity - y) * dt
+        y += velocity * dt
+        ts.append(round(k * dt, 10))
+        ys.append(y)
+    return ts, ys
+
+
 def pid_terms(errors: Sequence[float], Kp: float, Ki: float, Kd: float, dt: float,
               e_prev: float = 0.0) -> tuple[float, float, float]:
     """The three terms (P, I, D) of the output at the last of ``errors``; they add up to u.

@@ -1,5 +1,7 @@
 // Debug: a listbox of code lines; one line is selected at a time, by click or keyboard.
-import { ATTR, ROLE, findRoles } from "../contract.js";
+// A correct answer's explanation comes with the symptom's figure (role "symptom",
+// drawn at build time and hidden until then), if the exercise has one.
+import { ATTR, ROLE, STATUS, findRole, findRoles } from "../contract.js";
 
 export function init(ctx) {
   const form = ctx.el.querySelector("form");
@@ -14,8 +16,10 @@ export function init(ctx) {
       l.tabIndex = l === line ? 0 : -1;
     }
   };
+  const symptom = findRole(ctx.el, ROLE.symptom);
   const saved = ctx.progress.get(ctx.id);
-  const restored = lines.find((l) => number(l) === Number(saved.last));
+  // A review (the Practise page) starts with no line picked: the bug is to be found again.
+  const restored = ctx.start == null && lines.find((l) => number(l) === Number(saved.last));
   if (restored) select(restored);
   const onKey = (line, event) => {
     const i = lines.indexOf(line);
@@ -36,9 +40,10 @@ export function init(ctx) {
     line.addEventListener("click", () => select(line));
     line.addEventListener("keydown", (event) => onKey(line, event));
   }
-  form.addEventListener("submit", (event) => {
+  form.addEventListener("submit", async (event) => {
     event.preventDefault();
     const answer = selected ? number(selected) : null; // none picked: the grader says what to do
-    ctx.submit("grade", { answer }, { saved: { last: answer } });
+    const reply = await ctx.submit("grade", { answer }, { saved: { last: answer } });
+    if (symptom) symptom.hidden = !(reply.ok && reply.value.status === STATUS.correct);
   });
 }

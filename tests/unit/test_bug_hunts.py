@@ -1,0 +1,190 @@
+"""The bug hunts from real robots (Debug 0.8, 2.9, 3.11, 3.12, 4.9, 6.8, 7.9, 8.9) and Build's fresh hidden cases.
+
+test_bank.py proves for every Debug exercise that the program fails its cases, agrees
+with the reference once its marked line is fixed, and that every other line has a note.
+Here each bug's symptom is asserted concretely (what it does to the robot), the fix is
+shown to remove it, and the numbers the explanation quotes are the ones the code gives.
+"""
+
+from __future__ import annotations
+
+import math
+import re
+from html import escape
+
+import pytest
+
+from workbook import bank
+from workbook.api import dispatch
+from workbook.contract import ATTR, REVIEW_KINDS, ROLE
+from workbook.figures import symptoms
+from workbook.kinds.base import PlainPage
+from workbook.number_format import fmt, prose
+from workbook.reference.arm import forward_kinematics_2link
+from workbook.reference.pid import simulate_saturated
+from workbook.reference.rotation3d import quat_norm
+
+HUNTS = ("0.8", "2.9", "3.11", "3.12", "4.9", "6.8", "7.9", "8.9")
+
+
+def programs(exercise_id: str):
+    """The exercise and its program, buggy and fixed, as functions."""
+    ex = bank.get(exercise_id)
+    lines = ex.lines
+    fixed_lines = [*lines[: ex.bug_line - 1], ex.fixed_line, *lines[ex.bug_line:]]
+    return ex, load(ex.code, ex.function), load("\n".join(fixed_lines), ex.function)
+
+
+def load(code: str, name: str):
+    namespace: dict = {}
+    exec(compile(code, "<debug>", "exec"), namespace)  # our own program, not a learner's
+    return namespace[name]
+
+
+def flat(v) -> list[float]:
+    return [x for item in v for x in (flat(item) if isinstance(item, (list, tuple)) else [float(item)])]
+
+
+def close(a, b, tol=1e-9) -> bool:
+    a, b = flat(a), flat(b)
+    return len(a) == len(b) and all(math.isclose(x, y, rel_tol=tol, abs_tol=tol) for x, y in zip(a, b))
+
+
+@pytest.mark.parametrize("exercise_id", HUNTS)
+def test_each_hunt_is_a_short_debug_program_with_one_marked_line(exercise_id):
+    ex, buggy, fixed = programs(exercise_id)
+    assert ex.kind == "debug"
+    assert 6 <= len(ex.lines) <= 14
+    assert all(line.strip() for line in ex.lines), "a blank line would need a note of its own"
+    assert ex.check(ex.bug_line).status == "correct" and ex.check(ex.bug_line).message == ex.bug
+    for n in ex.notes:
+        verdict = ex.check(n)
+        assert verdict.status == "incorrect" and ex.notes[n].rstrip(".") in verdict.message
+    for args in ex.cases:
+        assert close(fixed(*args), ex.reference(*args))  # the fix agrees with the reference
+    assert "Fix:" in ex.bug and ex.fixed_line.strip()[:12] in ex.bug
+
+
+def test_atan_sends_the_arm_to_the_opposite_quadrant():
+    ex, buggy, fixed = programs("6.8")
+    L1, L2, x, y = 1.0, 1.0, -1.2, 0.8
+    tip_bug = forward_kinematics_2link(L1, L2, *buggy(L1, L2, x, y))
+    tip_fixed = forward_kinematics_2link(L1, L2, *fixed(L1, L2, x, y))
+    assert close(tip_fixed, (x, y))
+    assert tip_bug[0] > 0 and tip_bug[1] < 0  # the target is in the second quadrant, the tip in the fourth
+    assert close(tip_bug, (-x, -y))
+    assert f"({prose(tip_bug[0])}, {prose(tip_bug[1])})" in ex.bug
+    with pytest.raises(ZeroDivisionError):
+        buggy(L1, L2, 0.0, 1.5)
+    assert close(forward_kinematics_2link(L1, L2, *fixed(L1, L2, 0.0, 1.5)), (0.0, 1.5))
+
+
+def test_degrees_in_cos_scatter_the_lidar_points():
+    ex, buggy, fixed = programs("0.8")
+    right, wrong = fixed(0.0, 0.0, 0.0, 2.0, 90.0), buggy(0.0, 0.0, 0.0, 2.0, 90.0)
+    assert close(right, (0.0, 2.0))  # 2 m to the left of a robot facing east
+    assert math.dist(right, wrong) > 0.5
+    assert math.isclose(math.hypot(*wrong), 2.0)  # the range is right, the direction is not
+    assert f"({prose(wrong[0])}, {prose(wrong[1])})" in ex.bug
+
+
+def test_an_unwrapped_bearing_innovation_is_nearly_a_full_turn():
+    ex, buggy, fixed = programs("4.9")
+    seen = ex.cases[0]
+    nu_bug, nu_fixed = buggy(*seen)[1], fixed(*seen)[1]
+    assert abs(nu_bug) > math.pi and abs(nu_fixed) < 0.1
+    assert math.isclose(abs(nu_bug - nu_fixed), 2 * math.pi)
+    assert prose(nu_bug) in ex.bug and prose(nu_fixed) in ex.bug
+
+
+def test_the_quaternion_norm_drifts_without_renormalising():
+    ex, buggy, fixed = programs("2.9")
+    start, rate, dt = (1.0, 0.0, 0.0, 0.0), (0.0, 0.0, 5.0), 0.01
+    assert quat_norm(buggy(start, *rate, dt, 1000)) > 1.3
+    assert abs(quat_norm(fixed(start, *rate, dt, 1000)) - 1) < 1e-12
+    norms = [quat_norm(buggy(start, *rate, dt, n)) for n in range(60)]
+    first = next(n for n, v in enumerate(norms) if v > 1.01)
+    facts = symptoms.gyro_facts()
+    assert first == facts["first_over"] and f"after {first} steps" in ex.bug
+    assert fmt(facts["final"]) in ex.bug and math.isclose(facts["final"], quat_norm(buggy(start, *rate, dt, 1000)))
+
+
+def test_swapped_factors_hide_the_sideways_uncertainty():
+    ex, buggy, fixed = programs("3.11")
+    F, P, Q = ex.cases[0]
+    wrong, right = buggy(F, P, Q), fixed(F, P, Q)
+    assert right[1][1] > 5 * wrong[1][1]  # the heading's doubt belongs in y; the bug leaves y's variance small
+    assert math.isclose(wrong[1][1], P[1][1] + Q[1][1])
+    assert fmt(right[1][1]) in ex.bug and fmt(wrong[1][1]) in ex.bug
+
+
+def test_milliseconds_make_the_robot_drive_a_thousand_times_too_far():
+    ex, buggy, fixed = programs("3.12")
+    args = ex.cases[0]
+    assert math.isclose(buggy(*args)[0], 1000 * fixed(*args)[0])
+    assert fmt(buggy(*args)[0]) in ex.bug and fmt(fixed(*args)[0]) in ex.bug
+
+
+def test_the_sign_error_calls_the_sweeping_arm_still():
+    ex, buggy, fixed = programs("7.9")
+    straight = (1.0, 1.0, 0.0, 0.0, 1.0, 0.0)
+    assert buggy(*straight)[1] == 0.0
+    assert math.isclose(fixed(*straight)[1], 2.0)  # (L1 + L2)·ω1
+
+
+def test_windup_overshoots_more_than_the_fixed_controller():
+    ex, buggy, fixed = programs("8.9")
+    gains, limit = symptoms.WINDUP_GAINS, symptoms.WINDUP_LIMIT
+    peaks = {name: max(simulate_saturated(step, *gains, limit)[1]) for name, step in (("bug", buggy), ("fixed", fixed))}
+    assert peaks["bug"] - 1 > 0.3 and peaks["fixed"] - 1 < 0.05
+    facts = symptoms.windup_facts()
+    assert math.isclose(100 * (peaks["bug"] - 1), facts["overshoot"]["bug"])
+    assert math.isclose(100 * (peaks["fixed"] - 1), facts["overshoot"]["fixed"])
+
+
+@pytest.mark.parametrize("exercise_id", [i for i in HUNTS if bank.get(i).symptom])
+def test_a_symptom_is_drawn_hidden_in_the_widget_with_its_description(exercise_id):
+    ex = bank.get(exercise_id)
+    html = ex.widget("ex-x", PlainPage())
+    figure = re.search(rf'<figure [^>]*{ATTR.role}="{ROLE.symptom}"[^>]*>(.*?)</figure>', html, re.S)
+    assert figure and " hidden" in figure.group(0).split(">")[0]
+    svg, text = symptoms.render(ex.symptom)
+    assert svg in figure.group(1) and "<title>" in svg
+    assert "<figcaption>" in figure.group(1) and escape(text) in figure.group(1)
+
+
+def test_exercises_without_a_symptom_draw_none():
+    assert ROLE.symptom not in bank.get("3.5").widget("ex-3-5", PlainPage())
+
+
+def test_debug_and_build_join_the_review_queue():
+    assert set(REVIEW_KINDS) == {"derive", "build", "debug"}
+
+
+# ---- Build: a seed carried in the request draws fresh hidden cases --------------------
+BUILDS = [ex for ex in bank.all_exercises() if ex.kind == "build"]
+
+
+@pytest.mark.parametrize("ex", BUILDS, ids=lambda e: e.id)
+def test_build_hidden_cases_follow_the_seed_and_the_examples_stay(ex):
+    own, a, a_again, b = ex.variant(0), ex.variant(17), bank.variant(ex.id, 17), ex.variant(18)
+    assert own is ex
+    assert a.hidden_cases() == a_again.hidden_cases() == ex.variant(17).hidden_cases()
+    assert a.hidden_cases() != b.hidden_cases() != ex.hidden_cases()
+    assert a.hidden_cases() != ex.hidden_cases()
+    for drawn in (a, b):
+        assert drawn.arguments()[: len(ex.examples)] == ex.arguments()[: len(ex.examples)]
+        assert len(drawn.arguments()) == len(ex.arguments())
+    assert a.check(ex.solution).status == "correct"
+
+
+def test_a_review_s_cases_and_judgement_use_the_same_fresh_cases():
+    ex = bank.get("0.5")
+    fresh = dispatch({"op": "cases", "exercise": "0.5", "code": ex.solution, "variant": 4321})
+    own = dispatch({"op": "cases", "exercise": "0.5", "code": ex.solution})
+    assert fresh["ok"] and own["ok"] and fresh["value"]["job"] != own["value"]["job"]
+    assert fresh["value"]["job"] == dispatch({"op": "cases", "exercise": "0.5", "code": "", "variant": 4321})["value"]["job"]
+    ran = dispatch({"op": "run", "exercise": "0.5", "code": ex.solution, "variant": 4321})
+    assert ran["ok"] and ran["value"]["status"] == "correct"
+    bad = dispatch({"op": "cases", "exercise": "0.5", "code": "", "variant": -3})
+    assert not bad["ok"] and bad["error"]["kind"] == "bad-request"
