@@ -64,3 +64,21 @@ def test_a_wrong_matrix_carried_into_the_next_matrix(page, site_url):
     page.wait_for_function("el => el.dataset.state === 'incorrect'", arg=later.element_handle())
     assert later.get_attribute(ATTR.carried) == "3.7"
     expect(later.locator(role("carried-from"))).to_have_text("Back to exercise 3.7")
+
+
+def test_carried_answers_travel_through_export_and_import(page, site_url):
+    from test_progress import import_file, open_progress_page
+
+    open_progress_page(page, site_url)
+    v3 = {"format": "robotics-math-workbook-progress", "version": 3, "exported": "2025-01-01T00:00:00Z",
+          "exercises": {"9.6": {"carried": [0, 4], "attempts": 2, "updated": 1_700_000_000_000}}}
+    import_file(page, json.dumps(v3))
+    page.wait_for_function("() => (workbook.progress.get('9.6').carried || []).length === 2")
+    assert page.evaluate("workbook.progress.get('9.6')")["carried"] == [0, 4]
+    assert page.evaluate("workbook.progress.exportData()")["exercises"]["9.6"]["carried"] == [0, 4]
+    # a version-2 file (before carried existed) still imports, and merges with what is there
+    v2 = {**v3, "version": 2, "exercises": {"9.6": {"missed": [1], "attempts": 3, "updated": 1_700_000_000_001}}}
+    import_file(page, json.dumps(v2))
+    page.wait_for_function("() => (workbook.progress.get('9.6').missed || []).length === 1")
+    record = page.evaluate("workbook.progress.get('9.6')")
+    assert record["carried"] == [0, 4] and record["missed"] == [1] and record["attempts"] == 3
