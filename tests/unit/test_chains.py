@@ -51,6 +51,18 @@ def _off(later, theirs):
     raise AssertionError("no answer that follows from neither value")
 
 
+def _nothing_carried_into(later, link, rng):
+    """A draw that carries none of the source's numbers ignores a wrong answer to it, for any of its variants."""
+    for at in (0, 1):
+        source = bank.variant(link.source, at)
+        typed = _wrong(source, rng)
+        value = chains.value_of(source.answer.reader.read(source.answer, typed))
+        theirs = later.carried_answer({link.name: value})
+        verdict = chains.grade(later, theirs.typed(theirs.key), {link.source: {"answer": typed, "variant": at}},
+                               bank.variant)
+        assert verdict.tag != "carried", (later.id, later.seed, at)
+
+
 @pytest.mark.parametrize("exercise_id,link", CHAINED, ids=[f"{i}<-{u.source}" for i, u in CHAINED])
 def test_a_wrong_earlier_value_is_carried_forward(exercise_id, link):
     rng = random.Random(f"chain {exercise_id}")
@@ -58,6 +70,7 @@ def test_a_wrong_earlier_value_is_carried_forward(exercise_id, link):
     for n in range(DRAWS):
         later = bank.variant(exercise_id, n)
         if link.variant(later.params) is None:  # this draw prints none of the source's numbers: nothing to carry
+            _nothing_carried_into(later, link, rng)
             later = bank.variant(exercise_id, 0)
         at = link.variant(later.params)
         source = bank.variant(link.source, at)
