@@ -23,7 +23,8 @@ Requests (``contract.json`` → ``ops``):
   templates (Derive).
 
 ``grade``, ``split``, ``read``, ``cases`` and ``judge`` take an optional
-``"variant"`` (default 0).
+``"variant"`` (default 0); ``grade`` of a Derive exercise an optional ``"given"``:
+the learner's last answers to the exercises it builds on (:mod:`workbook.chains`).
 
 Every reply is an envelope: ``{"ok": true, "value": VERDICT_OR_FRAME}`` or
 ``{"ok": false, "error": {"kind": ..., "message": ...}}``. A request that is not
@@ -43,7 +44,7 @@ import json
 import sys
 from typing import Any
 
-from . import bank
+from . import bank, chains
 from .build_plain import plain
 from .contract import OPS
 from .variants import VariantError, check_seed, fill
@@ -54,7 +55,8 @@ ANSWER_CAP = 10_000  # characters of an answer's text
 TEXTS_CAP = 50_000  # characters of a draw's templates
 # The type of each field a request may carry (None stands for a field left out); a figure's
 # params are the figure's to check (an error of kind "figure").
-FIELDS: dict[str, type] = {"exercise": str, "code": str, "text": str, "figure": str, "outputs": str, "texts": dict}
+FIELDS: dict[str, type] = {"exercise": str, "code": str, "text": str, "figure": str, "outputs": str, "texts": dict,
+                           "given": dict}
 
 
 def _exercise(request: dict[str, Any], kind: str | None = None):
@@ -77,7 +79,11 @@ def _exercise(request: dict[str, Any], kind: str | None = None):
 
 
 def _grade(request: dict[str, Any]) -> dict[str, Any]:
-    return _exercise(request).check(request.get("answer")).to_dict()
+    ex = _exercise(request)
+    sent = request.get("given")
+    if sent and ex.kind == "derive":
+        return chains.grade(ex, request.get("answer"), sent, bank.variant).to_dict()
+    return ex.check(request.get("answer")).to_dict()
 
 
 def _run(request: dict[str, Any]) -> dict[str, Any]:
@@ -172,9 +178,25 @@ def _well_formed(request: dict[str, Any]) -> None:
             raise GradingError("bad-request", f"This request's {name!r} is a {type(value).__name__}, "
                                f"not a {getattr(kind, '__name__', 'value')}.")
     _check_answer(request.get("answer"))
+    _check_given(request.get("given") or {})
     texts = request.get("texts") or {}
     if sum(len(v) for v in texts.values() if isinstance(v, str)) > TEXTS_CAP:
         raise GradingError("bad-request", "This draw's texts are too long.")
+
+
+def _check_given(sent: dict[str, Any]) -> None:
+    """``given``: at most a few earlier answers, ``{ID: {"answer": ..., "variant": N}}``."""
+    if len(sent) > chains.MAX_GIVEN:
+        raise GradingError("bad-request", f"This request carries {len(sent)} earlier answers; at most {chains.MAX_GIVEN}.")
+    for source, earlier in sent.items():
+        if not isinstance(earlier, dict) or set(earlier) - {"answer", "variant"}:
+            raise GradingError("bad-request", f"This request's earlier answer to {quote(source)} is not "
+                               "{answer, variant}.")
+        try:
+            check_seed(earlier.get("variant", 0))
+        except ValueError as err:
+            raise GradingError("bad-request", f"This request's earlier answer to {quote(source)}: {err}.") from None
+        _check_answer(earlier.get("answer"))
 
 
 def _check_answer(answer: Any, depth: int = 0) -> None:

@@ -1,7 +1,8 @@
 """The golden transcript: every learner-facing message of every exercise, in one file.
 
 For each exercise it replays the key, each known slip, the typical invalid
-inputs and, for Build, the starter, the solution and broken programs, and
+inputs, for a chained exercise an answer carried forward from a wrong earlier one,
+and, for Build, the starter, the solution and broken programs, and
 records what the grader says (status, tag, message; for Build the test rows
 too). ``transcript.json`` beside this file is the reviewed copy:
 ``tests/unit/test_golden.py`` fails when the grader's words change, and
@@ -20,7 +21,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "pyodide_pkg"))
 
-from workbook import bank  # noqa: E402
+from workbook import bank, chains  # noqa: E402
 from workbook.number_format import fmt  # noqa: E402
 from workbook.verdict import GradingError  # noqa: E402
 
@@ -170,6 +171,25 @@ def choices(ex) -> dict:
 REPLAYS = {"number": derive, "matrix": shaped, "expression": formula}  # one per answer kind
 
 
+def carried(ex) -> dict:
+    """A chained exercise: a wrong earlier answer (10 % and 0.3 off), and the answer that follows from it."""
+    out = {}
+    for link in ex.uses:
+        at = link.variant(ex.params)
+        if at is None:
+            continue
+        source = bank.variant(link.source, at)
+        key = source.answer.key
+        wrong = (tuple(tuple(v * 1.1 + 0.3 for v in row) for row in key) if isinstance(key, tuple)
+                 else key * 1.1 + 0.3)
+        typed = source.answer.typed(wrong)
+        theirs = ex.carried_answer({link.name: chains.value_of(source.answer.reader.read(source.answer, typed))})
+        answer = theirs.typed(theirs.key)
+        verdict = chains.grade(ex, answer, {link.source: {"answer": typed, "variant": at}}, bank.variant)
+        out[f"from {link.source}"] = {"earlier": typed, "answer": answer, **said(verdict), **verdict.data}
+    return out
+
+
 def transcript() -> dict:
     out = {}
     for ex in bank.all_exercises():
@@ -178,6 +198,8 @@ def transcript() -> dict:
         else:
             replay = build if ex.kind == "build" else choices
         out[ex.id] = {"kind": ex.kind, "title": ex.title, "said": replay(ex)}
+        if getattr(ex, "uses", ()):
+            out[ex.id]["carried"] = carried(ex)
     return out
 
 

@@ -21,7 +21,7 @@ function recordAttempt(ctx, reply, extra = {}) {
   if (status !== STATE.correct && status !== STATE.incorrect) return;
   const before = progress.get(id);
   const variant = ctx.variant ?? 0;
-  const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed }) };
+  const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed, tag: reply.value.tag }) };
   if (status === STATE.correct && !before.solved) {
     patch.solved = true;
     patch.solvedAfterReveal = Boolean(before.revealedIn?.includes(variant) ?? before.revealed);

@@ -16,7 +16,7 @@
 
 import { KEEP, TOP_BOX, migrateRecord } from "./review.js";
 
-export const SCHEMA_VERSION = 2;
+export const SCHEMA_VERSION = 3;
 export const EXPORT_FORMAT = "robotics-math-workbook-progress";
 // No browser keeps more than 10 MB of local storage for a site, so the largest
 // export this page can write (escaped JSON included) stays below this.
@@ -53,6 +53,7 @@ export const FIELDS = {
   clean: VARIANTS,
   missed: VARIANTS,
   revealedIn: VARIANTS,
+  carried: VARIANTS, // since version 3: answers right given the learner's own wrong earlier value
   box: { check: (v) => Number.isInteger(v) && v >= 1 && v <= TOP_BOX, says: `a review box from 1 to ${TOP_BOX}`, merge: "review" },
   due: { check: (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + 366 * DAY_MS, says: "a time (milliseconds since 1970) within a year", merge: "review" },
   reviewed: { check: notFuture, says: TIME, merge: "review" },
@@ -209,7 +210,7 @@ export function parseImport(text, knownIds) {
     for (const [id, raw] of Object.entries(data.exercises)) {
       if (knownIds && !knownIds.has(id)) throw new ImportError(`The file mentions exercise “${id.slice(0, 20)}”, which this workbook does not have.`);
       const record = cleanRecord(id, raw);
-      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load
+      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load (2 -> 3 adds a field only)
     }
     return { ok: true, exercises };
   } catch (err) {

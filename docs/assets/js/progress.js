@@ -3,7 +3,8 @@
 // One record per exercise: {solved, revealed, solvedAfterReveal, hinted,
 // attempts, last, code, draftOrder, updated} and, since version 2, the variant
 // on screen and what was done with each variant, with the review schedule:
-// {variant, done, clean, missed, revealedIn, box, due, reviewed} (review.js
+// {variant, done, clean, missed, revealedIn, box, due, reviewed} and, since
+// version 3, `carried` (review.js
 // says what they mean; progress-schema.js checks them and merges two copies).
 //
 // Never lost:
@@ -44,6 +45,8 @@ const mapRecords = (exercises, fn) => Object.fromEntries(Object.entries(exercise
 const MIGRATIONS = {
   // 1 -> 2: variants and the review queue; a solved mark becomes variant 0 solved.
   1: (data) => ({ ...data, version: 2, exercises: mapRecords(data.exercises, (r) => migrateRecord(r)) }),
+  // 2 -> 3: adds `carried` (the variants answered right only given a wrong earlier value); records keep the rest.
+  2: (data) => ({ ...data, version: 3 }),
 };
 
 class Unreadable extends Error {}

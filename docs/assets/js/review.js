@@ -5,7 +5,8 @@
 // Per exercise the record keeps, by variant number (0 = the workbook's own
 // numbers): `done` (answered correctly), `clean` (answered correctly without
 // revealing that variant's derivation first), `missed` (the first answer was
-// wrong, or the derivation was opened before any answer) and `revealedIn`.
+// wrong, or the derivation was opened before any answer), `revealedIn` and
+// `carried` (an answer right only given the learner's own wrong earlier value).
 // Solved: one clean variant. Mastered: MASTERED different clean variants.
 //
 // Review (Leitner boxes 1-5): only the first answer to each variant moves an
@@ -27,8 +28,14 @@ const move = (box, now) => ({ box, due: now + INTERVAL_MS[box], reviewed: now })
 
 const first = (record, v) => !has(record.done, v) && !has(record.missed, v);
 
-/** The progress patch for a graded answer ("correct" or "incorrect") to variant `v`. */
-export function afterGrade(record, v, status, { schedule = true, now = Date.now() } = {}) {
+/**
+ * The progress patch for a graded answer ("correct" or "incorrect") to variant `v`.
+ * An answer carried forward (tag "carried": right given the learner's own wrong
+ * value from an earlier exercise) is neither a solve nor a miss: it is kept in
+ * `carried` and moves nothing in the review queue.
+ */
+export function afterGrade(record, v, status, { schedule = true, now = Date.now(), tag = "" } = {}) {
+  if (status === "incorrect" && tag === "carried") return { carried: add(record.carried, v) };
   const patch = {};
   if (status === "correct") {
     if (schedule && first(record, v)) Object.assign(patch, move(Math.min(TOP_BOX, Math.max(1, record.box || 1) + 1), now));

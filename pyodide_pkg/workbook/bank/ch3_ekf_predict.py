@@ -14,6 +14,8 @@ from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
 from ..reference.linalg import add, matmul, sub, identity, transpose
 from ..tolerance import clean
 from ..variants import Choice, Param, Vary
+from .. import chains
+from ..chains import Uses
 from . import grid
 from .checks import apart, slips_apart
 from .heading_column import heading_column_formula
@@ -21,7 +23,7 @@ from .heading_column import heading_column_formula
 _P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
 _Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
 _EAST, _NORTH = 0.0, math.pi / 2
-_PRINTED_38 = (1, 1)  # (v, dt) as the workbook prints 3.8 (variant 0): exercise 3.4's
+_PRINTED_37 = (2, 0.5)  # (v, dt) as the workbook prints 3.7 (variant 0); 3.8's variant 0 carries its F
 
 
 # ---- helpers for the variants -------------------------------------------------
@@ -146,11 +148,18 @@ def _east_covariance(v, dt, P, Q):
     return F, FP, matmul(FP, transpose(F)), ekf_predict((0, 0, _EAST), P, v, 0, dt, Q)[1]
 
 
-def _heading_gain(f23: float, p33: float) -> str:
-    """What y gains from the heading: ``0.1`` when F₂₃ = 1, else ``0.1 \\cdot F_{23}^2 = 0.4``."""
-    if math.isclose(f23, 1.0):
+def _pushed_forward(F, P, Q):
+    """F P, F P Fᵀ and P⁻ = F P Fᵀ + Q for any F (3.8: 3.7's, or the learner's own)."""
+    FP = matmul(F, P)
+    FPF = matmul(FP, transpose(F))
+    return FP, FPF, add(FPF, Q)
+
+
+def _heading_gain(f: float, p33: float, name: str = "F_{23}") -> str:
+    """What a coordinate gains from the heading: ``0.1`` when F = ±1, else ``0.1 \\cdot F_{23}^2 = 0.4``."""
+    if math.isclose(abs(f), 1.0):
         return fmt(p33)
-    return f"{fmt(p33)} \\cdot F_{{23}}^2 = {fmt(f23 * f23 * p33)}"
+    return f"{fmt(p33)} \\cdot {name}^2 = {fmt(f * f * p33)}"
 
 
 _ASKED = {"1,1": (0, "P^-_{11}"), "2,2": (1, "P^-_{22}")}
@@ -192,40 +201,49 @@ def _covariance_entry_ok(p) -> bool:
     return slips_apart(_covariance_entry(p))
 
 
-def _predicted_covariance(p):
-    """3.8: the whole P⁻ = F P Fᵀ + Q facing east, with exercise 3.4's P and Q."""
+def _predicted_covariance(p, given=None):
+    """3.8: the whole P⁻ = F P Fᵀ + Q facing north with 3.7's F (or the learner's own, ``given``),
+    and exercise 3.4's P and Q. The reference's own predict step agrees with the printed F:
+
+    >>> F = motion_jacobian((0, 0, _NORTH), 2, 0, 0.5)
+    >>> _pushed_forward(F, _P, _Q)[2] == ekf_predict((0, 0, _NORTH), _P, 2, 0, 0.5, _Q)[1]
+    True
+    """
     v, dt = p["v"], p["dt"]
-    F, FP, FPF, Pm = _east_covariance(v, dt, _P, _Q)
-    f23 = F[1][2]
-    printed = (v, dt) == _PRINTED_38
+    F = [list(row) for row in chains.given(given, "F", motion_jacobian((0, 0, _NORTH), v, 0, dt))]
+    FP, FPF, Pm = _pushed_forward(F, _P, _Q)
+    f13 = F[0][2]
+    printed = (v, dt) == _PRINTED_37
     slips = [
         Slip(grid(FPF), "That is F P Fᵀ without the process noise. Add Q: the motion itself is uncertain."),
-        Slip(grid(add(_P, _Q)), "That is P + Q: you left F out. F passes the heading uncertainty into y, which is "
+        Slip(grid(add(_P, _Q)), "That is P + Q: you left F out. F passes the heading uncertainty into x, which is "
                                 "where the off-diagonal terms come from."),
         Slip(grid(add(matmul(matmul(transpose(F), _P), F), _Q)),
              "That is Fᵀ P F + Q, the product in the wrong order. The covariance is pushed forward as F P Fᵀ."),
     ]
-    if not math.isclose(f23, 1.0):
+    if not math.isclose(abs(f13), 1.0):
         once = [row[:] for row in Pm]
-        once[1][1] = _P[1][1] + f23 * _P[2][2] + _Q[1][1]
-        slips.append(Slip(grid(once), "Check P⁻(2,2): F₂₃ enters twice, once from F and once from Fᵀ, so y gains "
-                                      f"F₂₃²·P₃₃ = {fmt(f23 * f23 * _P[2][2])}, not F₂₃·P₃₃."))
+        once[0][0] = _P[0][0] + abs(f13) * _P[2][2] + _Q[0][0]
+        slips.append(Slip(grid(once), "Check P⁻(1,1): F₁₃ enters twice, once from F and once from Fᵀ, so x gains "
+                                      f"F₁₃²·P₃₃ = {fmt(f13 * f13 * _P[2][2])}, not |F₁₃|·P₃₃."))
     return {
         "key": grid(Pm),
         "slips": tuple(slips),
         "values": {
-            "src": "the workbook's numbers of exercise 3.4" if printed else "these numbers",
+            "src": "the robot of exercise 3.7" if printed else "the robot",
             "pdef": f"\\operatorname{{diag}}({fmt(_P[0][0])}, {fmt(_P[1][1])}, {fmt(_P[2][2])})",
             "qdef": f"\\operatorname{{diag}}({fmt(_Q[0][0])}, {fmt(_Q[1][1])}, {fmt(_Q[2][2])})",
             **{f"q{i}{i}": fmt(_Q[i - 1][i - 1]) for i in (1, 2, 3)},
-            "F": bmatrix(F), "FP": bmatrix(FP), "FPF": bmatrix(FPF), "f23": fmt(f23),
-            "gain": _heading_gain(f23, _P[2][2]), "metres": _metres(f23, "a metre"), "p23m": fmt(Pm[1][2]),
+            "F": bmatrix(F), "FP": bmatrix(FP), "FPF": bmatrix(FPF), "f13": fmt(f13),
+            "gain": _heading_gain(f13, _P[2][2], "F_{13}"), "metres": _metres(abs(f13), "a metre"),
+            "p13m": fmt(Pm[0][2]),
+            "of37": "exercise 3.7's" if printed else "the",
         },
     }
 
 
 def _predicted_covariance_ok(p) -> bool:
-    """The slips (no Q, no F, Fᵀ P F, F₂₃ once) stay apart from the key and from each other."""
+    """The slips (no Q, no F, Fᵀ P F, F₁₃ once) stay apart from the key and from each other."""
     return slips_apart(_predicted_covariance(p))
 
 
@@ -363,8 +381,9 @@ EXERCISES = (
         id="3.8",
         title="The whole predicted covariance",
         answer=matrix(label="P⁻ = F P Fᵀ + Q"),
-        vary=Vary(_predicted_covariance, Param("v", _PRINTED_38[0], 0.5, 2, 0.5, unit=" m/s"),
-                  Param("dt", _PRINTED_38[1], 0.2, 2, 0.2, unit=" s"), valid=_predicted_covariance_ok),
+        vary=Vary(_predicted_covariance, Param("v", _PRINTED_37[0], 0.5, 2, 0.5, unit=" m/s"),
+                  Param("dt", _PRINTED_37[1], 0.2, 2, 0.2, unit=" s"), valid=_predicted_covariance_ok),
+        uses=(Uses("3.7", "F", "F", variant=lambda p: 0 if (p["v"], p["dt"]) == _PRINTED_37 else None),),
     ),
     Derive(
         id="3.9",

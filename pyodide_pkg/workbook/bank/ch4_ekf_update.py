@@ -12,6 +12,8 @@ from ..kinds.trace import Option, Trace
 from ..number_format import fixed, fmt, paren, relation, shown
 from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
 from ..variants import Choice, Param, Vary
+from .. import chains
+from ..chains import Uses
 from . import grid
 
 _POSE = (0, 0, 0)
@@ -55,7 +57,10 @@ def _predicted_range(p):
     return {
         "key": s["r"],
         "slips": (Slip(float(s["q"]), "That is q = dx² + dy², the squared range. Take its square root."),),
-        "values": {**s["values"], "remark": remark},
+        "values": {**s["values"], "remark": remark,
+                   "next41": ("Exercise 4.4 compares this range with a measurement." if s["r"] == _H_PRED[0]
+                              and (p["x"], p["y"], p["lx"], p["ly"]) == (0, 0, *_LANDMARK)
+                              else "Exercise 4.4 compares the range of this exercise's first numbers with a measurement.")},
     }
 
 
@@ -94,21 +99,29 @@ def _range_slope(p):
     }
 
 
-def _range_innovation(p):
-    """4.4: the range innovation z_r − h_r between measured (zr, zphi) and predicted (hr, hphi)."""
-    y = innovation((p["zr"], p["zphi"]), (p["hr"], p["hphi"]))
+def _range_innovation(p, given=None):
+    """4.4: the range innovation z_r − h_r between measured (zr, zphi) and predicted (hr, hphi);
+    ``given`` holds the learner's own range from exercise 4.1 in place of hr, where hr is 4.1's."""
+    hr = chains.given(given, "hr", p["hr"])
+    y = innovation((p["zr"], p["zphi"]), (hr, p["hphi"]))
     closer = y[0] < 0
     return {
         "key": y[0],
         "slips": (
-            Slip(innovation((p["hr"],), (p["zr"],))[0],
+            Slip(innovation((hr,), (p["zr"],))[0],
                  "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
             Slip(y[1], "That is the bearing innovation, the second component. The range is the first."),
         ),
-        "values": {"zr1": fixed(p["zr"], 1), "hr1": fixed(p["hr"], 1), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
+        "values": {"zr1": fixed(p["zr"], 1), "hr1": fixed(hr, 1), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
+                   "from41": "(its range is exercise 4.1's)" if _range_of_41(p) is not None else "",
                    "closer": "closer" if closer else "farther", "pull": "pull" if closer else "push",
                    "towards": "towards" if closer else "away from"},
     }
+
+
+def _range_of_41(p):
+    """4.4's predicted range is exercise 4.1's answer (variant 0) when it is that number: then 0, else None."""
+    return 0 if p["hr"] == _H_PRED[0] else None
 
 
 def _innovation_is_a_surprise(p):
@@ -276,6 +289,7 @@ EXERCISES = (
                   Param("hr", 5, 3, 7, 0.1, unit=" m"), Param("hphi", _H_PRED[1], 0.2273, 1.4273, 0.1, unit=" rad"),
                   Param("zr", 4.8, 2.5, 7.5, 0.1, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),
                   valid=_innovation_is_a_surprise),
+        uses=(Uses("4.1", "hr", "range r", variant=_range_of_41),),
     ),
     Build(
         id="4.5",

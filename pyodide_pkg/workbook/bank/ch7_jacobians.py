@@ -18,6 +18,8 @@ from ..reference.arm import (
     velocity_ratio,
 )
 from ..variants import Choice, Param, Vary
+from .. import chains
+from ..chains import Uses
 from . import grid
 
 _BUGGY = """\
@@ -71,6 +73,8 @@ def _jacobian_entry(p):
             "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]),
             "r11": relation(J[0][0], shown(-L * s1) - L), "r21": relation(J[1][0], shown(L * c1)),
             "det": fmt(det), "rdet": relation(det, -shown(J[0][1]) * shown(J[1][0])),
+            "next71": ("Exercise 7.2 puts this Jacobian to work." if (L, t1) == (1, 0)
+                       else "Exercise 7.2 puts the Jacobian of this exercise's first numbers to work."),
         },
     }
 
@@ -80,7 +84,7 @@ def _root2(k: float) -> str:
     return "\\sqrt2" if math.isclose(k, 1) else f"{fmt(k)}\\sqrt2"
 
 
-def _tip_velocity(p):
+def _tip_velocity(p, given=None):
     """7.2: (ẋ, ẏ) = J (θ̇1, 0) at θ = (0, 90°) with equal links L, J printed in the statement; asked: ẋ.
 
     >>> made = _tip_velocity({"L": 1.5, "w1": -2}); print(made["values"]["J"], made["key"])
@@ -88,6 +92,7 @@ def _tip_velocity(p):
     """
     L, w = p["L"], p["w1"]
     J = jacobian_2link(L, L, 0, math.pi / 2)
+    J[0][0] = chains.given(given, "j11", J[0][0])  # the learner's own J(1,1) from exercise 7.1
     v = end_effector_velocity(J, [w, 0])
     return {
         "key": v[0],
@@ -269,6 +274,7 @@ EXERCISES = (
         title="End-effector velocity",
         answer=number(label="ẋ", unit="m/s"),
         vary=Vary(_tip_velocity, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))),
+        uses=(Uses("7.1", "j11", "J(1,1)", variant=lambda p: 0 if p["L"] == 1 else None),),
     ),
     Derive(
         id="7.3",

@@ -37,6 +37,8 @@ from ..number_format import approx, fmt, paren, pi_frac, relation, shown, signed
 from ..reference.ekf import ekf_update, motion_jacobian, motion_model, range_bearing
 from ..reference.pid import p_term
 from ..variants import Choice, Param, Vary
+from .. import chains
+from ..chains import Uses
 from . import column
 from .checks import slips_apart
 
@@ -81,6 +83,8 @@ def _predicted_pose(p):
         "thp_deg": fmt(math.degrees(pred[2])), "omdt_deg": approx(math.degrees(omega * dt)),
         "most": "x" if moved_x > moved_y else "y", "cmp": ">" if moved_x > moved_y else "<",
         "as92": " as in exercise 9.2" if p == _NINE_TWO else "",
+        "next92": ("Exercises 9.3 and 9.4 start from this pose." if p == _NINE_TWO
+                   else "Exercises 9.3 and 9.4 start from the pose of this exercise's first numbers."),
         "used92": ("Exercise 9.2 used only the first entry." if p == _NINE_TWO
                    else "Exercise 9.2 asks for the first entry alone."),
     }
@@ -147,11 +151,12 @@ def _carried_pose() -> dict[str, str]:
     return {"px": fmt(_PRED_FULL[0]), "py": fmt(_PRED_FULL[1]), "pth": fmt(_PRED_FULL[2])}
 
 
-def _predicted_range(p):
-    """9.3: the range from 9.2's printed pose to the drawn landmark."""
+def _predicted_range(p, given=None):
+    """9.3: the range from 9.2's printed pose (or the learner's own x′, ``given``) to the drawn landmark."""
     landmark = (p["lx"], p["ly"])
-    r = range_bearing(_PRED, landmark)[0]
-    dx, dy = landmark[0] - _PRED[0], landmark[1] - _PRED[1]
+    pred = (chains.given(given, "x", _PRED[0]), _PRED[1], _PRED[2])
+    r = range_bearing(pred, landmark)[0]
+    dx, dy = landmark[0] - pred[0], landmark[1] - pred[1]
     exactly = 10  # significant figures enough to print the squares of Δx, Δy (three decimals each) in full
     reading = round(r - 0.1, 1)  # a LiDAR reading a little short of the prediction
     return {
@@ -176,10 +181,10 @@ def _range_well_posed(p) -> bool:
     return made["key"] >= 2 and slips_apart(made)
 
 
-def _fused(p):
-    """9.4: the scalar Kalman update of 9.2's printed x with the drawn P, z and R."""
+def _fused(p, given=None):
+    """9.4: the scalar Kalman update of 9.2's printed x (or the learner's own, ``given``) with the drawn P, z and R."""
     P, z, R = p["P"], p["z"], p["R"]
-    x = _PRED[0]
+    x = chains.given(given, "x", _PRED[0])
     x_upd, _ = ekf_update(x, P, z, R)
     K = P / (P + R)
     correction = K * (z - x)
@@ -197,6 +202,8 @@ def _fused(p):
             "corr": signed(correction), "rc": relation(correction, shown(K) * (z - x)),
             "xu": fmt(x_upd), "rx": relation(x_upd, x + shown(correction)),
             "pct": _percent(K),
+            "next94": ("Exercise 9.6 steers from this x⁺." if (P, z, R) == (_P, _Z, _R)
+                       else "Exercise 9.6 steers from the x⁺ of this exercise's first numbers."),
         },
     }
 
@@ -232,10 +239,10 @@ def _updated_variance(p):
     }
 
 
-def _command(p):
-    """9.6: the P controller's speed command from 9.4's printed x⁺ to the drawn waypoint."""
+def _command(p, given=None):
+    """9.6: the P controller's speed command from 9.4's printed x⁺ (or the learner's own, ``given``) to the drawn waypoint."""
     target, Kp = p["target"], p["Kp"]
-    e = target - _X_UPD
+    e = target - chains.given(given, "xu", _X_UPD)
     u = p_term(e, Kp)
     return {
         "key": u,
@@ -278,6 +285,7 @@ EXERCISES = (
         title="Predicted range to a landmark",
         answer=number(label="predicted range r", unit="m"),
         vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1), valid=_range_well_posed),
+        uses=(Uses("9.2", "x", "x′"),),
     ),
     Derive(
         id="9.4",
@@ -285,6 +293,7 @@ EXERCISES = (
         answer=number(label="updated x⁺", unit="m"),
         vary=Vary(_fused, Param("P", _P, 0.2, 1, 0.1), Param("z", _Z, 4.8, 6.9, 0.1, unit=" m"),
                   Param("R", _R, 0.1, 0.9, 0.1), valid=_fused_well_posed),
+        uses=(Uses("9.2", "x", "x′"),),
     ),
     Derive(
         id="9.5",
@@ -299,6 +308,7 @@ EXERCISES = (
         answer=number(label="commanded speed u", unit="m/s"),
         vary=Vary(_command, Param("target", _TARGET, 6, 15, 1, unit=" m"), Param("Kp", _KP, 0.1, 1.5, 0.1, avoid=(1,)),
                   valid=lambda p: slips_apart(_command(p))),
+        uses=(Uses("9.4", "xu", "x⁺"),),
     ),
     Derive(
         id="9.7",

@@ -18,6 +18,7 @@ from typing import Any, ClassVar, Mapping
 
 from ..answer_kinds.base import AnswerKind, AnswerSpec
 from ..contract import ATTR
+from ..chains import Uses
 from ..number_format import fmt
 from ..variants import VariantError, Vary, check_seed
 from ..verdict import Verdict
@@ -36,6 +37,7 @@ class Derive(Exercise):
     values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)  # the template's fill
     params: Mapping[str, Any] = field(default_factory=dict, compare=False, repr=False)  # this variant's draw
     spec: AnswerSpec | None = field(default=None, compare=False, repr=False)
+    uses: tuple[Uses, ...] = field(default=(), compare=False, repr=False)  # the earlier results it builds on
     kind: ClassVar[str] = "derive"
     reveal_label: ClassVar[str] = "Show derivation"
 
@@ -77,13 +79,22 @@ class Derive(Exercise):
             return self
         return replace(self, seed=seed, answer=self.spec)
 
+    def carried_answer(self, given: Mapping[str, Any]) -> AnswerKind:
+        """This variant's answer with ``given`` (the learner's earlier values, by the names
+        ``make()`` takes) in place of the printed ones: the key recomputed by the generator."""
+        made = dict(self.vary.make(self.params, given=given))
+        made.pop("values", None)
+        made.pop("title", None)
+        return self.spec.build(self.id, **made)
+
     # ---- what the page and the worker ask: the answer kind answers ----------------
     @property
     def answer_kind(self) -> str:
         return self.answer.kind
 
     def attributes(self) -> dict[str, str]:
-        return {ATTR.answerKind: self.answer.kind, **self.answer.attributes()}
+        uses = {ATTR.uses: " ".join(dict.fromkeys(u.source for u in self.uses))} if self.uses else {}
+        return {ATTR.answerKind: self.answer.kind, **self.answer.attributes(), **uses}
 
     def check(self, answer: object) -> Verdict:
         return self.answer.check(answer)

@@ -1,7 +1,9 @@
 // Derive: the answer area comes from the exercise's answer kind (a number, a
 // matrix, a formula: docs/assets/js/answer-kinds/<kind>.js); the numbers come
-// from the variant on screen (variants.js); this module submits the answer.
+// from the variant on screen (variants.js); this module submits the answer, with
+// the learner's earlier answers it builds on (carry.js).
 import { ATTR } from "../contract.js";
+import { givenFor, showCarried } from "../carry.js";
 import { initVariants } from "../variants.js";
 
 export async function init(ctx) {
@@ -15,7 +17,8 @@ export async function init(ctx) {
   ctx.el.querySelector("form").addEventListener("submit", async (event) => {
     event.preventDefault();
     const answer = field.value();
-    const reply = await ctx.submit("grade", { answer }, { saved: { last: answer } });
+    const reply = await ctx.submit("grade", { answer, given: givenFor(ctx) }, { saved: { last: answer } });
     field.show?.(reply);
+    showCarried(ctx.el, reply);
   });
 }
