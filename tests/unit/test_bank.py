@@ -85,18 +85,12 @@ def test_the_seed_exercises_keep_their_ids_and_kinds():
     assert sum(len(k.split()) for k in SEED_KINDS) == 56
 
 
-# Ids another branch adds (the Build exercises of branch `builds`): until it is merged, the bug
-# hunts after them (2.9, 3.11, 6.8, 7.9, 8.9) leave these gaps. Empty this set at the merge.
-RESERVED = {"1.7", "2.8", "3.10", "5.8", "6.7", "7.8", "8.8", "9.9"}
-
-
 def test_ids_run_on_without_gaps_in_every_chapter():
     for n in bank.chapters():
         ids = [e.id for e in bank.chapter(n)]
         last = max(int(i.split(".")[1]) for i in ids)
         expected = [f"{n}.{i}" for i in range(1, last + 1)]
-        assert ids == [i for i in expected if i in ids]
-        assert set(expected) - set(ids) <= RESERVED, f"chapter {n} skips an id"
+        assert ids == expected, f"chapter {n} skips an id"
 
 
 def test_pages_place_every_exercise_exactly_once():
