@@ -1,5 +1,5 @@
 // Keyboard access to boxes that scroll sideways: a wide formula, a table of test
-// results or the printed output may not fit the column (at 360 px many do). Such
+// results, a model solution's code or the printed output may not fit the column (at 360 px many do). Such
 // a box is only reachable by mouse or touch unless it can take the focus, so each
 // one that overflows gets tabindex=0 (the arrow keys then scroll it) and a name;
 // one that stops overflowing gives them back. Boxes are re-checked when the page
@@ -13,6 +13,7 @@ const BOXES = [
   [".md-typeset div.arithmatex, .md-typeset .katex-display", "Formula (scrolls sideways)"],
   [".wb-tests", "Test results (scroll sideways)"],
   [".wb-stdout", "Printed output (scrolls)"],
+  [".md-typeset pre > code", "Code (scrolls sideways)"],
   [".wb-progress-table-wrap", "Progress table (scrolls sideways)"],
 ];
 
