@@ -65,8 +65,12 @@ def lines(text: str, width: int = 62, most: int = 2) -> list[str]:
 
 
 def message(c: Canvas, text: str) -> float:
-    """What went wrong, under the picture (two lines at most); returns the height it takes."""
-    rows = lines(text)
+    """What went wrong, under the picture (three lines at most); returns the height it takes.
+
+    Lines fit the picture's width at the largest size the labels take (15.5 px on a phone,
+    about 8 px a character), so nothing is cut at either side.
+    """
+    rows = lines(text, width=int(c.width / 8), most=3)
     for k, row in enumerate(rows):
         y = c.top + c.height + 6 + 15 * k
         c.add(f'<text x="{c.left + c.width / 2:.1f}" y="{y:.1f}" text-anchor="middle" '
