@@ -21,6 +21,7 @@ DEAD_PROXY = {"server": "http://127.0.0.1:9", "bypass": "127.0.0.1"}
 CACHE_CONTROL = "max-age=600"
 
 CH0, CH1, CH3 = "chapters/00-rotations-2d/", "chapters/01-transforms/", "chapters/03-ekf-predict/"
+CH9 = "chapters/09-capstone/"
 # One exercise of each checked kind: (page, id).
 GRADED = {"derive": (CH0, "0.1"), "trace": (CH0, "0.3"), "debug": (CH3, "3.5"), "design": (CH1, "1.5"),
           "matrix": (CH3, "3.8"), "formula": (CH3, "3.9")}  # a 3x3 P⁻; F(1,3) as a formula in v, θ, dt
@@ -40,6 +41,9 @@ BUILD_NUMPY = (
     "    return np.array([[c, -s], [s, c]]) @ np.array([x, y])\n"
 )
 BUILD_LOOP = "while True:\n    pass\n"
+# Two of the "Code the robot" Builds, each with the bank's model solution: a typical one (1.7, on a page
+# the bench visits anyway) and the heaviest (9.9, driven closed loop over every case).
+BUILD_NEW_ID, BUILD_HEAVY_ID = "1.7", "9.9"
 
 READY_TIMEOUT_MS = 90_000
 GRADE_TIMEOUT_MS = 15_000

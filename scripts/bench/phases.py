@@ -13,7 +13,7 @@ from workbook.contract import ATTR, ROLE, STATE
 
 from . import first_visit, pagejs
 from .browser import BenchError, Browsers
-from .config import (BUILD_ID, BUILD_LOOP, BUILD_NUMPY, BUILD_PLAIN, CH0, CH1, CH3, DERIVE_INPUT, GRADE_TIMEOUT_MS,
+from .config import (BUILD_HEAVY_ID, BUILD_ID, BUILD_NEW_ID, BUILD_LOOP, BUILD_NUMPY, BUILD_PLAIN, CH0, CH1, CH3, CH9, DERIVE_INPUT, GRADE_TIMEOUT_MS,
                      GRADED, NUMPY_TIMEOUT_MS, READY_TIMEOUT_MS, Profile)
 from .pagejs import exercise, role
 from .records import percentile
@@ -59,7 +59,13 @@ class Phases:
             for chapter in (CH3, CH1):
                 page, _ = b.visit(ctx, b.site + chapter)
                 self.grade_kinds(page, chapter, grading)
+                if chapter == CH1:
+                    run["build_new"] = self.build_series(page, BUILD_NEW_ID, bank.get(BUILD_NEW_ID).solution,
+                                                         READY_TIMEOUT_MS)
                 page.close()
+            page, _ = b.visit(ctx, b.site + CH9)
+            run["build_heavy"] = self.build_series(page, BUILD_HEAVY_ID, bank.get(BUILD_HEAVY_ID).solution, READY_TIMEOUT_MS)
+            page.close()
             run["grading"] = grading
         finally:
             ctx.close()
@@ -76,13 +82,13 @@ class Phases:
             elif kind == "debug":
                 ex.locator(f'{role(ROLE.line)}[{ATTR.line}="1"]').click()
             elif kind == "matrix":  # the key's entries, one of them off: the whole diagnosis runs
-                rows = [[f"{v:.6g}" for v in row] for row in bank.get(ex_id).cleaned]
+                rows = [[f"{v:.6g}" for v in row] for row in bank.get(ex_id).answer.key]
                 rows[0][0] = "sqrt(2)/2"
                 for i, row in enumerate(rows, 1):
                     for j, text in enumerate(row, 1):
                         ex.locator(f'{role(ROLE.entry)}[{ATTR.row}="{i}"][{ATTR.col}="{j}"]').fill(text)
             elif kind == "formula":
-                ex.locator(role(ROLE.answer)).fill(bank.get(ex_id).answer_text)
+                ex.locator(role(ROLE.answer)).fill(bank.get(ex_id).answer.answer_text)
             res = pagejs.run(page, "grade_loop", {"id": ex_id, "n": self.args.checks, "timeoutMs": GRADE_TIMEOUT_MS})
             bad = [s for s in res["states"] if s not in GRADED_STATES]
             if bad:
@@ -106,26 +112,29 @@ class Phases:
                       "window.workbook.progress.update(id, {variant: 0}); }")
 
     def build(self, page, run: dict) -> None:
-        ex = page.locator(exercise(BUILD_ID))
-        ex.evaluate("(el, sel) => el.querySelector(sel).wbOpenEditor()", role(ROLE.editor))
-        out = {}
-        for label, code, first_timeout in (("plain", BUILD_PLAIN, GRADE_TIMEOUT_MS),
-                                           ("numpy", BUILD_NUMPY, NUMPY_TIMEOUT_MS)):
-            mark = self.b.server.mark()
-            results = []
-            for i in range(1 + self.args.build_repeats):
-                r = pagejs.run(page, "build_run", {"id": BUILD_ID, "code": code if i == 0 else None,
-                                                   "timeoutMs": first_timeout if i == 0 else GRADE_TIMEOUT_MS})
-                if r["state"] != STATE.correct or not r["passed"] or not all(r["passed"]):
-                    msg = ex.locator(role(ROLE.feedback)).inner_text()
-                    raise BenchError(f"build {label} run {i + 1}: state {r['state']}, tests {r['passed']}: {msg[:300]}")
-                results.append(r["ms"])
-            out[label] = {"first_ms": results[0], "repeat_median_ms": statistics.median(results[1:]),
-                          "repeat_ms": results[1:], "bytes": sum(e["bytes"] for e in self.b.server.since(mark))}
+        out = {label: self.build_series(page, BUILD_ID, code, first_timeout, label)
+               for label, code, first_timeout in (("plain", BUILD_PLAIN, GRADE_TIMEOUT_MS),
+                                                  ("numpy", BUILD_NUMPY, NUMPY_TIMEOUT_MS))}
         # The sandbox that ran them (docs/assets/js/sandbox.js): its start, and its interpreter's memory.
         out["sandbox"] = page.evaluate("() => { const s = window.workbook.sandbox; return s && s.ready ? "
                                        "{start_ms: s.readyAt - s.startedAt, wasm_bytes: s.startStages.wasmBytes} : null; }")
         run["build"] = out
+
+    def build_series(self, page, ex_id: str, code: str, first_timeout: float, label: str = "plain") -> dict:
+        """A first Build run of ``code`` on exercise ``ex_id``, then the repeats: their times and bytes."""
+        ex = page.locator(exercise(ex_id))
+        ex.evaluate("(el, sel) => el.querySelector(sel).wbOpenEditor()", role(ROLE.editor))
+        mark = self.b.server.mark()
+        results = []
+        for i in range(1 + self.args.build_repeats):
+            r = pagejs.run(page, "build_run", {"id": ex_id, "code": code if i == 0 else None,
+                                               "timeoutMs": first_timeout if i == 0 else GRADE_TIMEOUT_MS})
+            if r["state"] != STATE.correct or not r["passed"] or not all(r["passed"]):
+                msg = ex.locator(role(ROLE.feedback)).inner_text()
+                raise BenchError(f"build {ex_id} {label} run {i + 1}: state {r['state']}, tests {r['passed']}: {msg[:300]}")
+            results.append(r["ms"])
+        return {"first_ms": results[0], "repeat_median_ms": statistics.median(results[1:]),
+                "repeat_ms": results[1:], "bytes": sum(e["bytes"] for e in self.b.server.since(mark))}
 
     def recovery(self, page, run: dict) -> None:
         res = pagejs.run(page, "recovery", {"buildId": BUILD_ID, "deriveId": GRADED["derive"][1], "code": BUILD_LOOP,

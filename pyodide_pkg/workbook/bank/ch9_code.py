@@ -58,7 +58,7 @@ def nav_step(x, P, u, z, landmark, waypoint, dt, Q, R):
 _P0 = ((0.01, 0, 0), (0, 0.01, 0), (0, 0, 0.001))
 _Q = ((0.0025, 0, 0), (0, 0.0025, 0), (0, 0, 0.0025))
 _R = ((0.01, 0), (0, math.radians(2) ** 2))
-STEPS = 30
+STEPS = 20
 
 
 def _run(rng):
@@ -102,7 +102,7 @@ EXERCISES = (
             ((0, 0, 0), _P0, (20, 20), ((2, 1), (0, 2)), 0.5, _Q, _R, STEPS, 3),  # landmark never seen: z None
         ),
         random_args=_run,
-        hidden_count=6,
+        hidden_count=4,
         rel_tol=1e-5,
         abs_tol=1e-7,
     ),
