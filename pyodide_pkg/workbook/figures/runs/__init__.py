@@ -218,8 +218,8 @@ def _items(fig: RunFigure, ex: Any, report: Any, cases: list, arguments: list[li
         drive = harness.driver(fig.trace.harness)
         outcomes = report.figure + [{"skipped": True}] * (len(fig.trace.cases) - len(report.figure))
         labels = fig.trace.names or tuple(f"run {k + 1}" for k in range(len(fig.trace.cases)))
-        runs = [_trace_case(label, args, _reference(ex.reference, drive, args), outcome, fig.width or 0, int(fig.with_start))
-                for label, args, outcome in zip(labels, fig.trace.cases, outcomes)]
+        runs = [_trace_case(label, args, _reference(ex.reference, drive, args), outcome, fig.width or 0,
+                            int(fig.with_start)) for label, args, outcome in zip(labels, fig.trace.cases, outcomes)]
         return runs, runs
     outcomes = report.cases + [{"skipped": True}] * (len(cases) - len(report.cases))
     shown = len(ex.examples)
@@ -248,7 +248,8 @@ def _readout(fig: RunFigure, items: list[Drawn]) -> str:
         worst = max(errors, key=lambda d: d.error)
         unit = f" {fig.unit}" if fig.unit else ""
         if compact(worst.error) == "0":
-            parts.append(f"largest error 0{unit}: yours agrees with the reference on every case")
+            where = "on every case" if failed is None else "as far as its numbers go"
+            parts.append(f"largest error 0{unit}: yours agrees with the reference {where}")
         else:
             parts.append(f"largest error {compact(worst.error)}{unit} at {worst.label}")
     if failed is not None:
