@@ -106,6 +106,8 @@ def lab(browser, site_url):
     errors: list[str] = []
     page.on("pageerror", lambda err: errors.append(str(err)))
     open_chapter(page, site_url, 0)
+    exercise(page, "0.5").scroll_into_view_if_needed()  # the sandbox starts near a Build exercise
+    page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
     yield page, requests
     assert blocked == [] and errors == []
     context.close()
@@ -190,11 +192,20 @@ def test_attacks_change_no_stored_byte_and_plant_no_page(page, site_url):
     exercise(page, "1.1").wait_for()
 
 
-def test_the_sandbox_starts_only_where_there_is_build_code(page, site_url):
-    open_chapter(page, site_url, 1)  # no Build exercise: no sandbox, ever
-    page.evaluate("() => new Promise((resolve) => requestIdleCallback(resolve, {timeout: 2000}))")
+IDLE = "() => new Promise((resolve) => requestIdleCallback(resolve, {timeout: 2000}))"
+
+
+def test_the_sandbox_starts_only_near_build_code(page, site_url):
+    page.goto(site_url + "progress/")  # no Build exercise: no sandbox, ever
+    page.wait_for_function("() => window.workbook && window.workbook.progress", timeout=LONG)
+    page.evaluate(IDLE)
     assert page.evaluate("'sandbox' in window.workbook") is False
-    open_chapter(page, site_url, 0)  # a Build exercise: the sandbox starts once the page is idle, before any Run
+    open_chapter(page, site_url, 0)  # read from the top, 0.5 far below: no sandbox yet
+    ex = exercise(page, "0.5")
+    assert page.evaluate("el => el.getBoundingClientRect().top - innerHeight", ex.element_handle()) > 600
+    page.evaluate(IDLE)
+    assert page.evaluate("'sandbox' in window.workbook") is False
+    ex.scroll_into_view_if_needed()  # near the viewport: the sandbox starts once the page is idle, before any Run
     page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
     assert exercise(page, "0.5").get_attribute("data-state") == "unanswered"
     stages = page.evaluate("workbook.sandbox.startStages")
@@ -225,7 +236,8 @@ def test_a_sandbox_that_could_not_start_is_started_again(page, site_url):
         else:
             route.continue_()
     page.route("**/python_stdlib.sandbox.zip", once)
-    open_chapter(page, site_url, 0)  # the sandbox starts when the page is idle, and fails
+    open_chapter(page, site_url, 0)
+    exercise(page, "0.5").scroll_into_view_if_needed()  # the sandbox starts when the page is idle, and fails
     page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.failure", timeout=LONG)
     assert page.evaluate("document.documentElement.dataset.workbookRuntime") == "ready"  # the grader's state is its own
     ex = exercise(page, "0.5")

@@ -5,9 +5,9 @@
 //   sandbox {op: "run", job, code}           -> the report (JSON text), as data
 //   grader  {op: "judge", exercise, outputs} -> the verdict
 //
-// The sandbox (sandbox.js) is one worker per tab, started lazily (when a page
-// with a Build exercise is idle after the grader is ready, or at the first
-// Run) from a blob: URL, so that it inherits the page's Content-Security-Policy.
+// The sandbox (sandbox.js) is one worker per tab, started lazily (when a Build
+// exercise comes near the viewport and the page is idle after the grader is
+// ready, when the learner moves into one, or at the first Run) from a blob: URL, so that it inherits the page's Content-Security-Policy.
 // It is driven by the same Runtime class as the grader, so time limits work
 // the same way (interrupt when cross-origin isolated, else terminate and start
 // afresh), the limit starting when the code starts. It is replaced after every

@@ -87,7 +87,17 @@ function lazyEditor(ctx, host, onRun) {
 
 export function init(ctx) {
   ctx.runtime = withSandbox(ctx.runtime); // ctx.submit("run", ...) goes through the sandbox
-  runtimeSettled.then(whenIdle).then(() => ctx.runtime.prepare());
+  // The sandbox is a second Python: started when a Build exercise comes near the
+  // viewport (then when the browser is idle), when the learner moves into it, or at
+  // the first Run. A chapter read from the top never pays for it up front.
+  const prepare = () => ctx.runtime.prepare();
+  const nearSandbox = new IntersectionObserver((entries) => {
+    if (!entries.some((entry) => entry.isIntersecting)) return;
+    nearSandbox.disconnect();
+    runtimeSettled.then(whenIdle).then(prepare);
+  }, { rootMargin: "400px 0px" });
+  nearSandbox.observe(ctx.el);
+  ctx.el.addEventListener("focusin", prepare, { once: true });
   const host = findRole(ctx.el, ROLE.editor);
   const runButton = findRole(ctx.el, ROLE.run);
   const limitMs = Number(host.dataset.timeLimit || 5) * 1000;
