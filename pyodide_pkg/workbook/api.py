@@ -24,7 +24,10 @@ Requests (``contract.json`` → ``ops``):
 
 ``grade``, ``split``, ``read``, ``cases`` and ``judge`` take an optional
 ``"variant"`` (default 0); ``grade`` of a Derive exercise an optional ``"given"``:
-the learner's last answers to the exercises it builds on (:mod:`workbook.chains`).
+the learner's last answers to the exercises it builds on (:mod:`workbook.chains`),
+and, for an exercise with checked steps, an optional ``"step"`` (the step this
+answer is for) and ``"steps"`` (the learner's answers to the steps so far,
+:mod:`workbook.steps`).
 
 Every reply is an envelope: ``{"ok": true, "value": VERDICT_OR_FRAME}`` or
 ``{"ok": false, "error": {"kind": ..., "message": ...}}``. A request that is not
@@ -44,7 +47,7 @@ import json
 import sys
 from typing import Any
 
-from . import bank, chains
+from . import bank, chains, steps
 from .build_plain import plain
 from .contract import OPS
 from .variants import VariantError, check_seed, fill
@@ -56,7 +59,7 @@ TEXTS_CAP = 50_000  # characters of a draw's templates
 # The type of each field a request may carry (None stands for a field left out); a figure's
 # params are the figure's to check (an error of kind "figure").
 FIELDS: dict[str, type] = {"exercise": str, "code": str, "text": str, "figure": str, "outputs": str, "texts": dict,
-                           "given": dict}
+                           "given": dict, "step": str, "steps": dict}
 
 
 def _exercise(request: dict[str, Any], kind: str | None = None):
@@ -80,10 +83,17 @@ def _exercise(request: dict[str, Any], kind: str | None = None):
 
 def _grade(request: dict[str, Any]) -> dict[str, Any]:
     ex = _exercise(request)
-    sent = request.get("given")
-    if sent and ex.kind == "derive":
-        return chains.grade(ex, request.get("answer"), sent, bank.variant).to_dict()
-    return ex.check(request.get("answer")).to_dict()
+    if ex.kind != "derive":
+        if request.get("step") is not None or request.get("steps"):
+            raise GradingError("bad-request", f"Exercise {ex.id} is a {ex.kind} exercise: it has no steps.")
+        return ex.check(request.get("answer")).to_dict()
+    sent, answer = request.get("given") or {}, request.get("answer")
+    chain = chains.wrong_values(ex, sent, bank.variant) if sent and ex.uses else ({}, {})
+    mine = request.get("steps") or {}
+    if request.get("step") is not None:
+        return steps.grade_step(ex, request["step"], answer, mine, chain).to_dict()
+    verdict = chains.grade(ex, answer, sent, bank.variant) if sent else ex.check(answer)
+    return steps.grade_final(ex, answer, mine, verdict, chain).to_dict() if ex.steps else verdict.to_dict()
 
 
 def _run(request: dict[str, Any]) -> dict[str, Any]:
@@ -115,12 +125,18 @@ def _figure(request: dict[str, Any]) -> dict[str, Any]:
         raise GradingError("figure", str(err)) from None
 
 
+def _part(request: dict[str, Any]):
+    """The answer a split or read is for: the exercise's own, or one of its steps' (``step``)."""
+    ex = _exercise(request, "derive")
+    return ex if request.get("step") is None else steps.answer_of(ex, request["step"])
+
+
 def _split(request: dict[str, Any]) -> dict[str, Any]:
-    return _exercise(request, "derive").split(request.get("text"))
+    return _part(request).split(request.get("text"))
 
 
 def _read(request: dict[str, Any]) -> dict[str, Any]:
-    return _exercise(request, "derive").read(request.get("answer"))
+    return _part(request).read(request.get("answer"))
 
 
 def _draw(request: dict[str, Any]) -> dict[str, Any]:
@@ -179,6 +195,9 @@ def _well_formed(request: dict[str, Any]) -> None:
                                f"not a {getattr(kind, '__name__', 'value')}.")
     _check_answer(request.get("answer"))
     _check_given(request.get("given") or {})
+    steps.check_sent(request.get("steps") or {})
+    for answer in (request.get("steps") or {}).values():
+        _check_answer(answer)
     texts = request.get("texts") or {}
     if sum(len(v) for v in texts.values() if isinstance(v, str)) > TEXTS_CAP:
         raise GradingError("bad-request", "This draw's texts are too long.")

@@ -109,6 +109,11 @@ def grade(ex: Derive, answer: object, sent: Mapping[str, Any] | None, find: Call
         return verdict
     if not follows:
         return verdict
+    return carried_verdict(values, links)
+
+
+def carried_verdict(values: Mapping[str, Any], links: Mapping[str, Any]) -> Verdict:
+    """The verdict on an answer that follows from the learner's wrong earlier values (``links``: from wrong_values)."""
     (name, (link, variant)), *_ = links.items()
     shown = _shown(values[name])
     mine = f"your {link.what}" + (f" = {shown}" if shown else "")

@@ -18,6 +18,7 @@ from typing import Any, ClassVar, Mapping
 
 from ..answer_kinds.base import AnswerKind, AnswerSpec
 from ..contract import ATTR
+from .. import steps as stepwise
 from ..chains import Uses
 from ..number_format import fmt
 from ..variants import VariantError, Vary, check_seed
@@ -38,6 +39,8 @@ class Derive(Exercise):
     params: Mapping[str, Any] = field(default_factory=dict, compare=False, repr=False)  # this variant's draw
     spec: AnswerSpec | None = field(default=None, compare=False, repr=False)
     uses: tuple[Uses, ...] = field(default=(), compare=False, repr=False)  # the earlier results it builds on
+    steps: tuple[stepwise.Step, ...] = field(default=(), compare=False, repr=False)  # its checked steps, in order
+    step_answers: Mapping[str, AnswerKind] = field(default_factory=dict, compare=False, repr=False)
     kind: ClassVar[str] = "derive"
     reveal_label: ClassVar[str] = "Show derivation"
 
@@ -48,6 +51,8 @@ class Derive(Exercise):
                              "or formula(...)")
         object.__setattr__(self, "spec", spec)
         if self.vary is None:
+            if self.steps:
+                raise ValueError(f"exercise {self.id}: steps need a generator (vary=Vary(make, ...))")
             self._set(spec.build(self.id), {})
             return
         for p in self.vary.candidates(self.id, self.seed):
@@ -59,8 +64,9 @@ class Derive(Exercise):
                 raise VariantError(f"exercise {self.id}: {{{{{WORKED}}}}} is filled by the answer kind, not by make()")
             if "title" in made:
                 object.__setattr__(self, "title", made.pop("title"))
+            self._set_steps(made.pop("steps", None), values)
             self._set(spec.build(self.id, **made), values, p)
-            problem = self.answer.degenerate()
+            problem = self.answer.degenerate() or self._degenerate_step()
             if problem is None:
                 return
             if self.seed == 0:
@@ -71,6 +77,25 @@ class Derive(Exercise):
         object.__setattr__(self, "answer", answer)
         object.__setattr__(self, "values", {**values, WORKED: answer.worked_tex()})
         object.__setattr__(self, "params", dict(params or {}))
+
+    def _set_steps(self, made: Mapping[str, Any] | None, values: dict[str, str]) -> None:
+        """Build the steps' answer kinds; ``{{step_NAME}}`` prints each one's worked answer."""
+        if not self.steps and made is None:
+            return
+        kinds = stepwise.build(self.id, self.steps, made)
+        for name, kind in kinds.items():
+            key = stepwise.placeholder(name)
+            if key in values:
+                raise VariantError(f"exercise {self.id}: {{{{{key}}}}} is filled by the step's answer kind, not by make()")
+            values[key] = kind.worked_tex()
+        object.__setattr__(self, "step_answers", kinds)
+
+    def _degenerate_step(self) -> str | None:
+        for name, kind in self.step_answers.items():
+            problem = kind.degenerate()
+            if problem:
+                return f"step {name}: {problem}"
+        return None
 
     def variant(self, seed: object) -> "Derive":
         """This exercise with variant ``seed``'s numbers (0: the workbook's own)."""
@@ -83,9 +108,13 @@ class Derive(Exercise):
         """This variant's answer with ``given`` (the learner's earlier values, by the names
         ``make()`` takes) in place of the printed ones: the key recomputed by the generator."""
         made = dict(self.vary.make(self.params, given=given))
-        made.pop("values", None)
-        made.pop("title", None)
+        for name in ("values", "title", "steps"):
+            made.pop(name, None)
         return self.spec.build(self.id, **made)
+
+    def carried_steps(self, given: Mapping[str, Any]) -> dict[str, AnswerKind]:
+        """The steps' answer kinds with ``given`` in place of the printed values, by the generator."""
+        return stepwise.build(self.id, self.steps, self.vary.make(self.params, given=given).get("steps"))
 
     # ---- what the page and the worker ask: the answer kind answers ----------------
     @property
@@ -94,7 +123,8 @@ class Derive(Exercise):
 
     def attributes(self) -> dict[str, str]:
         uses = {ATTR.uses: " ".join(dict.fromkeys(u.source for u in self.uses))} if self.uses else {}
-        return {ATTR.answerKind: self.answer.kind, **self.answer.attributes(), **uses}
+        steps = {ATTR.steps: " ".join(s.name for s in self.steps)} if self.steps else {}
+        return {ATTR.answerKind: self.answer.kind, **self.answer.attributes(), **uses, **steps}
 
     def check(self, answer: object) -> Verdict:
         return self.answer.check(answer)
