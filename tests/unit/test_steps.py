@@ -1,0 +1,158 @@
+"""Checked steps: every exercise with steps, over 200 variants.
+
+For each draw of each exercise that declares steps (``steps=(Step(...), ...)``):
+
+- the derivation prints every step through its ``{{step_NAME}}`` placeholder, so the
+  intermediate it shows is the step's worked answer, and the step's grader accepts
+  that printed value (and refuses each of the step's slips with its own message);
+- the steps chain to the final key: the generator fed every step's key (as a learner
+  who typed each printed value) gives the same final key;
+- a wrong step carries forward: the next step (and the final answer) computed by the
+  generator from the learner's wrong value is ``carried`` and names the wrong step;
+  the right next step is still ``correct``; a value that follows from neither is plain
+  ``incorrect``.
+"""
+
+from __future__ import annotations
+
+import json
+import random
+from pathlib import Path
+
+import pytest
+
+from workbook import bank, steps
+from workbook.api import handle
+
+from exercise_text import load_all  # docs/hooks/exercise_text.py
+
+ROOT = Path(__file__).resolve().parents[2]
+DRAWS = 200
+STEPPED = [ex for ex in bank.all_exercises() if ex.kind == "derive" and ex.steps]
+TEXTS = load_all(ROOT)
+
+
+def test_enough_exercises_can_be_worked_in_steps():
+    assert len(STEPPED) >= 1
+    for ex in STEPPED:
+        assert len(ex.steps) >= 2, f"{ex.id}: a derivation worked in steps has at least two intermediates"
+
+
+def _off(value, rng):
+    """A wrong value as a learner might reach it: one entry (or the number) moved by 5-60 % and a little more."""
+    def move(v):
+        return v + rng.choice((-1, 1)) * (abs(v) * rng.uniform(0.05, 0.6) + rng.uniform(0.05, 0.5))
+
+    if isinstance(value, tuple):
+        rows = [list(r) for r in value]
+        i, j = rng.randrange(len(rows)), rng.randrange(len(rows[0]))
+        rows[i][j] = move(rows[i][j])
+        return tuple(map(tuple, rows))
+    return move(value)
+
+
+def _grade(ex, answer, step=None, sent=None):
+    request = {"op": "grade", "exercise": ex.id, "variant": ex.seed, "answer": answer, "steps": sent or {}}
+    if step is not None:
+        request["step"] = step
+    reply = json.loads(handle(json.dumps(request)))
+    assert reply["ok"], reply
+    return reply["value"]
+
+
+def _variants(ex):
+    """Up to 200 distinct draws (a small grid may have fewer)."""
+    seen = set()
+    for seed in range(DRAWS * 3):
+        v = ex.variant(seed)
+        key = tuple(sorted(v.values.items()))
+        if key in seen:
+            continue
+        seen.add(key)
+        yield v
+        if len(seen) == DRAWS:
+            return
+
+
+@pytest.mark.parametrize("ex", STEPPED, ids=[ex.id for ex in STEPPED])
+def test_the_derivation_prints_each_step_and_the_step_accepts_it(ex):
+    solution = TEXTS[ex.id].solution
+    for s in ex.steps:
+        assert "{{" + steps.placeholder(s.name) + "}}" in solution, f"{ex.id}: the derivation never prints step {s.name}"
+    for v in _variants(ex):
+        for s in v.steps:
+            kind = v.step_answers[s.name]
+            assert v.values[steps.placeholder(s.name)] == kind.worked_tex()
+            assert kind.check(kind.worked_text()).status == "correct", (v.seed, s.name, kind.worked_text())
+            for slip in kind.slips:
+                said = kind.check(kind.typed(slip.value))
+                assert said.status == "incorrect" and said.message == slip.message, (v.seed, s.name, slip.message)
+
+
+@pytest.mark.parametrize("ex", STEPPED, ids=[ex.id for ex in STEPPED])
+def test_the_steps_chain_to_the_final_key(ex):
+    for v in _variants(ex):
+        typed = {s.name: v.step_answers[s.name].worked_text() for s in v.steps}
+        read = {s.name: steps._status(v.step_answers[s.name], typed[s.name])[1] for s in v.steps}
+        final = v.carried_answer(read)
+        assert final.check(v.answer.typed(v.answer.key)).status == "correct", (v.seed, "printed steps, final key")
+        later = v.carried_steps(read)
+        for s in v.steps:
+            assert later[s.name].check(typed[s.name]).status == "correct", (v.seed, s.name)
+        verdict = _grade(v, v.answer.typed(v.answer.key), sent=typed)
+        assert verdict["status"] == "correct", (v.seed, verdict)
+
+
+@pytest.mark.parametrize("ex", STEPPED, ids=[ex.id for ex in STEPPED])
+def test_a_wrong_step_is_carried_forward_and_named(ex):
+    rng = random.Random(ex.id)
+    checked = drawn = 0
+    for v in _variants(ex):
+        drawn += 1
+        first, second = v.steps[0], v.steps[1]
+        kind = v.step_answers[first.name]
+        wrong = _off(kind.key, rng)
+        sent = {first.name: kind.typed(wrong)}
+        try:
+            carried = v.carried_steps({first.name: wrong})[second.name]
+            final = v.carried_answer({first.name: wrong})
+        except (ValueError, ArithmeticError):
+            continue  # the wrong value leaves the model (a root of a negative, ...): nothing to carry
+        right = v.step_answers[second.name]
+        if right.check(carried.typed(carried.key)).status == "correct":
+            continue  # this wrong value happens not to change the next step
+        checked += 1
+        said = _grade(v, carried.typed(carried.key), second.name, sent)
+        assert (said["status"], said["tag"]) == ("incorrect", "carried"), (v.seed, said)
+        assert said["data"]["carried"]["step"] == first.name
+        assert _grade(v, right.typed(right.key), second.name, sent)["status"] == "correct", v.seed
+        neither = _off(right.key, rng)
+        if carried.check(carried.typed(neither)).status != "correct":
+            plain = _grade(v, right.typed(neither), second.name, sent)
+            assert plain["status"] == "incorrect" and plain["tag"] != "carried", (v.seed, plain)
+        if v.answer.check(final.typed(final.key)).status != "correct":
+            said = _grade(v, final.typed(final.key), sent=sent)
+            assert said["tag"] == "carried" and said["data"]["carried"]["step"] == first.name, (v.seed, said)
+    assert checked >= drawn // 2, f"{ex.id}: only {checked} of {drawn} draws had a first step that changes the second"
+
+
+@pytest.mark.parametrize("ex", STEPPED, ids=[ex.id for ex in STEPPED])
+def test_a_wrong_final_answer_names_the_first_step_to_look_at(ex):
+    v = ex.variant(1)
+    final = v.answer
+    wrong = final.typed(_off(final.key, random.Random(1)))
+    said = _grade(v, wrong)
+    assert said["status"] == "incorrect" and said["data"]["steps"]["first"] == v.steps[0].name, said
+    right_first = {v.steps[0].name: v.step_answers[v.steps[0].name].worked_text()}
+    said = _grade(v, wrong, sent=right_first)
+    assert said["data"]["steps"] == {"first": v.steps[1].name, "number": 2, "label": v.steps[1].label}, said
+
+
+def test_a_step_request_that_names_no_step_of_the_exercise_is_refused_in_words():
+    ex = STEPPED[0]
+    reply = json.loads(handle(json.dumps({"op": "grade", "exercise": ex.id, "step": "nope", "answer": "1"})))
+    assert reply["error"]["kind"] == "bad-request" and "has no step 'nope'" in reply["error"]["message"]
+    reply = json.loads(handle(json.dumps({"op": "grade", "exercise": "0.3", "step": "x", "answer": "a"})))
+    assert reply["error"]["kind"] == "bad-request" and "no steps" in reply["error"]["message"]
+    reply = json.loads(handle(json.dumps({"op": "grade", "exercise": ex.id, "answer": "1", "steps": [1]})))
+    assert reply["error"]["kind"] == "bad-request"
