@@ -139,15 +139,21 @@ browser: $(BIN)/.test
 	else echo "make browser: no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; fi
 	@echo "browser: $$($(BIN)/python scripts/find_browser.py)"
 
+# Both suites run on TEST_JOBS processes (pytest-xdist): the unit tests one by one, the browser
+# tests a file at a time (a file's tests share its fixtures and its one Chromium).
+TEST_JOBS ?= 2
+UNIT := $(BIN)/python -m pytest -n $(TEST_JOBS) tests/unit
+BROWSER := $(BIN)/python -m pytest -n $(TEST_JOBS) --dist loadfile tests/browser
+
 test-unit: $(BIN)/.test node_modules/.installed
-	$(BIN)/python -m pytest tests/unit
+	$(UNIT)
 
 test-browser: site browser
-	$(BIN)/python -m pytest tests/browser
+	$(BROWSER)
 
 test: site browser
-	$(BIN)/python -m pytest tests/unit
-	$(BIN)/python -m pytest tests/browser
+	$(UNIT)
+	$(BROWSER)
 
 bench: site browser
 	cd scripts && ../$(BIN)/python -m bench $(BENCH_ARGS)

@@ -1,13 +1,15 @@
 """Browser tests: the built site (``site/``) served on 127.0.0.1 under a
 sub-path, as on a GitHub Pages project site, driven by Playwright in Chromium.
 
-Every request to any other origin is aborted and counted; a test fails if one
-was made. The browser is Playwright's own where installed, else Debian's
+Every request to any other origin fails (the browser resolves no other host) and
+is counted; a test fails if one was made. Tests marked ``uncached`` (the offline
+ones) also route every request, which turns the browser's HTTP cache off. The browser is Playwright's own where installed, else Debian's
 chromium (see scripts/find_browser.py).
 """
 
 from __future__ import annotations
 
+import os
 import sys
 from pathlib import Path
 
@@ -18,7 +20,7 @@ SITE = ROOT / "site"
 sys.path.insert(0, str(ROOT / "scripts"))
 
 from find_browser import find_browser
-from helpers import keep_to_origin  # noqa: E402
+from helpers import keep_to_origin, record_leaving  # noqa: E402
 from site_server import SUBPATH, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 
 
@@ -39,14 +41,22 @@ def browser_type_launch_args(browser_type_launch_args):
         **browser_type_launch_args,
         "executable_path": path,
         "args": ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",
-                 "--disable-sync", "--no-first-run", "--disable-quic"],
+                 "--disable-sync", "--no-first-run", "--disable-quic",
+                 "--host-resolver-rules=MAP * ~NOTFOUND , EXCLUDE 127.0.0.1 , EXCLUDE localhost"],
     }
 
 
+def pytest_configure(config):
+    config.addinivalue_line("markers", "uncached: route every request (no HTTP cache), as the offline tests need")
+
+
 @pytest.fixture
-def external_requests(context, site_url):
-    """Abort (and record) every request that leaves the site's origin."""
-    blocked = keep_to_origin(context, site_url)
+def external_requests(request, context, site_url):
+    """Record (and, with ``uncached``, abort) every request that leaves the site's origin."""
+    if request.node.get_closest_marker("uncached") or os.environ.get("WORKBOOK_ROUTE_ALL"):
+        blocked = keep_to_origin(context, site_url)
+    else:
+        blocked = record_leaving(context, site_url)
     yield blocked
     assert blocked == [], f"requests left the site's origin: {blocked}"
 

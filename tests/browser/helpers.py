@@ -202,8 +202,25 @@ def solve(page: Page, ex) -> str:
     return run_build(el)
 
 
+def record_leaving(context, url: str) -> list[str]:
+    """Record every request of ``context`` that leaves ``url``'s origin (the browser itself cannot
+    resolve any other host: conftest's launch arguments). Unlike :func:`keep_to_origin` this leaves
+    the browser's HTTP cache on, as a learner's browser has it."""
+    origin = "{0.scheme}://{0.netloc}".format(urlsplit(url))
+    leaving: list[str] = []
+
+    def seen(request):
+        if not request.url.startswith((origin, "data:", "blob:")):
+            leaving.append(request.url)
+
+    context.on("request", seen)
+    return leaving
+
+
 def keep_to_origin(context, url: str) -> list[str]:
-    """Abort every request of ``context`` that leaves ``url``'s origin; the list records them."""
+    """Abort every request of ``context`` that leaves ``url``'s origin; the list records them.
+    Routing every request turns the browser's HTTP cache off: the offline tests want exactly that
+    (what is stored for offline use must come from the site's own copy, not from that cache)."""
     origin = "{0.scheme}://{0.netloc}".format(urlsplit(url))
     blocked: list[str] = []
 

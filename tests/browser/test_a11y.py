@@ -62,6 +62,9 @@ def open_all_help(page: Page) -> None:
 
 
 def audit(page: Page) -> list[str]:
+    # The page checks its scrolling boxes (focusable when they overflow) a moment after each change;
+    # a box just revealed is checked now, so that axe measures the page as it settles.
+    page.evaluate("() => window.workbook?.checkScrollRegionsNow?.()")
     if not page.evaluate("typeof window.axe === 'object'"):
         page.evaluate(AXE.read_text())  # not a <script> element: the page's policy would block it
         # Colours are measured as they are, not halfway through the theme's colour transitions.

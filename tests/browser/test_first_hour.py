@@ -84,7 +84,9 @@ def formulas_ready(page: Page) -> None:
 
 
 def check_formulas(page: Page) -> dict:
-    """The formulas' state once the page's scroll boxes are marked (a11y.js does it when the page is idle)."""
+    """The formulas' state once the page's scroll boxes are marked (a11y.js does it a moment after a
+    change, when the page is idle; the page is asked to do it now)."""
+    page.evaluate("() => window.workbook?.checkScrollRegionsNow?.()")
     result = page.evaluate(CLIPPED)
     for _ in range(40):
         if not result["bad"]:

@@ -23,6 +23,8 @@ from site_server import SiteServer
 from helpers import keep_to_origin, network_is_off, role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page, expect
 
+pytestmark = pytest.mark.uncached  # the offline copy must not lean on the HTTP cache
+
 ROTATE_NUMPY = (
     "import numpy as np\n\n"
     "def rotate_2d(x, y, theta):\n"

@@ -25,6 +25,8 @@ from playwright.sync_api import expect
 
 from workbook.contract import ATTR, DATA
 
+pytestmark = pytest.mark.uncached  # the offline copy must not lean on the HTTP cache
+
 LONG = 120_000
 STATES = DATA["offlineStates"]
 RECORD_STATES = """

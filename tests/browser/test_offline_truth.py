@@ -25,6 +25,8 @@ from site_server import SiteServer
 from workbook import bank
 from workbook.contract import ATTR
 
+pytestmark = pytest.mark.uncached  # the offline copy must not lean on the HTTP cache
+
 LONG = 120_000
 MANIFEST = json.loads(re.search(r"const FILES = (\[.*?\n\]);", (SITE / "sw.js").read_text(), re.S).group(1))
 

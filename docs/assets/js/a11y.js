@@ -81,6 +81,11 @@ function later() {
   }, 150);
 }
 
+/** Check every box now rather than after the pause (tests and tools measure the page as it settles). */
+export function checkScrollRegionsNow() {
+  scan();
+}
+
 export function initScrollRegions() {
   new MutationObserver(later).observe(document.body, { childList: true, subtree: true, attributeFilter: ["hidden"] });
   window.addEventListener("resize", later);

@@ -10,7 +10,7 @@ import { initFigures } from "./figures.js";
 import { initProgressPage } from "./progress-ui.js";
 import { initPractise } from "./practise.js";
 import { registerOffline } from "./offline.js";
-import { initScrollRegions } from "./a11y.js";
+import { checkScrollRegionsNow, initScrollRegions } from "./a11y.js";
 import { initLoading } from "./loading.js";
 import { initJumps } from "./jump.js";
 import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
@@ -42,7 +42,7 @@ if (typeof Worker === "undefined") {
   runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
   runtime.announce([...exercises()].map((el) => el.getAttribute(ATTR.exercise)));
 }
-window.workbook = { runtime, progress };
+window.workbook = { runtime, progress, checkScrollRegionsNow };
 registerOffline(siteRoot, progress);
 initLoading();
 initScrollRegions();
