@@ -22,6 +22,7 @@ from ..variants import Param, Vary
 from .. import chains
 from ..steps import Step
 from . import column, grid
+from .checks import apart
 
 _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
@@ -58,21 +59,34 @@ def _pose_count(p):
     }
 
 
-def _odometry_error(p):
-    """5.2: e = z₁₂ − (x₂ − x₁) for pose 1 at the origin; asked: its x-component."""
+def _odometry_error(p, given=None):
+    """5.2: e = z₁₂ − (x₂ − x₁) for pose 1 at the origin; asked: its x-component. In steps: the
+    pose difference d = x₂ − x₁, then the whole e (each the learner's own when ``given`` has it)."""
     x2 = (p["x2"], p["y2"], p["t2"])
-    e = edge_error_simple(_X1, x2, _Z12)
+    diff = column(b - a for a, b in zip(_X1, x2))
+    d = [row[0] for row in chains.given(given, "d", diff)]
+    e = [row[0] for row in chains.given(given, "e", column(edge_error_simple((0.0, 0.0, 0.0), d, _Z12)))]
     exact = edge_error(_X1, x2, _Z12)[0]
-    change = abs(exact - e[0]) / abs(e[0])
+    change = abs(exact - e[0]) / abs(e[0]) if e[0] else 0.0
+    again = [Slip(column(d), "That is x₂ − x₁ again, from step 1. Subtract it from the odometry reading "
+                             "z₁₂ = (1, 0, 0).")]
     return {
         "key": e[0],
         "slips": (
             Slip(-e[0], "The sign is flipped: you computed (x₂ − x₁) − z₁₂. The error is measurement minus prediction."),
-            Slip(x2[0] - _X1[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
+            Slip(d[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
         ),
+        "steps": {
+            "d": {"key": diff, "slips": (
+                Slip(column(a - b for a, b in zip(_X1, x2)), "That is x₁ − x₂, the difference the wrong way round: "
+                                                             "the motion runs from pose 1 to pose 2, x₂ − x₁."),)},
+            "e": {"key": column(e), "slips": (
+                Slip(column(-v for v in e), "The sign is flipped: that is (x₂ − x₁) − z₁₂. The error is the "
+                                            "measurement minus the prediction, z₁₂ − (x₂ − x₁)."),
+                *(again if apart(e, d) else ())),
+            },
+        },
         "values": {
-            "dx": fmt(x2[0] - _X1[0]), "dy": fmt(x2[1] - _X1[1]), "dt": fmt(x2[2] - _X1[2]),
-            "ex": fmt(e[0]), "ey": fmt(e[1]), "et": fmt(e[2]),
             "sign": "negative" if e[0] < 0 else "positive",
             "gap": fmt(abs(e[0])),
             "apart": "further apart" if e[0] < 0 else "closer together",
@@ -267,6 +281,9 @@ EXERCISES = (
         answer=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
         vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
                   Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"), Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
+        steps=(Step("d", "x₂ − x₁", matrix(label="x₂ − x₁", names=("dx|x", "dy|y", "dθ|θ"), units=("m", "m", "rad"))),
+               Step("e", "e = z₁₂ − (x₂ − x₁)", matrix(label="e = z₁₂ − (x₂ − x₁)", names=("e_x|x", "e_y|y", "e_θ|θ"),
+                                                      units=("m", "m", "rad")))),
     ),
     Derive(
         id="5.3",
