@@ -171,7 +171,8 @@ def _turned_edge_error(p, given=None):
         ),
         "steps": {
             "d": {"key": column((dx, dy)), "slips": (
-                Slip(column((-dx, -dy)), "That is x₁ − x₂, the difference the wrong way round: pose 2 minus pose 1."),
+                Slip(column((-dx, -dy)), "That is x₁ − x₂, the wrong way round: the difference runs from pose 1 "
+                                         "to pose 2, x₂ − x₁."),
                 Slip(column(xj[:2]), "That is where pose 2 is. Subtract pose 1's position (2, 1) from it.")),
             },
             "h": {"key": column(h), "slips": (
