@@ -11,11 +11,11 @@ from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import bmatrix, fmt, pi_frac, relation
 from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
-from ..reference.linalg import add, matmul, sub, identity, transpose
+from ..reference.linalg import add, matmul, transpose
 from ..tolerance import clean
 from ..variants import Choice, Param, Vary
 from .. import chains
-from ..chains import Uses
+from ..steps import Step
 from . import grid
 from .checks import apart, slips_apart
 from .heading_column import heading_column_formula
@@ -140,11 +140,33 @@ def _north_f13_ok(p) -> bool:
 
 
 # ---- 3.4 (3.8: ch3_whole_matrices.py) ------------------------------------------------------------------
-def _east_covariance(v, dt, P, Q):
-    """F, F P, F P Fᵀ and P⁻ facing east (θ = 0) with the reference code."""
-    F = motion_jacobian((0, 0, _EAST), v, 0, dt)
-    FP = matmul(F, P)
-    return F, FP, matmul(FP, transpose(F)), ekf_predict((0, 0, _EAST), P, v, 0, dt, Q)[1]
+def _pushed_forward(F, P, Q, given=None):
+    """F P, F P Fᵀ and P⁻ = F P Fᵀ + Q for any F (3.4 and 3.8), each step from the learner's own
+    previous one when ``given`` has it (steps FP and FPF). The reference's predict step agrees:
+
+    >>> F = motion_jacobian((0, 0, _EAST), 1, 0, 1)
+    >>> _pushed_forward(F, _P, _Q)[2] == ekf_predict((0, 0, _EAST), _P, 1, 0, 1, _Q)[1]
+    True
+    """
+    FP = [list(r) for r in chains.given(given, "FP", matmul(F, P))]
+    FPF = [list(r) for r in chains.given(given, "FPF", matmul(FP, transpose(F)))]
+    return FP, FPF, add(FPF, Q)
+
+
+PUSH_STEPS = (Step("FP", "F P", matrix(label="F P")), Step("FPF", "F P Fᵀ", matrix(label="F P Fᵀ")))
+
+
+def push_steps(F, P, Q, FP, FPF) -> dict:
+    """The steps F P and F P Fᵀ (3.4 and 3.8): their keys and the slips made at each."""
+    return {
+        "FP": {"key": grid(FP), "slips": (
+            Slip(grid(matmul(P, F)), "That is P F, the product in the wrong order: F comes first, so row i "
+                                     "of F P is row i of F times P."),)},
+        "FPF": {"key": grid(FPF), "slips": (
+            Slip(grid(matmul(FP, F)), "That is (F P) F: the second factor is Fᵀ, the transpose of F."),
+            Slip(grid(add(FPF, Q)), "That already adds Q: this step is F P Fᵀ alone; Q comes last.")),
+        },
+    }
 
 
 def _heading_gain(f: float, p33: float, name: str = "F_{23}") -> str:
@@ -157,12 +179,14 @@ def _heading_gain(f: float, p33: float, name: str = "F_{23}") -> str:
 _ASKED = {"1,1": (0, "P^-_{11}"), "2,2": (1, "P^-_{22}")}
 
 
-def _covariance_entry(p):
-    """3.4: one diagonal entry of P⁻ = F P Fᵀ + Q facing east."""
+def _covariance_entry(p, given=None):
+    """3.4: one diagonal entry of P⁻ = F P Fᵀ + Q facing east, worked in steps (F P, then F P Fᵀ);
+    ``given`` holds the learner's own steps."""
     v, dt, entry = p["v"], p["dt"], p["entry"]
     P = _diag(p["p11"], p["p22"], p["p33"])
     Q = _diag(p["q11"], p["q22"], p["q33"])
-    F, FP, FPF, Pm = _east_covariance(v, dt, P, Q)
+    F = motion_jacobian((0, 0, _EAST), v, 0, dt)
+    FP, FPF, Pm = _pushed_forward(F, P, Q, given)
     f23 = F[1][2]
     i, asked = _ASKED[entry]
     if entry == "1,1":
@@ -181,8 +205,8 @@ def _covariance_entry(p):
         "key": Pm[i][i],
         "label": f"P⁻({entry})",
         "slips": tuple(slips),
-        "values": {"f23": fmt(f23), "FP": bmatrix(FP), "FPF": bmatrix(FPF), "Pm": bmatrix(Pm),
-                   "p22m": fmt(Pm[1][1]), "p23m": fmt(Pm[1][2]), "asked": asked},
+        "steps": push_steps(F, P, Q, FP, FPF),
+        "values": {"f23": fmt(f23), "Pm": bmatrix(Pm), "p22m": fmt(Pm[1][1]), "p23m": fmt(Pm[1][2]), "asked": asked},
     }
 
 
@@ -231,6 +255,7 @@ EXERCISES = (
                   Param("q11", 0.01, 0.01, 0.05, 0.01), Param("q22", 0.01, 0.01, 0.05, 0.01),
                   Param("q33", 0.001, 0.001, 0.005, 0.001), Choice("entry", "1,1", ("1,1", "2,2")),
                   valid=_covariance_entry_ok),
+        steps=PUSH_STEPS,
     ),
     Debug(
         id="3.5",

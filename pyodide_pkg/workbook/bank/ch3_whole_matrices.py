@@ -12,23 +12,15 @@ from ..reference.linalg import add, matmul, sub, identity, transpose
 from ..variants import Param, Vary
 from .. import chains
 from ..chains import Uses
-from ..steps import Step
 from . import grid
 from .checks import slips_apart
-from .ch3_ekf_predict import _EAST, _NORTH, _P, _Q, _heading_gain, _metres  # the chapter's shared numbers
+from .ch3_ekf_predict import (  # the chapter's shared numbers, and the steps F P, F P Fᵀ (3.4's too)
+    _EAST, _NORTH, _P, _Q, PUSH_STEPS, _heading_gain, _metres, _pushed_forward, push_steps)
 
 _PRINTED_37 = (2, 0.5)  # (v, dt) as the workbook prints 3.7 (variant 0); 3.8's variant 0 carries its F
 
 
 # ---- 3.8 ------------------------------------------------------------------------
-def _pushed_forward(F, P, Q, given=None):
-    """F P, F P Fᵀ and P⁻ = F P Fᵀ + Q for any F (3.8: 3.7's, or the learner's own), each step
-    from the learner's own previous one when ``given`` has it."""
-    FP = [list(r) for r in chains.given(given, "FP", matmul(F, P))]
-    FPF = [list(r) for r in chains.given(given, "FPF", matmul(FP, transpose(F)))]
-    return FP, FPF, add(FPF, Q)
-
-
 def _predicted_covariance(p, given=None):
     """3.8: the whole P⁻ = F P Fᵀ + Q facing north with 3.7's F (or the learner's own, ``given``),
     and exercise 3.4's P and Q. The reference's own predict step agrees with the printed F:
@@ -57,15 +49,7 @@ def _predicted_covariance(p, given=None):
     return {
         "key": grid(Pm),
         "slips": tuple(slips),
-        "steps": {
-            "FP": {"key": grid(FP), "slips": (
-                Slip(grid(matmul(_P, F)), "That is P F, the product in the wrong order: F comes first, so row i "
-                                          "of F P is row i of F times P."),)},
-            "FPF": {"key": grid(FPF), "slips": (
-                Slip(grid(matmul(FP, F)), "That is (F P) F: the second factor is Fᵀ, the transpose of F."),
-                Slip(grid(add(FPF, _Q)), "That already adds Q: this step is F P Fᵀ alone; Q comes last.")),
-            },
-        },
+        "steps": push_steps(F, _P, _Q, FP, FPF),
         "values": {
             "src": "the robot of exercise 3.7" if printed else "the robot",
             "pdef": f"\\operatorname{{diag}}({fmt(_P[0][0])}, {fmt(_P[1][1])}, {fmt(_P[2][2])})",
@@ -134,6 +118,6 @@ EXERCISES = (
         vary=Vary(_predicted_covariance, Param("v", _PRINTED_37[0], 0.5, 2, 0.5, unit=" m/s"),
                   Param("dt", _PRINTED_37[1], 0.2, 2, 0.2, unit=" s"), valid=_predicted_covariance_ok),
         uses=(Uses("3.7", "F", "F", variant=lambda p: 0 if (p["v"], p["dt"]) == _PRINTED_37 else None),),
-        steps=(Step("FP", "F P", matrix(label="F P")), Step("FPF", "F P Fᵀ", matrix(label="F P Fᵀ"))),
+        steps=PUSH_STEPS,
     ),
 )

@@ -6,15 +6,16 @@ from ..kinds.build import Build
 from ..answer_kinds.base import Slip
 from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
-from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fixed, fmt, paren, relation, shown
 from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
-from ..variants import Choice, Param, Vary
+from ..variants import Param, Vary
 from .. import chains
 from ..chains import Uses
-from . import grid
+from ..steps import Step
+from . import column
+from .checks import apart
 
 _POSE = (0, 0, 0)
 _LANDMARK = (3, 4)
@@ -44,9 +45,56 @@ def _sighting(p):
     }
 
 
-def _predicted_range(p):
-    """4.1: the range from the robot at (x, y) to the landmark (lx, ly)."""
+# ---- the steps of a sighting (4.1 to 4.3, 4.7): the offset d = (dx, dy), then q or the bearing ----------
+OFFSET = Step("d", "(dx, dy)", matrix(label="(dx, dy) = (lx − x, ly − y)", names=("dx", "dy"), unit="m"))
+SQUARED = Step("q", "q = dx² + dy²", number(label="q = dx² + dy²"))
+ANGLE = Step("phi", "atan2(dy, dx) in radians", number(label="atan2(dy, dx)", unit="rad", angle="rad", periodic=True))
+
+
+def _offset(p, s, given):
+    """Step d: the landmark's offset from the robot, the learner's own when ``given`` has it.
+    Returns (dx, dy) and the step (its key and the slips made at it)."""
+    key = column((s["dx"], s["dy"]))
+    dx, dy = (row[0] for row in chains.given(given, "d", key))
+    slips = [Slip(column((-s["dx"], -s["dy"])), "That is the robot's position minus the landmark's: the offset is "
+                                                "the landmark minus the robot, dx = lx − x and dy = ly − y.")]
+    if apart(key, column(s["landmark"]), slips[0].value):
+        slips.append(Slip(column(s["landmark"]), "That is where the landmark is. Its offset from the robot "
+                                                 f"subtracts the robot's position ({fmt(p['x'])}, {fmt(p['y'])})."))
+    return (dx, dy), {"key": key, "slips": tuple(slips)}
+
+
+def _squared(d, given):
+    """Step q = dx² + dy² from the learner's own offset ``d``; the learner's own q when ``given`` has it."""
+    dx, dy = d
+    key = dx * dx + dy * dy
+    slips = [Slip((dx + dy) ** 2, "That is (dx + dy)², the square of the sum. Square each offset on its own, "
+                                  "then add: q = dx² + dy².")]
+    signed = dx * abs(dx) + dy * abs(dy)  # a negative offset squared as −(d²)
+    if (dx < 0 or dy < 0) and apart(key, slips[0].value, signed):
+        slips.append(Slip(signed, "A negative offset squared gives a positive number: (−a)² = a², so every "
+                                  "term of q = dx² + dy² adds."))
+    return chains.given(given, "q", key), {"key": key, "slips": tuple(slips)}
+
+
+def _jacobian_of(d, q):
+    """H from the offset ``d`` and ``q`` (the learner's own steps, or the printed ones). With
+    q = dx² + dy² it is the reference's measurement Jacobian:
+
+    >>> _jacobian_of((3, 4), 25) == measurement_jacobian((0, 0, 0), (3, 4))
+    True
+    """
+    dx, dy = d
+    r = math.sqrt(q)
+    return [[-dx / r, -dy / r, 0.0], [dy / q, -dx / q, -1.0]]
+
+
+def _predicted_range(p, given=None):
+    """4.1: the range from the robot at (x, y) to the landmark (lx, ly), in steps d and q."""
     s = _sighting(p)
+    d, offset = _offset(p, s, given)
+    q, squared = _squared(d, given)
+    r = math.sqrt(q)
     a, b = sorted((abs(s["dx"]), abs(s["dy"])))
     if (a, b) == (3, 4):
         remark = "The familiar 3-4-5 right triangle."
@@ -55,8 +103,9 @@ def _predicted_range(p):
     else:
         remark = f"A right triangle with legs {a} m and {b} m: the range is its hypotenuse."
     return {
-        "key": s["r"],
-        "slips": (Slip(float(s["q"]), "That is q = dx² + dy², the squared range. Take its square root."),),
+        "key": r,
+        "slips": (Slip(float(q), "That is q = dx² + dy², the squared range. Take its square root."),),
+        "steps": {"d": offset, "q": squared},
         "values": {**s["values"], "remark": remark,
                    "next41": ("Exercise 4.4 compares this range with a measurement." if s["r"] == _H_PRED[0]
                               and (p["x"], p["y"], p["lx"], p["ly"]) == (0, 0, *_LANDMARK)
@@ -64,35 +113,48 @@ def _predicted_range(p):
     }
 
 
-def _predicted_bearing(p):
-    """4.2: the bearing of the landmark (lx, ly) from the robot at (x, y) facing east, in degrees."""
+def _predicted_bearing(p, given=None):
+    """4.2: the bearing of the landmark (lx, ly) from the robot at (x, y) facing east, in degrees,
+    in steps d and atan2(dy, dx) in radians."""
     s = _sighting(p)
-    phi = range_bearing(s["pose"], s["landmark"])[1]
-    deg = math.degrees(phi)
-    dx, dy = fmt(s["dx"]), fmt(s["dy"])
+    (dx, dy), offset = _offset(p, s, given)
+    phi = range_bearing((0, 0, 0), (dx, dy))[1]
+    turn = 2 * math.pi
+    slips = [Slip(math.atan2(dx, dy), "The arguments are swapped. atan2 takes (dy, dx): the angle is measured "
+                                      "from the x-axis.")]
+    if dx < 0 and apart(phi, slips[0].value, math.atan(dy / dx), turn=turn):
+        slips.append(Slip(math.atan(dy / dx), "That is atan(dy/dx), which cannot tell a landmark behind the robot "
+                                              "(dx < 0) from one ahead of it: it is off by π. atan2(dy, dx) looks at "
+                                              "both signs."))
+    rad = chains.given(given, "phi", phi)
+    deg = math.degrees(rad)
     return {
         "key": deg,
         "slips": (
-            Slip(math.degrees(math.atan2(s["dx"], s["dy"])),
-                 f"The arguments are swapped. atan2 takes (dy, dx): atan2({dy}, {dx}), measured from the x-axis."),
+            Slip(math.degrees(math.atan2(dx, dy)),
+                 f"The arguments are swapped. atan2 takes (dy, dx): atan2({fmt(dy)}, {fmt(dx)}), measured from the x-axis."),
         ),
-        "values": {**s["values"], "rad": fmt(phi), "rad_rel": relation(phi), "deg": fmt(deg),
+        "steps": {"d": offset, "phi": {"key": phi, "slips": tuple(slips)}},
+        "values": {**s["values"], "rad_rel": relation(phi), "deg": fmt(deg),
                    "deg_rel": relation(deg, math.degrees(shown(phi)))},
     }
 
 
-def _range_slope(p):
-    """4.3: H(1,1) = −dx/√q, how fast the range changes as the robot steps along x."""
+def _range_slope(p, given=None):
+    """4.3: H(1,1) = −dx/√q, how fast the range changes as the robot steps along x, in steps d and q."""
     s = _sighting(p)
-    H = measurement_jacobian(s["pose"], s["landmark"])
+    d, offset = _offset(p, s, given)
+    q, squared = _squared(d, given)
+    H = _jacobian_of(d, q)
     deg = math.degrees(range_bearing(s["pose"], s["landmark"])[1])
     return {
         "key": H[0][0],
         "slips": (
             Slip(H[0][1], "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx."),
-            Slip(-s["dx"] / s["q"], f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
-                                    "it is the bearing row that divides by q."),
+            Slip(-d[0] / q, f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
+                            "it is the bearing row that divides by q."),
         ),
+        "steps": {"d": offset, "q": squared},
         "values": {**s["values"], "h11": fmt(H[0][0]), "size": fmt(abs(H[0][0])),
                    "cos_rel": relation(abs(H[0][0]), math.cos(math.radians(shown(deg)))),
                    "phi": f"{fmt(deg)}°" if deg >= 0 else f"({fmt(deg)}°)"},
@@ -131,126 +193,6 @@ def _innovation_is_a_surprise(p):
     return 0 < dr <= 1 and dphi <= 0.2 and shown != (5, 4.8, 0.9273, 0.95)
 
 
-def _whole_jacobian(p):
-    """4.7: the measurement Jacobian H of a landmark ahead and to the left of the robot."""
-    s = _sighting(p)
-    H = measurement_jacobian(s["pose"], s["landmark"])
-    dx, dy, q = s["dx"], s["dy"], s["q"]
-    return {
-        "key": grid(H),
-        "slips": (
-            Slip(grid([[h / q ** 0.5 for h in H[0]], H[1]]),
-                 "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
-                 f"the range row divides by √q = {s['rq_plain']} (only the bearing row divides by q)."),
-            Slip(grid([H[0], [dy / q ** 0.5, -dx / q ** 0.5, -1.0]]),
-                 f"The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = {fmt(q)}."),
-            Slip(grid([H[0], [H[1][0], H[1][1], 0.0]]),
-                 "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
-                 "it by −δθ."),
-            Slip(grid([[-h for h in H[0]], [-H[1][0], -H[1][1], H[1][2]]]),
-                 "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
-                 "dx = lx − x, so moving the robot by +δx shrinks dx."),
-        ),
-        "values": {**s["values"],
-                   "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{q}}} {relation(s['r'])} {fmt(s['r'])}"},
-    }
-
-
-
-def _over_q(sign, top):
-    """±dx/q or ±dy/q, with q = dx² + dy² (the bearing row's denominator)."""
-    if top == "dx":
-        return lambda dx, dy: sign * dx / (dx * dx + dy * dy)
-    return lambda dx, dy: sign * dy / (dx * dx + dy * dy)
-
-
-def _over_root_q(sign, top):
-    """±dx/√q or ±dy/√q (the range row's denominator)."""
-    if top == "dx":
-        return lambda dx, dy: sign * dx / (dx * dx + dy * dy) ** 0.5
-    return lambda dx, dy: sign * dy / (dx * dx + dy * dy) ** 0.5
-
-
-# 4.8: each entry of H's position columns, (row, column) -> (numerator, its sign, what it says in words,
-# and its slips: the chain rule's sign, the other row's denominator, the neighbouring entries).
-_ENTRIES = {
-    "2,1": ("dy", 1, "past a landmark on its left", "dy > 0",
-            "swings the landmark further round to the left, so the bearing grows", "dy", (
-                (_over_q(-1, "dy"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1, and that minus cancels the one in "
-                                    "∂atan2(dy, dx)/∂dx = −dy/q."),
-                (_over_root_q(1, "dy"), "That divides by √q, as the range row does. The derivative of atan2 divides by "
-                                        "q = dx² + dy²."),
-                (_over_q(-1, "dx"), "That is H(2,2) = ∂φ/∂y. The x-derivative has dy on top."),
-                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x, from the range row. The bearing row is the second one."),
-            )),
-    "2,2": ("dx", -1, "past a landmark ahead of it", "dx > 0",
-            "swings the landmark round to the right, so the bearing falls", "-dx", (
-                (_over_q(1, "dx"), "The sign is flipped. dy = ly − y, so ∂dy/∂y = −1: multiply "
-                                   "∂atan2(dy, dx)/∂dy = dx/q by it."),
-                (_over_root_q(-1, "dx"), "That divides by √q, as the range row does: it is H(1,1) = ∂r/∂x. The "
-                                         "derivative of atan2 divides by q = dx² + dy²."),
-                (_over_q(1, "dy"), "That is H(2,1) = ∂φ/∂x. The y-derivative has dx on top."),
-                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y, from the range row. The bearing row is the second one."),
-            )),
-    "1,1": ("dx", -1, "towards a landmark ahead of it", "dx > 0",
-            "brings it closer, so the range falls", "-dx", (
-                (_over_root_q(1, "dx"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1: multiply "
-                                        "∂√q/∂dx = dx/√q by it."),
-                (_over_q(-1, "dx"), "That divides by q, as the bearing row does: it is H(2,2) = ∂φ/∂y. "
-                                    "Differentiating √q gives dx/√q: the range row divides by √q."),
-                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y. The x-derivative has dx on top."),
-                (_over_q(1, "dy"), "That is H(2,1) = ∂φ/∂x, from the bearing row. The range row is the first one."),
-            )),
-    "1,2": ("dy", -1, "towards a landmark on its left", "dy > 0",
-            "brings it closer, so the range falls", "-dy", (
-                (_over_root_q(1, "dy"), "The sign is flipped. dy = ly − y, so ∂dy/∂y = −1: multiply "
-                                        "∂√q/∂dy = dy/√q by it."),
-                (_over_q(-1, "dy"), "That divides by q, as the bearing row does. Differentiating √q gives dy/√q: "
-                                    "the range row divides by √q."),
-                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x. The y-derivative has dy on top."),
-                (_over_q(-1, "dx"), "That is H(2,2) = ∂φ/∂y, from the bearing row. The range row is the first one."),
-            )),
-}
-_ATAN2 = r"\operatorname{atan2}(dy, dx)"
-_SQRT_Q = r"\sqrt{dx^2 + dy^2}"
-
-
-def _jacobian_entry_formula(p):
-    """4.8: one entry of H's position columns as a formula in dx and dy (which one is the draw)."""
-    entry = p["entry"]
-    i, j = (int(k) - 1 for k in entry.split(","))
-    top, sign, where, condition, effect, follows, slips = _ENTRIES[entry]
-    var, dvar = ("x", "dx") if j == 0 else ("y", "dy")
-    minus = "-" if sign < 0 else ""
-    if i == 0:  # the range row: r = √q, ∂r/∂d = d/√q
-        den, den_tex = "sqrt(dx^2 + dy^2)", _SQRT_Q
-        f_tex, f_def, f_of = " r", f"r = {_SQRT_Q}", _SQRT_Q
-        inner = f"{dvar}/{_SQRT_Q}"
-        inner_frac = f"\\frac{{{dvar}}}{{{_SQRT_Q}}}"
-    else:  # the bearing row: φ = atan2(dy, dx) − θ, ∂atan2/∂dx = −dy/q, ∂atan2/∂dy = dx/q
-        den, den_tex = "(dx^2 + dy^2)", "dx^2 + dy^2"
-        f_tex, f_def, f_of = r"\phi", f"\\phi = {_ATAN2} - \\theta", _ATAN2
-        inner = "-dy/(dx^2 + dy^2)" if j == 0 else "dx/(dx^2 + dy^2)"
-        inner_frac = "\\frac{-dy}{dx^2 + dy^2}" if j == 0 else "\\frac{dx}{dx^2 + dy^2}"
-    example = measurement_jacobian((0.0, 0.0, 0.0), _LANDMARK)[i][j]  # dx = 3, dy = 4
-    q0 = _LANDMARK[0] ** 2 + _LANDMARK[1] ** 2
-    shown_as = f"{minus}{_LANDMARK[0] if top == 'dx' else _LANDMARK[1]}/{math.isqrt(q0) if i == 0 else q0}"
-    return {
-        "key": lambda dx, dy: measurement_jacobian((0.0, 0.0, 0.0), (dx, dy))[i][j],
-        "answer_text": f"{minus}{top}/{den}",
-        "label": f"H({entry}) = ∂{'r' if i == 0 else 'φ'}/∂{var}",
-        "slips": tuple(Slip(f, message) for f, message in slips),
-        "values": {
-            "ij": f"{i + 1}{j + 1}", "fn": f_tex, "var": var, "dvar": dvar,
-            "what": "range" if i == 0 else "bearing", "fdef": f_def, "fop": f_of, "inner": inner,
-            "inner_frac": inner_frac, "result": f"{minus}\\frac{{{top}}}{{{den_tex}}}",
-            "ahead": fmt(_LANDMARK[0]), "left": fmt(_LANDMARK[1]),
-            "example": shown_as, "example_rel": relation(example), "example_value": fmt(example),
-            "move": f"+{var}", "where": where, "condition": condition, "effect": effect, "follows": follows,
-        },
-    }
-
-
 def _ahead(p):
     return p["lx"] > p["x"]
 
@@ -266,6 +208,7 @@ EXERCISES = (
         title="Predicted range",
         answer=number(label="r", unit="m"),
         vary=Vary(_predicted_range, *_SIGHTING, valid=_off_both_axes),
+        steps=(OFFSET, SQUARED),
     ),
     Derive(
         id="4.2",
@@ -273,6 +216,7 @@ EXERCISES = (
         answer=number(label="φ", unit="°", angle="deg", periodic=True),
         vary=Vary(_predicted_bearing, *_SIGHTING,
                   valid=lambda p: _off_both_axes(p) and p["lx"] - p["x"] != p["ly"] - p["y"]),
+        steps=(OFFSET, ANGLE),
     ),
     Derive(
         id="4.3",
@@ -280,6 +224,7 @@ EXERCISES = (
         answer=number(label="H(1,1)"),
         vary=Vary(_range_slope, *_SIGHTING,
                   valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(p["lx"] - p["x"]) != abs(p["ly"] - p["y"])),
+        steps=(OFFSET, SQUARED),
     ),
     Derive(
         id="4.4",
@@ -330,17 +275,5 @@ EXERCISES = (
             Option("d", "$K$ grows without bound",
                    "$K = P/(P+R)$ never exceeds 1 while $P, R \\ge 0$; at $R = 0$ it is exactly 1."),
         ),
-    ),
-    Derive(
-        id="4.7",
-        title="The whole measurement Jacobian H",
-        answer=matrix(label="H"),
-        vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
-    ),
-    Derive(
-        id="4.8",
-        title="H(2,1) as a formula",
-        answer=formula(variables=("dx", "dy"), domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)}),
-        vary=Vary(_jacobian_entry_formula, Choice("entry", "2,1", ("1,1", "1,2", "2,1", "2,2"))),
     ),
 )

@@ -19,7 +19,10 @@ from ..reference.pose_graph import (
     relative_pose,
 )
 from ..variants import Param, Vary
+from .. import chains
+from ..steps import Step
 from . import column, grid
+from .checks import apart
 
 _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
@@ -56,21 +59,34 @@ def _pose_count(p):
     }
 
 
-def _odometry_error(p):
-    """5.2: e = z₁₂ − (x₂ − x₁) for pose 1 at the origin; asked: its x-component."""
+def _odometry_error(p, given=None):
+    """5.2: e = z₁₂ − (x₂ − x₁) for pose 1 at the origin; asked: its x-component. In steps: the
+    pose difference d = x₂ − x₁, then the whole e (each the learner's own when ``given`` has it)."""
     x2 = (p["x2"], p["y2"], p["t2"])
-    e = edge_error_simple(_X1, x2, _Z12)
+    diff = column(b - a for a, b in zip(_X1, x2))
+    d = [row[0] for row in chains.given(given, "d", diff)]
+    e = [row[0] for row in chains.given(given, "e", column(edge_error_simple((0.0, 0.0, 0.0), d, _Z12)))]
     exact = edge_error(_X1, x2, _Z12)[0]
-    change = abs(exact - e[0]) / abs(e[0])
+    change = abs(exact - e[0]) / abs(e[0]) if e[0] else 0.0
+    again = [Slip(column(d), "That is x₂ − x₁ again, from step 1. Subtract it from the odometry reading "
+                             "z₁₂ = (1, 0, 0).")]
     return {
         "key": e[0],
         "slips": (
             Slip(-e[0], "The sign is flipped: you computed (x₂ − x₁) − z₁₂. The error is measurement minus prediction."),
-            Slip(x2[0] - _X1[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
+            Slip(d[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
         ),
+        "steps": {
+            "d": {"key": diff, "slips": (
+                Slip(column(a - b for a, b in zip(_X1, x2)), "That is x₁ − x₂, the difference the wrong way round: "
+                                                             "the motion runs from pose 1 to pose 2, x₂ − x₁."),)},
+            "e": {"key": column(e), "slips": (
+                Slip(column(-v for v in e), "The sign is flipped: that is (x₂ − x₁) − z₁₂. The error is the "
+                                            "measurement minus the prediction, z₁₂ − (x₂ − x₁)."),
+                *(again if apart(e, d) else ())),
+            },
+        },
         "values": {
-            "dx": fmt(x2[0] - _X1[0]), "dy": fmt(x2[1] - _X1[1]), "dt": fmt(x2[2] - _X1[2]),
-            "ex": fmt(e[0]), "ey": fmt(e[1]), "et": fmt(e[2]),
             "sign": "negative" if e[0] < 0 else "positive",
             "gap": fmt(abs(e[0])),
             "apart": "further apart" if e[0] < 0 else "closer together",
@@ -121,13 +137,25 @@ def _distinct_sizes(p):
     return p["m"] != p["n"] and p["m"] != 2 * p["n"]
 
 
-def _turned_edge_error(p):
-    """5.6: e = z₁₂ − x₁⁻¹ ⊕ x₂ with pose 1 at (2, 1) facing north, as a column."""
+def _turned_edge_error(p, given=None):
+    """5.6: e = z₁₂ − x₁⁻¹ ⊕ x₂ with pose 1 at (2, 1) facing north, as a column, in steps: the world
+    difference d, then h = x₁⁻¹ ⊕ x₂ (each the learner's own when ``given`` has it). h is d seen
+    from a pose at the origin with pose 1's heading, and e is the error of an edge from the origin
+    to h, so the reference's own error agrees:
+
+    >>> made = _turned_edge_error({"x2": 1.95, "y2": 2.1, "t2": 0.02})
+    >>> ref = edge_error_relative(_XI, (1.95, 2.1, math.pi / 2 + 0.02), _Z12)
+    >>> all(math.isclose(a, b, abs_tol=1e-12) for (a,), b in zip(made["key"], ref))
+    True
+    """
     xj = (p["x2"], p["y2"], math.pi / 2 + p["t2"])
     dx, dy = xj[0] - _XI[0], xj[1] - _XI[1]
-    h = relative_pose(_XI, xj)
-    e = edge_error_relative(_XI, xj, _Z12)
+    d = [row[0] for row in chains.given(given, "d", column((dx, dy)))]
+    h = chains.given(given, "h", column(relative_pose((0.0, 0.0, _XI[2]), (d[0], d[1], xj[2]))))
+    h = [row[0] for row in h]
+    e = edge_error_relative((0.0, 0.0, 0.0), h, _Z12)
     world = edge_error_simple(_XI, xj, _Z12)
+    turn = h[2]
     return {
         "key": column(e),
         "slips": (
@@ -141,10 +169,26 @@ def _turned_edge_error(p):
                  "That is h, the motion the poses imply, seen from pose 1. The error subtracts it from the "
                  "odometry reading z₁₂."),
         ),
+        "steps": {
+            "d": {"key": column((dx, dy)), "slips": (
+                Slip(column((-dx, -dy)), "That is x₁ − x₂, the wrong way round: the difference runs from pose 1 "
+                                         "to pose 2, x₂ − x₁."),
+                Slip(column(xj[:2]), "That is where pose 2 is. Subtract pose 1's position (2, 1) from it.")),
+            },
+            "h": {"key": column(h), "slips": (
+                Slip(column((d[0], d[1], turn)),
+                     "That is the world difference as it is. Turn it into pose 1's frame with R(90°)ᵀ: facing "
+                     "north, pose 1's forward axis is the world's +y."),
+                Slip(column((*relative_pose((0.0, 0.0, -_XI[2]), (d[0], d[1], 0.0))[:2], turn)),
+                     "That turns the difference by R(90°), the wrong way. Into pose 1's frame it is R(θ₁)ᵀ, the "
+                     "transpose: the world's +y becomes pose 1's forward axis."),
+                Slip(column((h[0], h[1], xj[2])),
+                     "The third entry is pose 2's heading. h holds the turn from pose 1 to pose 2: θ₂ − θ₁.")),
+            },
+        },
         "values": {
-            "dx": fmt(dx), "dy": fmt(dy), "pdx": paren(dx), "pdy": paren(dy),
+            "pdx": paren(dx), "pdy": paren(dy),
             "hx": fmt(h[0]), "hy": fmt(h[1]), "ht": fmt(h[2]),
-            "ex": fmt(e[0]), "ey": fmt(e[1]), "et": fmt(e[2]),
             "wx": fmt(world[0]), "wy": fmt(world[1]), "wt": fmt(world[2]),
         },
     }
@@ -156,13 +200,27 @@ def _xy_block(p):
     return [[s, b, 0], [b, s, 0], [0, 0, t]]
 
 
-def _correlated_information(p):
-    """5.7: Ω = Σ⁻¹ for a Σ whose x and y errors are correlated."""
+def _inverse_block(s, b, det):
+    """The x–y block's inverse, (1/det)·[[s, −b], [−b, s]], with ``det`` the learner's own or
+    the printed one. With det = s² − b² it is the reference's inverse:
+
+    >>> Omega = information_matrix(_xy_block({"s": 0.02, "b": 0.01, "t": 0.001}))
+    >>> all(math.isclose(a, b) for a, b in zip(sum(_inverse_block(0.02, 0.01, 0.02 ** 2 - 0.01 ** 2), []),
+    ...                                        [Omega[0][0], Omega[0][1], Omega[1][0], Omega[1][1]]))
+    True
+    """
+    return [[s / det, -b / det], [-b / det, s / det]]
+
+
+def _correlated_information(p, given=None):
+    """5.7: Ω = Σ⁻¹ for a Σ whose x and y errors are correlated, in steps: the x–y block's
+    determinant, then its inverse (each the learner's own when ``given`` has it)."""
     sigma = _xy_block(p)
     s, b = p["s"], p["b"]
-    omega = information_matrix(sigma)
-    det = det2([row[:2] for row in sigma[:2]])
-    block = [row[:2] for row in omega[:2]]
+    omega_ref = information_matrix(sigma)
+    det = chains.given(given, "det", det2([row[:2] for row in sigma[:2]]))
+    block = [list(r) for r in chains.given(given, "block", _inverse_block(s, b, det))]
+    omega = [block[0] + [0.0], block[1] + [0.0], [0.0, 0.0, omega_ref[2][2]]]
     return {
         "key": grid(omega),
         "slips": (
@@ -177,10 +235,26 @@ def _correlated_information(p):
                  "The off-diagonal entries have the wrong sign. The inverse of [[a, b], [c, d]] is "
                  "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal."),
         ),
+        "steps": {
+            "det": {"key": det2([row[:2] for row in sigma[:2]]), "slips": (
+                Slip(s * s + b * b, "That adds b·c. The determinant of [[a, b], [c, d]] is ad − bc: subtract the "
+                                    "product of the off-diagonal entries."),
+                Slip(s * s, "That is the product of the diagonal alone. The correlation takes b·c = "
+                            f"{fmt(b * b)} off it: det = ad − bc.")),
+            },
+            "block": {"key": grid(block), "slips": (
+                Slip(grid([[s, -b], [-b, s]]), "That is the swapped and negated matrix before dividing: multiply it "
+                                               f"by 1/det = 1/{fmt(det)}."),
+                Slip(grid([[s / det, b / det], [b / det, s / det]]),
+                     "The off-diagonal entries keep their sign here. The inverse negates them: [[d, −b], [−c, a]] / det."),
+                Slip(grid([[1 / s, 0.0], [0.0, 1 / s]]),
+                     "That inverts the diagonal alone, as if x and y were not correlated. The block is inverted as "
+                     "a whole, with its determinant.")),
+            },
+        },
         "values": {
-            "det": fmt(det), "mb": fmt(-b), "wt": fmt(omega[2][2]), "inv_s": fmt(1 / s),
-            "w11": fmt(omega[0][0]), "w11_rel": relation(omega[0][0]),
-            "block": bmatrix(block), "block_rel": relation_all(block),
+            "mb": fmt(-b), "wt": fmt(omega_ref[2][2]), "inv_s": fmt(1 / s),
+            "w11": fmt(omega[0][0]), "w11_rel": relation(omega[0][0]), "block_rel": relation_all(block),
         },
     }
 
@@ -208,6 +282,9 @@ EXERCISES = (
         answer=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
         vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
                   Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"), Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
+        steps=(Step("d", "x₂ − x₁", matrix(label="x₂ − x₁", names=("dx|x", "dy|y", "dθ|θ"), units=("m", "m", "rad"))),
+               Step("e", "e = z₁₂ − (x₂ − x₁)", matrix(label="e = z₁₂ − (x₂ − x₁)", names=("e_x|x", "e_y|y", "e_θ|θ"),
+                                                      units=("m", "m", "rad")))),
     ),
     Derive(
         id="5.3",
@@ -248,6 +325,9 @@ EXERCISES = (
         answer=matrix(label="e₁₂ = (eₓ, e_y, e_θ)ᵀ", names=("e_x|x", "e_y|y", "e_θ|θ"), units=("m", "m", "rad")),
         vary=Vary(_turned_edge_error, Param("x2", 1.95, 1.9, 2.1, 0.05, unit=" m"),
                   Param("y2", 2.1, 1.7, 2.4, 0.1, unit=" m"), Param("t2", 0.02, 0.01, 0.05, 0.01, unit=" rad")),
+        steps=(Step("d", "x₂ − x₁ in world axes", matrix(label="(x₂ − x₁, y₂ − y₁)", names=("dx", "dy"), unit="m")),
+               Step("h", "h = x₁⁻¹ ⊕ x₂", matrix(label="h = x₁⁻¹ ⊕ x₂", names=("h_x|x", "h_y|y", "h_θ|θ"),
+                                                 units=("m", "m", "rad")))),
     ),
     Derive(
         id="5.7",
@@ -256,5 +336,7 @@ EXERCISES = (
         vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.01, avoid=(0.03,)),
                   Param("b", 0.01, 0.005, 0.045, 0.005), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
                   valid=_two_places_suffice),
+        steps=(Step("det", "determinant of the x–y block", number(label="det = ad − bc of the x–y block")),
+               Step("block", "inverse of the x–y block", matrix(label="the x–y block of Ω"))),
     ),
 )

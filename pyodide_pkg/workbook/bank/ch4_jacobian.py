@@ -1,0 +1,156 @@
+"""Chapter 4 · the measurement Jacobian H: the whole of it at a sighting (4.7, worked in steps d
+and q, as 4.1 and 4.3 are) and one entry of its position columns as a formula (4.8)."""
+
+import math
+
+from ..answer_kinds.base import Slip
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.expression import formula
+from ..kinds.derive import Derive
+from ..number_format import fmt, relation
+from ..reference.ekf import measurement_jacobian
+from ..variants import Choice, Vary
+from . import grid
+from .ch4_ekf_update import (  # the chapter's sighting and its steps
+    OFFSET, SQUARED, _LANDMARK, _SIGHTING, _ahead, _jacobian_of, _offset, _sighting, _squared)
+
+
+def _whole_jacobian(p, given=None):
+    """4.7: the measurement Jacobian H of a landmark ahead and to the left of the robot, in steps
+    d and q (the learner's own when ``given`` has them)."""
+    s = _sighting(p)
+    d, offset = _offset(p, s, given)
+    q, squared = _squared(d, given)
+    H = _jacobian_of(d, q)
+    dx, dy = d
+    root = math.sqrt(q)
+    return {
+        "key": grid(H),
+        "slips": (
+            Slip(grid([[h / root for h in H[0]], H[1]]),
+                 "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
+                 f"the range row divides by √q = {s['rq_plain']} (only the bearing row divides by q)."),
+            Slip(grid([H[0], [dy / root, -dx / root, -1.0]]),
+                 f"The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = {fmt(s['q'])}."),
+            Slip(grid([H[0], [H[1][0], H[1][1], 0.0]]),
+                 "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
+                 "it by −δθ."),
+            Slip(grid([[-h for h in H[0]], [-H[1][0], -H[1][1], H[1][2]]]),
+                 "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
+                 "dx = lx − x, so moving the robot by +δx shrinks dx."),
+        ),
+        "steps": {"d": offset, "q": squared},
+        "values": {**s["values"],
+                   "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{s['q']}}} {relation(s['r'])} {fmt(s['r'])}"},
+    }
+
+
+def _over_q(sign, top):
+    """±dx/q or ±dy/q, with q = dx² + dy² (the bearing row's denominator)."""
+    if top == "dx":
+        return lambda dx, dy: sign * dx / (dx * dx + dy * dy)
+    return lambda dx, dy: sign * dy / (dx * dx + dy * dy)
+
+
+def _over_root_q(sign, top):
+    """±dx/√q or ±dy/√q (the range row's denominator)."""
+    if top == "dx":
+        return lambda dx, dy: sign * dx / (dx * dx + dy * dy) ** 0.5
+    return lambda dx, dy: sign * dy / (dx * dx + dy * dy) ** 0.5
+
+
+# 4.8: each entry of H's position columns, (row, column) -> (numerator, its sign, what it says in words,
+# and its slips: the chain rule's sign, the other row's denominator, the neighbouring entries).
+_ENTRIES = {
+    "2,1": ("dy", 1, "past a landmark on its left", "dy > 0",
+            "swings the landmark further round to the left, so the bearing grows", "dy", (
+                (_over_q(-1, "dy"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1, and that minus cancels the one in "
+                                    "∂atan2(dy, dx)/∂dx = −dy/q."),
+                (_over_root_q(1, "dy"), "That divides by √q, as the range row does. The derivative of atan2 divides by "
+                                        "q = dx² + dy²."),
+                (_over_q(-1, "dx"), "That is H(2,2) = ∂φ/∂y. The x-derivative has dy on top."),
+                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x, from the range row. The bearing row is the second one."),
+            )),
+    "2,2": ("dx", -1, "past a landmark ahead of it", "dx > 0",
+            "swings the landmark round to the right, so the bearing falls", "-dx", (
+                (_over_q(1, "dx"), "The sign is flipped. dy = ly − y, so ∂dy/∂y = −1: multiply "
+                                   "∂atan2(dy, dx)/∂dy = dx/q by it."),
+                (_over_root_q(-1, "dx"), "That divides by √q, as the range row does: it is H(1,1) = ∂r/∂x. The "
+                                         "derivative of atan2 divides by q = dx² + dy²."),
+                (_over_q(1, "dy"), "That is H(2,1) = ∂φ/∂x. The y-derivative has dx on top."),
+                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y, from the range row. The bearing row is the second one."),
+            )),
+    "1,1": ("dx", -1, "towards a landmark ahead of it", "dx > 0",
+            "brings it closer, so the range falls", "-dx", (
+                (_over_root_q(1, "dx"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1: multiply "
+                                        "∂√q/∂dx = dx/√q by it."),
+                (_over_q(-1, "dx"), "That divides by q, as the bearing row does: it is H(2,2) = ∂φ/∂y. "
+                                    "Differentiating √q gives dx/√q: the range row divides by √q."),
+                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y. The x-derivative has dx on top."),
+                (_over_q(1, "dy"), "That is H(2,1) = ∂φ/∂x, from the bearing row. The range row is the first one."),
+            )),
+    "1,2": ("dy", -1, "towards a landmark on its left", "dy > 0",
+            "brings it closer, so the range falls", "-dy", (
+                (_over_root_q(1, "dy"), "The sign is flipped. dy = ly − y, so ∂dy/∂y = −1: multiply "
+                                        "∂√q/∂dy = dy/√q by it."),
+                (_over_q(-1, "dy"), "That divides by q, as the bearing row does. Differentiating √q gives dy/√q: "
+                                    "the range row divides by √q."),
+                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x. The y-derivative has dy on top."),
+                (_over_q(-1, "dx"), "That is H(2,2) = ∂φ/∂y, from the bearing row. The range row is the first one."),
+            )),
+}
+_ATAN2 = r"\operatorname{atan2}(dy, dx)"
+_SQRT_Q = r"\sqrt{dx^2 + dy^2}"
+
+
+def _jacobian_entry_formula(p):
+    """4.8: one entry of H's position columns as a formula in dx and dy (which one is the draw)."""
+    entry = p["entry"]
+    i, j = (int(k) - 1 for k in entry.split(","))
+    top, sign, where, condition, effect, follows, slips = _ENTRIES[entry]
+    var, dvar = ("x", "dx") if j == 0 else ("y", "dy")
+    minus = "-" if sign < 0 else ""
+    if i == 0:  # the range row: r = √q, ∂r/∂d = d/√q
+        den, den_tex = "sqrt(dx^2 + dy^2)", _SQRT_Q
+        f_tex, f_def, f_of = " r", f"r = {_SQRT_Q}", _SQRT_Q
+        inner = f"{dvar}/{_SQRT_Q}"
+        inner_frac = f"\\frac{{{dvar}}}{{{_SQRT_Q}}}"
+    else:  # the bearing row: φ = atan2(dy, dx) − θ, ∂atan2/∂dx = −dy/q, ∂atan2/∂dy = dx/q
+        den, den_tex = "(dx^2 + dy^2)", "dx^2 + dy^2"
+        f_tex, f_def, f_of = r"\phi", f"\\phi = {_ATAN2} - \\theta", _ATAN2
+        inner = "-dy/(dx^2 + dy^2)" if j == 0 else "dx/(dx^2 + dy^2)"
+        inner_frac = "\\frac{-dy}{dx^2 + dy^2}" if j == 0 else "\\frac{dx}{dx^2 + dy^2}"
+    example = measurement_jacobian((0.0, 0.0, 0.0), _LANDMARK)[i][j]  # dx = 3, dy = 4
+    q0 = _LANDMARK[0] ** 2 + _LANDMARK[1] ** 2
+    shown_as = f"{minus}{_LANDMARK[0] if top == 'dx' else _LANDMARK[1]}/{math.isqrt(q0) if i == 0 else q0}"
+    return {
+        "key": lambda dx, dy: measurement_jacobian((0.0, 0.0, 0.0), (dx, dy))[i][j],
+        "answer_text": f"{minus}{top}/{den}",
+        "label": f"H({entry}) = ∂{'r' if i == 0 else 'φ'}/∂{var}",
+        "slips": tuple(Slip(f, message) for f, message in slips),
+        "values": {
+            "ij": f"{i + 1}{j + 1}", "fn": f_tex, "var": var, "dvar": dvar,
+            "what": "range" if i == 0 else "bearing", "fdef": f_def, "fop": f_of, "inner": inner,
+            "inner_frac": inner_frac, "result": f"{minus}\\frac{{{top}}}{{{den_tex}}}",
+            "ahead": fmt(_LANDMARK[0]), "left": fmt(_LANDMARK[1]),
+            "example": shown_as, "example_rel": relation(example), "example_value": fmt(example),
+            "move": f"+{var}", "where": where, "condition": condition, "effect": effect, "follows": follows,
+        },
+    }
+
+
+EXERCISES = (
+    Derive(
+        id="4.7",
+        title="The whole measurement Jacobian H",
+        answer=matrix(label="H"),
+        vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
+        steps=(OFFSET, SQUARED),
+    ),
+    Derive(
+        id="4.8",
+        title="H(2,1) as a formula",
+        answer=formula(variables=("dx", "dy"), domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)}),
+        vary=Vary(_jacobian_entry_formula, Choice("entry", "2,1", ("1,1", "1,2", "2,1", "2,2"))),
+    ),
+)
