@@ -30,10 +30,13 @@ ROOT = Path(__file__).resolve().parents[2]
 DRAWS = 200
 STEPPED = [ex for ex in bank.all_exercises() if ex.kind == "derive" and ex.steps]
 TEXTS = load_all(ROOT)
+# Chapters 6, 7 and 9: the IK, the Jacobians and the capstone derivations with two intermediates or more.
+REQUIRED_6_7_9 = {"6.2", "6.3", "7.1", "7.6"}
 
 
 def test_enough_exercises_can_be_worked_in_steps():
     assert len(STEPPED) >= 1
+    assert REQUIRED_6_7_9 <= {ex.id for ex in STEPPED}, f"no steps: {sorted(REQUIRED_6_7_9 - {ex.id for ex in STEPPED})}"
     for ex in STEPPED:
         assert len(ex.steps) >= 2, f"{ex.id}: a derivation worked in steps has at least two intermediates"
 
