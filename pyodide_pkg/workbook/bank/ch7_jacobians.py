@@ -24,7 +24,7 @@ from ..reference.linalg import add
 from ..steps import Step
 from . import column, grid
 from .checks import apart
-from .ch6_arm_kinematics import link2_direction_slips  # the arm's θ1 + θ2, as chapter 6 asks it
+from .ch6_arm_kinematics import kept_slips, link2_direction_slips  # the arm's steps, as chapter 6 asks them
 
 _BUGGY = """\
 import math
@@ -73,19 +73,18 @@ def _jacobian_entry(p, given=None):
             Slip(J[0][1], "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, "
                  "which moves both links."),
         ]
-    link2_slips = [
-        Slip(-J[0][1], "Check the sign: the derivative of L2 cos(θ1 + θ2) is −L2 sin(θ1 + θ2)."),
-        Slip(J[1][1], "That is L2 cos(θ1 + θ2), link 2's own x. Its derivative by θ1 is −L2 sin(θ1 + θ2)."),
-    ]
-    if t1 != 0:
-        link2_slips.append(Slip(jacobian_2link(0, L, 0, math.radians(t2))[0][1],
-                                f"That is −L2 sin θ2, link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = 90°."))
+    link2_slips = kept_slips(J[0][1], (
+        (-J[0][1], "Check the sign: the derivative of L2 cos(θ1 + θ2) is −L2 sin(θ1 + θ2)."),
+        (J[1][1], "That is L2 cos(θ1 + θ2), link 2's own x. Its derivative by θ1 is −L2 sin(θ1 + θ2)."),
+        (jacobian_2link(0, L, 0, math.radians(t2))[0][1],
+         f"That is −L2 sin θ2, link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = 90°."),
+    ))
     return {
         "key": link1 + link2,
         "slips": tuple(slips),
         "steps": {
             "t12": {"key": t12, "slips": link2_direction_slips(t1, t2)},
-            "link2": {"key": link2, "slips": tuple(link2_slips)},
+            "link2": {"key": link2, "slips": link2_slips},
         },
         "values": {
             "deg1": "" if t1 == 0 else "°", "t2": fmt(t2), "a1": _angle(t1, tex=True), "s1": fmt(s1),
@@ -192,17 +191,14 @@ def _unit_jacobian(p, given=None):
         col2 = exact2                      # its exact entries, so rounding cannot spoil a small J(1,1)
     link1 = jacobian_2link(1, 0, r1, 0)  # link 1's share: column 1 only
     at_t2 = jacobian_2link(0, 1, 0, r2)
-    col2_slips = []
-    for value, message in (
+    col2_slips = kept_slips(col2, (
         (column((s12, c12)), "Check the sign of the first entry: the derivative of L2 cos(θ1 + θ2) is "
                              "−L2 sin(θ1 + θ2)."),
         (column((c12, s12)), "That is link 2 itself, (L2 cos(θ1 + θ2), L2 sin(θ1 + θ2)): where it reaches, "
                              "not how fast the tip moves. Differentiate each by θ2."),
         (column((at_t2[0][1], at_t2[1][1])), f"That puts link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = "
                                              f"{_angle(t1 + t2)}."),
-    ):
-        if apart(col2, value, *(s.value for s in col2_slips)):
-            col2_slips.append(Slip(value, message))
+    ))
     return {
         "key": grid(add(link1, [[col2[0][0]] * 2, [col2[1][0]] * 2])),
         "slips": (
@@ -217,7 +213,7 @@ def _unit_jacobian(p, given=None):
         ),
         "steps": {
             "t12": {"key": t12, "slips": link2_direction_slips(t1, t2)},
-            "col2": {"key": col2, "slips": tuple(col2_slips)},
+            "col2": {"key": col2, "slips": col2_slips},
         },
         "values": {
             "deg1": "" if t1 == 0 else "°", "t12": fmt(t1 + t2), "a12": _angle(t1 + t2, tex=True),
