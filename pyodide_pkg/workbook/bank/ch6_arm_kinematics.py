@@ -55,6 +55,11 @@ def kept_slips(key, candidates, turn=None) -> tuple[Slip, ...]:
     return tuple(slips)
 
 
+# The first step of 6.2, 7.1 and 7.6: the direction of link 2 (any whole turn more or less is the same).
+LINK2_DIRECTION = Step("t12", "θ1 + θ2", number(label="θ1 + θ2, the direction of link 2", unit="°", angle="deg",
+                                                periodic=True))
+
+
 def link2_direction_slips(t1: float, t2: float) -> tuple[Slip, ...]:
     """The slips in θ1 + θ2, the direction of link 2 (in degrees; 6.2, 7.1, 7.6)."""
     return kept_slips(t1 + t2, (
@@ -258,8 +263,7 @@ EXERCISES = (
         answer=number(label="x-coordinate of the end effector", unit="m"),
         vary=Vary(_bent_reach, Param("t1", 30, 5, 85, 5, unit="°"), Param("t2", 45, 5, 120, 5, unit="°"),
                   valid=_bent_reach_well_posed),
-        steps=(Step("t12", "θ1 + θ2", number(label="θ1 + θ2, the direction of link 2", unit="°", angle="deg",
-                                              periodic=True)),
+        steps=(LINK2_DIRECTION,
                Step("x2", "link 2's share of x", number(label="L2·cos(θ1 + θ2), link 2's share of x", unit="m"))),
     ),
     Derive(

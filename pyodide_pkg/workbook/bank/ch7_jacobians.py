@@ -24,7 +24,7 @@ from ..reference.linalg import add
 from ..steps import Step
 from . import column, grid
 from .checks import apart
-from .ch6_arm_kinematics import kept_slips, link2_direction_slips  # the arm's steps, as chapter 6 asks them
+from .ch6_arm_kinematics import LINK2_DIRECTION, kept_slips, link2_direction_slips  # as chapter 6 asks them
 
 _BUGGY = """\
 import math
@@ -315,8 +315,7 @@ EXERCISES = (
         title="Jacobian at θ = (0, 90°)",
         answer=number(label="J(1,1)"),
         vary=Vary(_jacobian_entry, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("t1", 0, -45, 45, 5, unit="°")),
-        steps=(Step("t12", "θ1 + θ2", number(label="θ1 + θ2, the direction of link 2", unit="°", angle="deg",
-                                              periodic=True)),
+        steps=(LINK2_DIRECTION,
                Step("link2", "link 2's term", number(label="−L2·sin(θ1 + θ2), link 2's term"))),
     ),
     Derive(
@@ -366,8 +365,7 @@ EXERCISES = (
         answer=matrix(label="J"),
         vary=Vary(_unit_jacobian, Param("t1", 0, -60, 60, 5, unit="°"), Param("t2", 90, -150, 150, 5, unit="°", avoid=(0,)),
                   valid=_well_posed_jacobian),
-        steps=(Step("t12", "θ1 + θ2", number(label="θ1 + θ2, the direction of link 2", unit="°", angle="deg",
-                                              periodic=True)),
+        steps=(LINK2_DIRECTION,
                Step("col2", "J's second column", matrix(label="J's second column (∂x/∂θ2, ∂y/∂θ2)"))),
     ),
     Derive(
