@@ -1,4 +1,9 @@
-"""Chapter 6 · Two-link arm: forward and inverse kinematics."""
+"""Chapter 6 · Two-link arm: forward and inverse kinematics.
+
+6.2 and 6.3 can be worked in checked steps (θ1 + θ2, then link 2's share of x; cos θ2, then θ2).
+The arm's first step, the direction of link 2 (LINK2_DIRECTION with its slips), and the rule that
+keeps a step's slips for a draw (kept_slips) are also used by chapters 7 and 9.
+"""
 
 import math
 
