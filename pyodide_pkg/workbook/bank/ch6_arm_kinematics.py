@@ -1,4 +1,8 @@
-"""Chapter 6 · Two-link arm: forward and inverse kinematics."""
+"""Chapter 6 · Two-link arm: forward and inverse kinematics.
+
+6.2 and 6.3 can be worked in checked steps (θ1 + θ2, then link 2's share of x; cos θ2, then θ2).
+The arm's first step, the direction of link 2 (LINK2_DIRECTION with its slips), is also chapter 7's.
+"""
 
 import math
 
@@ -8,7 +12,7 @@ from ..answer_kinds.number import number
 from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import approx, fmt, paren, relation, shown, signed
+from ..number_format import approx, fmt, paren, prose, relation, shown, signed
 from ..reference.arm import (
     cos_elbow,
     forward_kinematics_2link,
@@ -16,7 +20,9 @@ from ..reference.arm import (
     is_reachable,
 )
 from ..variants import Choice, Param, Vary
-from .checks import apart, slips_apart
+from .. import chains
+from ..steps import Step
+from .checks import apart, kept_slips, slips_apart
 
 _T1, _T2 = math.radians(30), math.radians(45)
 
@@ -33,15 +39,38 @@ def _straight_reach(p):
     }
 
 
-def _bent_reach(p):
-    """6.2: unit links at θ1, θ2 (degrees); asked: the tip's x to four decimals."""
+# The first step of 6.2, 7.1 and 7.6: the direction of link 2 (any whole turn more or less is the same).
+LINK2_DIRECTION = Step("t12", "θ1 + θ2", number(label="θ1 + θ2, the direction of link 2", unit="°", angle="deg",
+                                                periodic=True))
+
+
+def link2_direction_slips(t1: float, t2: float) -> tuple[Slip, ...]:
+    """The slips in θ1 + θ2, the direction of link 2 (in degrees; 6.2, 7.1, 7.6)."""
+    return kept_slips(t1 + t2, (
+        (t2, f"That is θ2 alone. θ2 is measured from link 1, which points at {prose(t1)}°: "
+             "link 2 points at θ1 + θ2."),
+        (t1 - t2, "That is θ1 − θ2. θ2 turns link 2 further, the same way θ1 turns link 1, "
+                  "so the two angles add."),
+    ), turn=360)
+
+
+def _bent_reach(p, given=None):
+    """6.2: unit links at θ1, θ2 (degrees); asked: the tip's x to four decimals. Steps: the direction
+    of link 2, θ1 + θ2, then link 2's share of x, each from the learner's own previous one (``given``)."""
     t1, t2 = p["t1"], p["t2"]
     r1, r2 = math.radians(t1), math.radians(t2)
     x, y = forward_kinematics_2link(1, 1, r1, r2)
     c1, s1 = forward_kinematics_2link(1, 0, r1, 0)  # link 1 alone
     c12, s12 = forward_kinematics_2link(0, 1, r1, r2)  # link 2 alone
+    t12 = chains.given(given, "t12", t1 + t2)
+    x2 = chains.given(given, "x2", forward_kinematics_2link(0, 1, math.radians(t12), 0)[0])
+    x2_slips = kept_slips(c12, (
+        (s12, "That is link 2's share of y, L2·sin(θ1 + θ2). Its share of x uses the cosine."),
+        (forward_kinematics_2link(0, 1, r2, 0)[0],  # link 2 drawn at θ2 itself
+         f"That is cos {prose(t2)}°, link 2 at θ2. It points at θ1 + θ2: take the cosine of {prose(t1 + t2)}°."),
+    ))
     return {
-        "key": x,
+        "key": c1 + x2,
         "slips": (
             Slip(forward_kinematics_2link(1, 1, r1, r2 - r1)[0],  # link 2 drawn at θ2 itself
                  f"You used cos {fmt(t2)}° for link 2. Its direction is θ1 + θ2 = {fmt(t1 + t2)}°: joint angles "
@@ -49,6 +78,10 @@ def _bent_reach(p):
             Slip(y, "That is the y-coordinate. For x use the cosines."),
             Slip(c12, f"That is link 2's share alone. Add link 1's L1·cos θ1 = {fmt(c1)}."),
         ),
+        "steps": {
+            "t12": {"key": t12, "slips": link2_direction_slips(t1, t2)},
+            "x2": {"key": x2, "slips": x2_slips},
+        },
         "values": {
             "t12": fmt(t1 + t2), "c1": fmt(c1), "s1": fmt(s1), "c12": fmt(c12), "s12": fmt(s12),
             "c12s": signed(c12), "s12s": signed(s12), "x": fmt(x), "y": fmt(y), "xp": paren(x), "yp": paren(y),
@@ -85,19 +118,32 @@ def _elbow_side(target, elbow):
     return side, "above" if ey > y / x * ex else "below"
 
 
-def _diagonal_ik(p):
-    """6.3: unit links reaching a diagonal target (±1, ±1); asked: θ2 or θ1 of one elbow branch, in degrees."""
+def _elbow_share(theta2):
+    """The angle (radians) the elbow adds to the shoulder's, atan2(L2 sin θ2, L1 + L2 cos θ2) for unit
+    links: the direction of the tip when link 1 lies along x."""
+    x, y = forward_kinematics_2link(1, 1, 0, theta2)
+    return math.atan2(y, x)
+
+
+def _diagonal_ik(p, given=None):
+    """6.3: unit links reaching a diagonal target (±1, ±1); asked: θ2 or θ1 of one elbow branch, in degrees.
+    Steps: cos θ2 from the law of cosines, then θ2 of the branch, each from the learner's own
+    previous one (``given``); θ1 follows from that θ2."""
     x, y, asked, branch = p["x"], p["y"], p["asked"], p["branch"]
     sol = inverse_kinematics_2link(1, 1, x, y)
     down = branch == "elbow-down"
+    sign = 1 if down else -1
     mine, twin = (sol.elbow_down, sol.elbow_up) if down else (sol.elbow_up, sol.elbow_down)
     other, rel = ("elbow-up", "≥") if down else ("elbow-down", "≤")
-    t1, t2 = math.degrees(mine[0]), math.degrees(mine[1])
+    c2 = chains.given(given, "c2", cos_elbow(1, 1, x, y))
+    t2 = chains.given(given, "t2", sign * math.degrees(math.acos(c2)))  # ValueError when |cos θ2| > 1
+    t1 = math.degrees(math.atan2(y, x) - _elbow_share(math.radians(t2)))
     phi = math.degrees(math.atan2(y, x))
-    share = phi - t1  # the angle the elbow adds: atan2(L2 sin θ2, L1 + L2 cos θ2)
+    share = math.degrees(_elbow_share(mine[1]))  # the angle the elbow adds, for the printed θ2
     elbow, elbow_twin = _unit(mine[0]), _unit(twin[0])
     side, above = _elbow_side((x, y), elbow)
     target = f"atan2({fmt(y)}, {fmt(x)})"
+    r = math.hypot(x, y)
     if asked == "θ2":
         key = t2
         slips = [
@@ -121,9 +167,23 @@ def _diagonal_ik(p):
         "label": f"{asked} ({branch}, θ2 {rel} 0)",
         "periodic": asked == "θ1",  # a shoulder angle give or take a whole turn is the same pose
         "slips": tuple(slips),
+        "steps": {
+            "c2": {"key": c2, "slips": (
+                Slip((r * r) / 2, "You left out L1² + L2²: the law of cosines takes them away from x² + y² "
+                                  "before dividing by 2·L1·L2."),
+                Slip((r * r - 4) / 2, "You took away (L1 + L2)², not L1² + L2²: square each link on its own."),
+                Slip((r - 2) / 2, "You used the distance r = √(x² + y²) itself. The law of cosines takes its "
+                                  "square, x² + y²."),
+            )},
+            "t2": {"key": t2, "label": f"θ2 ({branch}, θ2 {rel} 0)", "slips": (
+                Slip(-t2, f"That is θ2 of the {other} solution. This exercise asks for the {branch} one, "
+                          f"θ2 {rel} 0."),
+                Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}; it goes into θ1, not θ2."),
+            )},
+        },
         "values": {
             "px": paren(x), "py": paren(y), "phi": fmt(phi), "pm": "" if down else "-",
-            "t1": fmt(t1), "t2": fmt(t2), "s2": fmt(math.sin(mine[1])), "minus_share": signed(-share),
+            "t1": fmt(math.degrees(mine[0])), "s2": fmt(math.sin(mine[1])), "minus_share": signed(-share),
             "along": _ALONG[elbow], "ex": fmt(elbow[0]), "ey": fmt(elbow[1]),
             "rise": _HEADS[(x - elbow[0], y - elbow[1])], "side": side, "above": above,
             "other": other, "t1o": fmt(math.degrees(twin[0])), "t2o": fmt(math.degrees(twin[1])),
@@ -187,6 +247,8 @@ EXERCISES = (
         answer=number(label="x-coordinate of the end effector", unit="m"),
         vary=Vary(_bent_reach, Param("t1", 30, 5, 85, 5, unit="°"), Param("t2", 45, 5, 120, 5, unit="°"),
                   valid=_bent_reach_well_posed),
+        steps=(LINK2_DIRECTION,
+               Step("x2", "link 2's share of x", number(label="L2·cos(θ1 + θ2), link 2's share of x", unit="m"))),
     ),
     Derive(
         id="6.3",
@@ -195,6 +257,8 @@ EXERCISES = (
         vary=Vary(_diagonal_ik, Param("x", 1, -1, 1, 2), Param("y", 1, -1, 1, 2),
                   Choice("asked", "θ2", ("θ2", "θ1")), Choice("branch", "elbow-down", ("elbow-down", "elbow-up")),
                   valid=_elbow_as_defined),
+        steps=(Step("c2", "cos θ2", number(label="cos θ2, from the law of cosines")),
+               Step("t2", "θ2", number(unit="°", angle="deg"))),
     ),
     Trace(
         id="6.4",

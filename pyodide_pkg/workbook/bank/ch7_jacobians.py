@@ -20,7 +20,12 @@ from ..reference.arm import (
 from ..variants import Choice, Param, Vary
 from .. import chains
 from ..chains import Uses
-from . import grid
+from ..reference.linalg import add
+from ..steps import Step
+from . import column, grid
+from .checks import apart
+from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
+from .checks import kept_slips
 
 _BUGGY = """\
 import math
@@ -47,13 +52,18 @@ def _angle(deg: float, tex: bool = False) -> str:
     return f"({s})" if tex and deg < 0 else s
 
 
-def _jacobian_entry(p):
-    """7.1: J(1,1) for equal links L at θ1, with the elbow at θ2 = 90° − θ1 (link 2 points straight up)."""
+def _jacobian_entry(p, given=None):
+    """7.1: J(1,1) for equal links L at θ1, with the elbow at θ2 = 90° − θ1 (link 2 points straight up).
+    Steps: θ1 + θ2, then link 2's term −L2 sin(θ1 + θ2), each from the learner's own previous one
+    (``given``); link 1's term −L1 sin θ1 is added last."""
     L, t1 = p["L"], p["t1"]
     t2 = 90 - t1
     J = jacobian_2link(L, L, math.radians(t1), math.radians(t2))
     s1, c1 = math.sin(math.radians(t1)), math.cos(math.radians(t1))
     det = jacobian_det(L, L, math.radians(t1), math.radians(t2))
+    t12 = chains.given(given, "t12", t1 + t2)
+    link2 = chains.given(given, "link2", jacobian_2link(0, L, 0, math.radians(t12))[0][1])  # −L2 sin(θ1 + θ2)
+    link1 = jacobian_2link(L, 0, math.radians(t1), 0)[0][0]  # −L1 sin θ1
     slips = [Slip(-J[0][0], "Check the sign, and the entry: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), "
                   f"negative here (the derivative of cos is −sin). +{fmt(J[1][0])} is J(2,1), the derivative of y.")]
     if t1 != 0:  # −J(1,1) and J(2,1) part ways: each slip gets its own message
@@ -64,9 +74,19 @@ def _jacobian_entry(p):
             Slip(J[0][1], "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, "
                  "which moves both links."),
         ]
+    link2_slips = kept_slips(J[0][1], (
+        (-J[0][1], "Check the sign: the derivative of L2 cos(θ1 + θ2) is −L2 sin(θ1 + θ2)."),
+        (J[1][1], "That is L2 cos(θ1 + θ2), link 2's own x. Its derivative by θ1 is −L2 sin(θ1 + θ2)."),
+        (jacobian_2link(0, L, 0, math.radians(t2))[0][1],
+         f"That is −L2 sin θ2, link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = 90°."),
+    ))
     return {
-        "key": J[0][0],
+        "key": link1 + link2,
         "slips": tuple(slips),
+        "steps": {
+            "t12": {"key": t12, "slips": link2_direction_slips(t1, t2)},
+            "link2": {"key": link2, "slips": link2_slips},
+        },
         "values": {
             "deg1": "" if t1 == 0 else "°", "t2": fmt(t2), "a1": _angle(t1, tex=True), "s1": fmt(s1),
             "m1": fmt(-L * s1), "l1c": fmt(L * c1),
@@ -150,15 +170,38 @@ def _link2_direction(deg: float) -> str:
     return words.get(d, f"at {fmt(d)}° from the x-axis, counter-clockwise")
 
 
-def _unit_jacobian(p):
-    """7.6: the whole J of the unit-link arm at (θ1, θ2)."""
+def _unit_jacobian(p, given=None):
+    """7.6: the whole J of the unit-link arm at (θ1, θ2). Steps: θ1 + θ2, then J's second column
+    (link 2 alone), each from the learner's own previous one (``given``); the first column adds
+    link 1's share to the second.
+
+    >>> made = _unit_jacobian({"t1": 50, "t2": -100}, given={"col2": ((0.766,), (0.6428,))})
+    >>> made["key"][0][0], made["steps"]["col2"]["key"][0][0] == made["key"][0][1]
+    (0.0, True)
+    """
     t1, t2 = p["t1"], p["t2"]
     r1, r2 = math.radians(t1), math.radians(t2)
     J = jacobian_2link(1, 1, r1, r2)
     s1, c1, s12, c12 = math.sin(r1), math.cos(r1), math.sin(r1 + r2), math.cos(r1 + r2)
     x, y = forward_kinematics_2link(1, 1, r1, r2)
+    t12 = chains.given(given, "t12", t1 + t2)
+    link2 = jacobian_2link(0, 1, 0, math.radians(t12))  # link 2 alone: both columns are its column 2
+    exact2 = column((link2[0][1], link2[1][1]))
+    col2 = chains.given(given, "col2", exact2)
+    if not apart(col2, exact2, rel=1e-3):  # the learner's column is this one to its printed digits: keep
+        col2 = exact2                      # its exact entries, so rounding cannot spoil a small J(1,1)
+    link1 = jacobian_2link(1, 0, r1, 0)  # link 1's share: column 1 only
+    at_t2 = jacobian_2link(0, 1, 0, r2)
+    col2_slips = kept_slips(col2, (
+        (column((s12, c12)), "Check the sign of the first entry: the derivative of L2 cos(θ1 + θ2) is "
+                             "−L2 sin(θ1 + θ2)."),
+        (column((c12, s12)), "That is link 2 itself, (L2 cos(θ1 + θ2), L2 sin(θ1 + θ2)): where it reaches, "
+                             "not how fast the tip moves. Differentiate each by θ2."),
+        (column((at_t2[0][1], at_t2[1][1])), f"That puts link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = "
+                                             f"{_angle(t1 + t2)}."),
+    ))
     return {
-        "key": grid(J),
+        "key": grid(add(link1, [[col2[0][0]] * 2, [col2[1][0]] * 2])),
         "slips": (
             Slip(grid([J[0], [J[1][0], 1 * s12]]),
                  "J(2,2) uses sin(θ1 + θ2): that is the bug of exercise 7.5. ∂/∂θ2 of L2 sin(θ1 + θ2) is "
@@ -169,8 +212,13 @@ def _unit_jacobian(p):
             Slip(grid(jacobian_2link(1, 1, r1, 0)),
                  f"That is J of the straight arm, θ2 = 0. Put θ2 = {_angle(t2)} into sin(θ1 + θ2) and cos(θ1 + θ2)."),
         ),
+        "steps": {
+            "t12": {"key": t12, "slips": link2_direction_slips(t1, t2)},
+            "col2": {"key": col2, "slips": col2_slips},
+        },
         "values": {
-            "deg1": "" if t1 == 0 else "°", "t12": fmt(t1 + t2),
+            "deg1": "" if t1 == 0 else "°", "t12": fmt(t1 + t2), "a12": _angle(t1 + t2, tex=True),
+            "sum12": f"{fmt(t1)}{'' if t1 == 0 else '°'} {signed(t2)}°",
             "s1": fmt(s1), "c1": fmt(c1), "s12": fmt(s12), "c12": fmt(c12),
             "a11": fmt(-s1), "b11": signed(-s12), "b21": signed(c12),
             "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
@@ -268,6 +316,8 @@ EXERCISES = (
         title="Jacobian at θ = (0, 90°)",
         answer=number(label="J(1,1)"),
         vary=Vary(_jacobian_entry, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("t1", 0, -45, 45, 5, unit="°")),
+        steps=(LINK2_DIRECTION,
+               Step("link2", "link 2's term", number(label="−L2·sin(θ1 + θ2), link 2's term"))),
     ),
     Derive(
         id="7.2",
@@ -316,6 +366,8 @@ EXERCISES = (
         answer=matrix(label="J"),
         vary=Vary(_unit_jacobian, Param("t1", 0, -60, 60, 5, unit="°"), Param("t2", 90, -150, 150, 5, unit="°", avoid=(0,)),
                   valid=_well_posed_jacobian),
+        steps=(LINK2_DIRECTION,
+               Step("col2", "J's second column", matrix(label="J's second column (∂x/∂θ2, ∂y/∂θ2)"))),
     ),
     Derive(
         id="7.7",

@@ -7,11 +7,15 @@ start from 9.2's printed pose (5.8660, 3.5, 0.6236), 9.5 from 9.4's printed K
 (0.7143), and 9.6 from 9.4's printed x⁺ (5.7474).
 
 Every Derive exercise draws variants. 9.2, 9.7 and 9.8 draw the predict step's
-own inputs (pose, v, ω, dt); 9.3, 9.4 and 9.6 keep the value carried in from
-the step before (the workbook's chain) and draw the inputs they bring in (the
-landmark; P, z and R; the waypoint and Kp); 9.5 draws P and K. A sentence that
-names an earlier exercise ("from exercise 9.4") is only printed when the
-numbers are that exercise's own.
+own inputs (pose, v, ω, dt; they live in ``ch9_predict``); 9.3, 9.4 and 9.6 keep
+the value carried in from the step before (the workbook's chain) and draw the
+inputs they bring in (the landmark; P, z and R; the waypoint and Kp); 9.5 draws
+P and K. A sentence that names an earlier exercise ("from exercise 9.4") is only
+printed when the numbers are that exercise's own.
+
+9.3 and 9.4 can be worked in checked steps: the offset (Δx, Δy) to the landmark
+and then Δx² + Δy²; the gain K and then the correction K·(z − x). Each step starts
+from the learner's own previous step, and from the learner's own x′ of 9.2.
 
 The values carried in are the answers printed before them (variant 0):
 
@@ -33,116 +37,25 @@ from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
-from ..number_format import approx, fmt, paren, pi_frac, relation, shown, signed
-from ..reference.ekf import ekf_update, motion_jacobian, motion_model, range_bearing
+from ..number_format import fmt, paren, relation, shown, signed
+from ..reference.ekf import ekf_update, kalman_gain, range_bearing
 from ..reference.pid import p_term
-from ..variants import Choice, Param, Vary
+from ..variants import Param, Vary
 from .. import chains
 from ..chains import Uses
+from ..steps import Step as WorkStep
 from . import column
 from .checks import slips_apart
+from .checks import kept_slips
+from .ch9_predict import PRED_FULL  # where the capstone's chain starts: 9.2's predicted pose
 
-_START = (5.0, 3.0, math.pi / 6)
-_V, _OMEGA, _DT = 1.0, 0.1, 1.0
-_PRED_FULL = motion_model(_START, _V, _OMEGA, _DT)     # 9.2's answer, printed (5.8660, 3.5, 0.6236)
+_PRED_FULL = PRED_FULL                                 # 9.2's answer, printed (5.8660, 3.5, 0.6236)
 _PRED = tuple(shown(v) for v in _PRED_FULL)            # ... and carried as printed into 9.3 and 9.4
 _LANDMARK = (10.0, 7.0)                                # range 5.4166 from _PRED
 _P, _Z, _R = 0.5, 5.7, 0.2
 _X_UPD = shown(ekf_update(_PRED[0], _P, _Z, _R)[0])    # 9.4's answer as printed, 5.7474, carried into 9.6
 _K = shown(_P / (_P + _R))                             # 9.4's K as printed, 0.7143, carried into 9.5
 _TARGET, _KP = 10.0, 0.5                               # command 2.1263 m/s from _X_UPD
-
-
-# ---- The predict step: 9.2, 9.7, 9.8 ------------------------------------------
-_DEGREES = {pi_frac(d): d for d in range(5, 90, 5) if d != 45}  # 45° would make cos θ = sin θ
-_HEADING = ("theta", pi_frac(30), tuple(_DEGREES))
-_NINE_TWO = {"x": _START[0], "y": _START[1], "theta": pi_frac(30), "v": _V, "omega": _OMEGA, "dt": _DT}  # 9.2's own
-
-
-def _heading(p) -> tuple[int, float]:
-    """The drawn heading: whole degrees and radians."""
-    deg = _DEGREES[p["theta"]]
-    return deg, math.radians(deg)
-
-
-def _predicted_pose(p):
-    """The predict step (velocity model) from the drawn pose, with its intermediate numbers."""
-    deg, th = _heading(p)
-    x, y, v, omega, dt = p["x"], p["y"], p["v"], p["omega"], p["dt"]
-    pred = motion_model((x, y, th), v, omega, dt)
-    turned = motion_model((x, y, th + omega * dt), v, omega, dt)  # the slip: turn first, then drive
-    swapped = (x + v * math.sin(th) * dt, y + v * math.cos(th) * dt)  # the slip: sin and cos swapped
-    moved_x, moved_y = pred[0] - x, pred[1] - y
-    values = {
-        "deg": fmt(deg),
-        "cos": f"= \\sqrt3/2 {approx(math.cos(th))}" if deg == 30 else approx(math.cos(th)),
-        "dx": fmt(moved_x), "dy": fmt(moved_y),
-        "xp": fmt(pred[0]), "yp": fmt(pred[1]),
-        "rx": relation(pred[0], x + shown(moved_x)), "ry": relation(pred[1], y + shown(moved_y)),
-        "th": fmt(th), "omdt": fmt(omega * dt), "thp": fmt(pred[2]), "rth": relation(pred[2], shown(th) + omega * dt),
-        "thp_deg": fmt(math.degrees(pred[2])), "omdt_deg": approx(math.degrees(omega * dt)),
-        "most": "x" if moved_x > moved_y else "y", "cmp": ">" if moved_x > moved_y else "<",
-        "as92": " as in exercise 9.2" if p == _NINE_TWO else "",
-        "next92": ("Exercises 9.3 and 9.4 start from this pose." if p == _NINE_TWO
-                   else "Exercises 9.3 and 9.4 start from the pose of this exercise's first numbers."),
-        "used92": ("Exercise 9.2 used only the first entry." if p == _NINE_TWO
-                   else "Exercise 9.2 asks for the first entry alone."),
-    }
-    return pred, turned, swapped, values
-
-
-def _turned_first(p) -> str:
-    """The message for driving along the new heading."""
-    return ("You turned first and then drove. The velocity model moves along the heading at the start "
-            f"of the step, θ = {pi_frac(_heading(p)[0], tex=False)}; the turn takes effect from the next step.")
-
-
-def _new_x(p):
-    """9.2: x′ after one predict step of the velocity model."""
-    pred, turned, swapped, values = _predicted_pose(p)
-    return {
-        "key": pred[0],
-        "slips": (
-            Slip(turned[0], _turned_first(p)),
-            Slip(swapped[0], "You used sin θ. The x-displacement is v·cos θ·dt."),
-            Slip(pred[1], "That is y′. The question asks for x′."),
-        ),
-        "values": values,
-    }
-
-
-def _new_state(p):
-    """9.8: the whole predicted state (x′, y′, θ′) of the velocity model."""
-    pred, turned, swapped, values = _predicted_pose(p)
-    return {
-        "key": column(pred),
-        "slips": (
-            Slip(column(turned[:2] + (pred[2],)), _turned_first(p)),
-            Slip(column(swapped + (pred[2],)), "sin and cos are swapped: x moves by v cos θ dt and y by v sin θ dt."),
-            Slip(column(pred[:2] + (_heading(p)[1],)),
-                 f"The heading did not change: θ′ = θ + ω dt, and ω = {fmt(p['omega'])} rad/s."),
-        ),
-        "values": values,
-    }
-
-
-def _jacobian_entry(p):
-    """9.7: F(2,3) = v cos θ dt of the motion Jacobian (and F(1,3) beside it)."""
-    deg, th = _heading(p)
-    F = motion_jacobian((0.0, 0.0, th), p["v"], 0.0, p["dt"])
-    f23 = (f"= \\frac{{\\sqrt3}}{{2}} {approx(F[1][2])}" if deg == 30 and p["v"] * p["dt"] == 1
-           else approx(F[1][2]))  # the exact form only where it is cos 30° itself
-    return {
-        "key": F[1][2],
-        "slips": (
-            Slip(F[0][2], "That is F(1,3) = −v sin θ dt, in row 1. Row 2 is the derivative of y′."),
-            Slip(-F[0][2], "∂(v sin θ dt)/∂θ = v cos θ dt, not v sin θ dt."),
-        ),
-        "values": {
-            "of92": " of exercise 9.2" if (p["theta"], p["v"], p["dt"]) == (pi_frac(30), _V, _DT) else "",
-            "f23_tex": f23, "f13": fmt(F[0][2]), "f23": fmt(F[1][2]),
-        },
-    }
 
 
 # ---- Sensing, fusing, steering: 9.3 to 9.6 ---------------------------------------
@@ -152,25 +65,49 @@ def _carried_pose() -> dict[str, str]:
 
 
 def _predicted_range(p, given=None):
-    """9.3: the range from 9.2's printed pose (or the learner's own x′, ``given``) to the drawn landmark."""
+    """9.3: the range from 9.2's printed pose (or the learner's own x′, ``given``) to the drawn landmark.
+    Steps: the offset (Δx, Δy) to the landmark, then Δx² + Δy², each from the learner's own previous
+    one (``given``); the range is its square root. Without ``given`` that is the reference's range:
+
+    >>> made = _predicted_range({"lx": 10, "ly": 7})
+    >>> math.isclose(made["key"], range_bearing(_PRED, _LANDMARK)[0])
+    True
+    """
     landmark = (p["lx"], p["ly"])
     pred = (chains.given(given, "x", _PRED[0]), _PRED[1], _PRED[2])
-    r = range_bearing(pred, landmark)[0]
-    dx, dy = landmark[0] - pred[0], landmark[1] - pred[1]
+    offset = chains.given(given, "d", column((landmark[0] - pred[0], landmark[1] - pred[1])))
+    (dx,), (dy,) = offset
+    q = chains.given(given, "q", dx * dx + dy * dy)
+    r = math.sqrt(q)  # ValueError when a learner's Δx² + Δy² is negative: nothing to carry
+    true_r = range_bearing(_PRED, landmark)[0]
+    ddx, ddy = landmark[0] - _PRED[0], landmark[1] - _PRED[1]
     exactly = 10  # significant figures enough to print the squares of Δx, Δy (three decimals each) in full
-    reading = round(r - 0.1, 1)  # a LiDAR reading a little short of the prediction
+    reading = round(true_r - 0.1, 1)  # a LiDAR reading a little short of the prediction
     return {
         "key": r,
         "slips": (
-            Slip(r ** 2, "That is r², the sum of squares. Take its square root."),
+            Slip(true_r ** 2, "That is r², the sum of squares. Take its square root."),
             Slip(math.hypot(*landmark),
                  "That is the landmark's distance from the origin. Measure from the robot's predicted position."),
         ),
+        "steps": {
+            "d": {"key": offset, "slips": kept_slips(offset, (
+                (column((-ddx, -ddy)), "That is the robot's position minus the landmark's. The offset runs from "
+                                       "the robot to the landmark: landmark minus robot."),
+                (column(landmark), "That is where the landmark is, seen from the origin. Take away the robot's "
+                                   "predicted position."),
+            ))},
+            "q": {"key": q, "slips": kept_slips(q, (
+                ((dx + dy) ** 2, "That squares the sum, (Δx + Δy)². Square each offset first, then add."),
+                (abs(dx) + abs(dy), "That adds the offsets themselves. Pythagoras adds their squares."),
+            ))},
+        },
         "values": {
             **_carried_pose(),
-            "dx": fmt(dx), "dy": fmt(dy), "dx2": fmt(dx * dx, exactly), "dy2": fmt(dy * dy, exactly),
-            "q": fmt(dx * dx + dy * dy, exactly), "rr": relation(r), "r": fmt(r), "reading": fmt(reading),
-            "innovation": fmt(reading - r), "ri": relation(reading - r, reading - shown(r)),
+            "dx2": fmt(ddx * ddx, exactly), "dy2": fmt(ddy * ddy, exactly),
+            "rq": relation(ddx * ddx + ddy * ddy, shown(ddx * ddx) + shown(ddy * ddy)),
+            "rr": relation(true_r), "r": fmt(true_r), "reading": fmt(reading),
+            "innovation": fmt(reading - true_r), "ri": relation(reading - true_r, reading - shown(true_r)),
         },
     }
 
@@ -182,26 +119,47 @@ def _range_well_posed(p) -> bool:
 
 
 def _fused(p, given=None):
-    """9.4: the scalar Kalman update of 9.2's printed x (or the learner's own, ``given``) with the drawn P, z and R."""
+    """9.4: the scalar Kalman update of 9.2's printed x (or the learner's own, ``given``) with the drawn P, z and R.
+    Steps: the gain K, then the correction K·(z − x), each from the learner's own previous one
+    (``given``); x⁺ adds the correction to x. Without ``given`` that is the reference's update:
+
+    >>> made = _fused({"P": _P, "z": _Z, "R": _R})
+    >>> math.isclose(made["key"], ekf_update(_PRED[0], _P, _Z, _R)[0])
+    True
+    """
     P, z, R = p["P"], p["z"], p["R"]
     x = chains.given(given, "x", _PRED[0])
-    x_upd, _ = ekf_update(x, P, z, R)
-    K = P / (P + R)
-    correction = K * (z - x)
+    gain = kalman_gain([[P]], [[1.0]], [[R]])[0][0]  # P/(P + R)
+    K = chains.given(given, "K", gain)
+    correction = chains.given(given, "corr", K * (z - x))
+    x_upd = x + correction
+    x0 = _PRED[0]  # what the page prints: 9.2's x, the right gain and correction
+    printed_corr = gain * (z - x0)
     return {
         "key": x_upd,
         "slips": (
             Slip(ekf_update(x, R, z, P)[0],
                  f"You swapped P and R: K = P/(P + R) = {fmt(P)}/{fmt(P + R)}, "
                  "the share of trust given to the measurement."),
-            Slip(x_upd - x, "That is the correction K(z − x). Add it to the prediction."),
+            Slip(correction, "That is the correction K(z − x). Add it to the prediction."),
         ),
+        "steps": {
+            "K": {"key": K, "slips": kept_slips(K, (
+                (1 - gain, f"That is R/(P + R), the prediction's share. K puts the prediction's variance "
+                           f"P = {fmt(P)} on top."),
+                (P / R, "That is P/R. The gain divides by P + R, the variance of the innovation."),
+            ))},
+            "corr": {"key": correction, "slips": kept_slips(correction, (
+                (K * (x - z), "Check the sign: the innovation is z − x, the measurement minus the prediction."),
+                (z - x, f"That is the innovation z − x alone. The correction scales it by K = {fmt(K)}."),
+            ))},
+        },
         "values": {
             "px": _carried_pose()["px"],
-            "S": fmt(P + R), "K": fmt(K), "rk": relation(K), "innov": fmt(z - x), "innov_p": paren(z - x),
-            "corr": signed(correction), "rc": relation(correction, shown(K) * (z - x)),
-            "xu": fmt(x_upd), "rx": relation(x_upd, x + shown(correction)),
-            "pct": _percent(K),
+            "S": fmt(P + R), "K": fmt(gain), "rk": relation(gain), "innov": fmt(z - x0), "innov_p": paren(z - x0),
+            "corr": signed(printed_corr), "rc": relation(printed_corr, shown(gain) * (z - x0)),
+            "xu": fmt(x0 + printed_corr), "rx": relation(x0 + printed_corr, x0 + shown(printed_corr)),
+            "pct": _percent(gain),
             "next94": ("Exercise 9.6 steers from this x⁺." if (P, z, R) == (_P, _Z, _R)
                        else "Exercise 9.6 steers from the x⁺ of this exercise's first numbers."),
         },
@@ -254,13 +212,6 @@ def _command(p, given=None):
     }
 
 
-def _pose_params():
-    """9.2 and 9.8 draw the same predict step: start pose, speed, turn rate, time step."""
-    return (Param("x", _START[0], 0, 9, 1), Param("y", _START[1], 0, 9, 1), Choice(*_HEADING),
-            Param("v", _V, 0.5, 2, 0.1, unit=" m/s"), Param("omega", _OMEGA, 0.05, 0.3, 0.05, unit=" rad/s"),
-            Param("dt", _DT, 0.5, 2, 0.5, unit=" s"))
-
-
 EXERCISES = (
     Design(
         id="9.1",
@@ -275,17 +226,13 @@ EXERCISES = (
         shown=("update", "control", "detect", "predict", "innovate"),
     ),
     Derive(
-        id="9.2",
-        title="The full predict step",
-        answer=number(label="x′ after one step", unit="m"),
-        vary=Vary(_new_x, *_pose_params(), valid=lambda p: slips_apart(_new_x(p))),
-    ),
-    Derive(
         id="9.3",
         title="Predicted range to a landmark",
         answer=number(label="predicted range r", unit="m"),
         vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1), valid=_range_well_posed),
         uses=(Uses("9.2", "x", "x′"),),
+        steps=(WorkStep("d", "(Δx, Δy)", matrix(label="(Δx, Δy), from the robot to the landmark", unit="m")),
+               WorkStep("q", "Δx² + Δy²", number(label="Δx² + Δy²"))),
     ),
     Derive(
         id="9.4",
@@ -294,6 +241,8 @@ EXERCISES = (
         vary=Vary(_fused, Param("P", _P, 0.2, 1, 0.1), Param("z", _Z, 4.8, 6.9, 0.1, unit=" m"),
                   Param("R", _R, 0.1, 0.9, 0.1), valid=_fused_well_posed),
         uses=(Uses("9.2", "x", "x′"),),
+        steps=(WorkStep("K", "K", number(label="the gain K = P/(P + R)")),
+               WorkStep("corr", "K·(z − x)", number(label="the correction K·(z − x)", unit="m"))),
     ),
     Derive(
         id="9.5",
@@ -309,18 +258,5 @@ EXERCISES = (
         vary=Vary(_command, Param("target", _TARGET, 6, 15, 1, unit=" m"), Param("Kp", _KP, 0.1, 1.5, 0.1, avoid=(1,)),
                   valid=lambda p: slips_apart(_command(p))),
         uses=(Uses("9.4", "xu", "x⁺"),),
-    ),
-    Derive(
-        id="9.7",
-        title="An entry of the Jacobian F",
-        answer=number(label="F(2,3)"),
-        vary=Vary(_jacobian_entry, Choice(*_HEADING), Param("v", _V, 0.5, 2, 0.1, unit=" m/s"),
-                  Param("dt", _DT, 0.5, 2, 0.5, unit=" s"), valid=lambda p: slips_apart(_jacobian_entry(p))),
-    ),
-    Derive(
-        id="9.8",
-        title="The whole predicted state",
-        answer=matrix(label="predicted state", names=("x′", "y′", "θ′"), units=("m", "m", "rad")),
-        vary=Vary(_new_state, *_pose_params(), valid=lambda p: slips_apart(_new_state(p))),
     ),
 )

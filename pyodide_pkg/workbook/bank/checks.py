@@ -15,6 +15,7 @@ from __future__ import annotations
 
 from typing import Any
 
+from ..answer_kinds.base import Slip
 from ..tolerance import agrees, clean
 
 APART = 3e-3  # relatively: far enough apart that 3 significant figures tell them apart
@@ -38,3 +39,23 @@ def apart(*values: Any, rel: float = APART, turn: float | None = None) -> bool:
 def slips_apart(made: dict, rel: float = APART, turn: float | None = None) -> bool:
     """A ``make()`` result's key and slips are all told apart (see :func:`apart`)."""
     return apart(made["key"], *(s.value for s in made.get("slips", ())), rel=rel, turn=turn)
+
+
+_KEPT_APART = 6e-3  # relatively: beyond half a unit of the last digit of any value typed to 3 figures (≤ 0.5 %)
+
+
+def kept_slips(key, candidates, turn=None) -> tuple[Slip, ...]:
+    """The slips among ``candidates`` (value, message) that differ from ``key`` and from the ones
+    kept before them (with ``turn``, angles a whole turn apart are the same): a step's slips for
+    this draw, so that no draw is refused for a slip that happens to be right here. A slip such as
+    1.05 is read to its 3 figures, so it must lie further from the key than half a unit of its last
+    digit.
+
+    >>> [s.value for s in kept_slips(1.0, ((2.0, "a"), (1.0, "b"), (2.0, "c"), (3.0, "d")))]
+    [2.0, 3.0]
+    """
+    slips: list[Slip] = []
+    for value, message in candidates:
+        if value is not None and apart(key, value, *(s.value for s in slips), rel=_KEPT_APART, turn=turn):
+            slips.append(Slip(value, message))
+    return tuple(slips)
