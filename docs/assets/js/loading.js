@@ -5,7 +5,7 @@
 // download, then start, then ready. The reply replaces it the moment the
 // grader answers (feedback.js).
 
-import { ATTR, BOOT_PHASE, OFFLINE, ROLE, RUNTIME, STATE, byRole, findRole } from "./contract.js";
+import { ATTR, BOOT_PHASE, OFFLINE, ROLE, RUNTIME, STATE, byRole, findRole, ownRole } from "./contract.js";
 import { formatSize } from "./offline-ui.js";
 import { el } from "./progress-view.js";
 
@@ -65,7 +65,7 @@ function draw(box) {
 }
 
 function showIn(exercise) {
-  const feedback = findRole(exercise, ROLE.feedback);
+  const feedback = ownRole(exercise, ROLE.feedback);
   if (!feedback) return;
   let box = findRole(feedback, ROLE.runtimeStatus);
   if (!box) {
