@@ -148,3 +148,46 @@ def test_work_3_8_in_steps_with_a_wrong_step_then_solve_it(page, site_url):
         assert step(el, name).locator(role("entry")).evaluate_all("els => els.every(e => e.value === '')")
         expect(step(el, name).locator(role("work-step-feedback"))).to_be_empty()
     assert record(page)["stepWork"] is None
+
+
+def test_schema_3_is_migrated_and_steps_travel_through_export_and_import(page, site_url):
+    """A schema-3 store reads as schema 4 with nothing lost; an export's steps import and merge
+    (the newer steps on screen win, variant lists join); a malformed steps record is refused."""
+    import json
+
+    from test_progress import import_file, open_progress_page
+
+    page.goto(site_url)
+    key = page.evaluate("workbook.progress.key")
+    v3 = {"version": 3, "exercises": {"3.8": {"carried": [0], "missed": [0], "attempts": 1, "updated": 1_700_000_000_000}}}
+    page.evaluate("([k, v]) => localStorage.setItem(k, v)", [key, json.dumps(v3)])
+    open_progress_page(page, site_url)
+    assert page.evaluate("workbook.progress.data.version") == 4
+    assert record(page) == v3["exercises"]["3.8"]
+
+    work = {"variant": 7, "steps": {"FP": {"answer": [["1", "2", "3"], ["4", "5", "6"], ["7", "8", "9"]],
+                                           "status": "incorrect", "tag": "slip", "message": "That is P F."},
+                                    "FPF": {"answer": [["0"] * 3] * 3, "status": "incorrect", "tag": "carried",
+                                            "message": "It follows.", "carried": {"step": "FP", "link": "Back to step 1"}}}}
+    v4 = {"format": "robotics-math-workbook-progress", "version": 4, "exported": "2025-01-01T00:00:00Z",
+          "exercises": {"3.8": {"stepped": [7], "carried": [7], "steppedDone": [3], "done": [3], "variant": 7,
+                                "stepWork": work, "updated": 1_700_000_000_001}}}
+    assert "1 combined" in import_file(page, json.dumps(v4))
+    got = record(page)
+    assert got["stepped"] == [7] and got["carried"] == [0, 7] and got["steppedDone"] == [3] and got["missed"] == [0]
+    assert got["stepWork"] == work  # the newer copy's steps on screen
+    exported = page.evaluate("workbook.progress.exportData()")
+    assert exported["version"] == 4 and exported["exercises"]["3.8"]["stepWork"] == work
+
+    before = page.evaluate("workbook.progress.all()")
+    bad_steps = {
+        "a forbidden step name": {"variant": 0, "steps": {"__proto__": {"answer": "1"}}},
+        "an unknown status": {"variant": 0, "steps": {"FP": {"answer": "1", "status": "great"}}},
+        "an unknown key": {"variant": 0, "steps": {"FP": {"answer": "1", "score": 3}}},
+        "a bad variant": {"variant": -1, "steps": {}},
+        "a huge message": {"variant": 0, "steps": {"FP": {"answer": "1", "message": "x" * 5000}}},
+    }
+    for name, bad in bad_steps.items():
+        text = import_file(page, json.dumps({**v4, "exercises": {"3.8": {"stepWork": bad}}}))
+        assert text.startswith("Import refused") and "stepWork" in text, (name, text)
+        assert page.evaluate("workbook.progress.all()") == before, name
