@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from playwright.sync_api import Locator, Page, expect
 
-from helpers import exercise, fill_matrix, open_chapter, role, wait_runtime
+from helpers import exercise, fill_matrix, open_chapter, paste, role, wait_runtime
 from test_a11y import audit
 from workbook import bank
 from workbook.contract import ATTR, STATE, TAG
@@ -79,8 +79,12 @@ def test_work_3_8_in_steps_with_a_wrong_step_then_solve_it(page, site_url):
     expect(el.locator(role("work-step"))).to_have_count(2)
     expect(step(el, "FP")).to_contain_text("Step 1 · F P")
     expect(step(el, "FPF")).to_contain_text("Step 2 · F P Fᵀ")
-    fill_matrix(step(el, "FP"), grid_text(slip.value))
-    step(el, "FP").locator(role("entry", '[data-row="3"][data-col="3"]')).press("Enter")
+    # the whole matrix pasted into one entry: the grader splits it with the step's own answer kind
+    rows = grid_text(slip.value)
+    paste(step(el, "FP").locator(role("entry", '[data-row="1"][data-col="1"]')), "\n".join(" ".join(r) for r in rows))
+    last = step(el, "FP").locator(role("entry", '[data-row="3"][data-col="3"]'))
+    expect(last).to_have_value(rows[2][2])
+    last.press("Enter")
     assert settled(page, step(el, "FP")) == STATE.incorrect
     expect(step(el, "FP").locator(role("work-step-feedback"))).to_contain_text(slip.message)
     assert el.get_attribute(ATTR.state) == STATE.unanswered  # a step is not the exercise's answer
