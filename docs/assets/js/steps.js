@@ -8,6 +8,7 @@
 // (stepWork) for the variant on screen; new numbers clear them.
 
 import { ATTR, ROLE, STATE, STATUS, TAG, findRoles, ownQuery, ownRole } from "./contract.js";
+import { showCarried as showCarriedFrom } from "./carry.js";
 import { feedbackOf, setPending, showReply } from "./feedback.js";
 import { firstControl } from "./jump.js";
 import { afterStep } from "./review.js";
@@ -116,21 +117,23 @@ class Steps {
     if (variant !== (ctx.variant ?? 0)) return; // new numbers came while it was graded: this verdict is stale
     showReply(li, reply);
     field.show?.(reply);
-    this.showCarried(li, reply.ok ? reply.value : null);
+    this.showCarried(li, reply);
     if (reply.ok) this.save(name, answer, reply.value);
   }
 
-  /** A carried verdict's link: back to the learner's earlier step, or to an earlier exercise (carry.js). */
-  showCarried(el, verdict) {
-    const carried = verdict?.tag === TAG.carried ? verdict.data?.carried : null;
-    if (carried?.step) {
-      if (el !== this.ctx.el) el.setAttribute(ATTR.carried, carried.step); // an exercise's data-carried names an exercise
-      else el.removeAttribute(ATTR.carried);
-      const p = document.createElement("p");
-      p.append(stepLink(this, carried.step, carried.link));
-      feedbackOf(el).append(p);
-    } else if (!carried?.from) el.removeAttribute(ATTR.carried);
-    return Boolean(carried?.step);
+  /**
+   * A carried verdict's way back: to the learner's earlier step (here), or to an earlier
+   * exercise (carry.js; the exercise's own answer has had that already). True for a step.
+   */
+  showCarried(el, reply) {
+    if (el !== this.ctx.el) showCarriedFrom(el, reply);
+    const carried = reply.ok && reply.value.tag === TAG.carried ? reply.value.data?.carried : null;
+    if (!carried?.step) return false;
+    if (el !== this.ctx.el) el.setAttribute(ATTR.carried, carried.step); // an exercise's data-carried names an exercise
+    const p = document.createElement("p");
+    p.append(stepLink(this, carried.step, carried.link));
+    feedbackOf(el).append(p);
+    return true;
   }
 
   save(name, answer, verdict) {
@@ -156,8 +159,9 @@ class Steps {
       if (!li) continue;
       this.fields.get(name).restore(step.answer);
       if (!step.status) continue;
-      showReply(li, { ok: true, value: { status: step.status, tag: step.tag ?? null, message: step.message ?? "" } });
-      this.showCarried(li, { tag: step.tag, data: { carried: step.carried } });
+      const reply = { ok: true, value: { status: step.status, tag: step.tag ?? null, message: step.message ?? "", data: { carried: step.carried } } };
+      showReply(li, reply);
+      this.showCarried(li, reply);
     }
   }
 
@@ -198,5 +202,5 @@ export function initSteps(ctx) {
 /** After the final answer's reply: a link back to a wrong step it follows from, or the offer of the first step. */
 export function afterFinal(ctx, reply) {
   if (!ctx.steps || !reply.ok) return;
-  if (!ctx.steps.showCarried(ctx.el, reply.value)) ctx.steps.offer(reply.value);
+  if (!ctx.steps.showCarried(ctx.el, reply)) ctx.steps.offer(reply.value);
 }
