@@ -17,6 +17,7 @@ from typing import Callable
 
 from workbook.contract import ATTR, ROLE, STATE, role_attr
 from workbook.kinds.base import Exercise
+from render_steps import steps_html
 
 KIND_LABEL = {"derive": "Derive", "trace": "Trace", "build": "Build", "debug": "Debug", "design": "Design"}
 
@@ -96,6 +97,7 @@ def exercise_html(ex: Exercise, prompt_html: str, hint_html: str, solution_html:
         f'<div class="wb-prompt">{prompt_html}</div>'
         f"{ex.widget(base, tools)}"
         f'<div class="wb-feedback" id="{base}-feedback" {role_attr(ROLE.feedback)} role="status" aria-live="polite"></div>'
+        f"{steps_html(ex, base, tools)}"
         f'<div class="wb-help">{buttons}</div>{panels}'
         f"</div>"
     )

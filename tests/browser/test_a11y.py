@@ -56,9 +56,11 @@ def wait_practise_card(page: Page) -> None:
 
 
 def open_all_help(page: Page) -> None:
-    for button in page.locator((role("hint") + ', ' + role("reveal"))).all():
+    """Open every hint, derivation and "Work it in steps" panel."""
+    for button in page.locator((role("hint") + ', ' + role("reveal") + ', ' + role("work-steps-open"))).all():
         button.click()
-    page.wait_for_function("sel => [...document.querySelectorAll(sel)].every(s => !s.hidden)", arg=role("solution-panel"))
+    for panel in ("solution-panel", "work-steps"):
+        page.wait_for_function("sel => [...document.querySelectorAll(sel)].every(s => !s.hidden)", arg=role(panel))
 
 
 def audit(page: Page) -> list[str]:

@@ -5,7 +5,8 @@
 // so (tag "carried"); this module marks the element with data-carried and puts
 // the grader's link back to the earlier exercise under the message.
 
-import { ATTR, ROLE, TAG, findRole } from "./contract.js";
+import { ATTR, ROLE, TAG } from "./contract.js";
+import { feedbackOf } from "./feedback.js";
 import { variantHref } from "./variants.js";
 
 /** {ID: {answer, variant}} of the learner's last graded answers to the exercises this one uses, or undefined. */
@@ -21,7 +22,7 @@ export function givenFor(ctx) {
 /** After a reply: data-carried and the link back, or neither. */
 export function showCarried(el, reply) {
   const carried = reply.ok && reply.value.tag === TAG.carried ? reply.value.data?.carried : null;
-  if (!carried) {
+  if (!carried?.from) { // none, or carried from a step of this exercise (steps.js shows that one)
     el.removeAttribute(ATTR.carried);
     return;
   }
@@ -34,5 +35,5 @@ export function showCarried(el, reply) {
   link.textContent = carried.link;
   const p = document.createElement("p");
   p.append(link);
-  findRole(el, ROLE.feedback).append(p);
+  feedbackOf(el).append(p);
 }

@@ -24,3 +24,12 @@ export const findRole = (el, role, extra) => el.querySelector(byRole(role, extra
 export const findRoles = (el, role, extra) => [...el.querySelectorAll(byRole(role, extra))];
 /** Set <html data-workbook-runtime|offline>. */
 export const setRootState = (which, value) => document.documentElement.setAttribute(ATTR[which], value);
+// An exercise's checked steps (role work-steps) hold answer widgets of their own, which reuse the
+// answer roles (answer, entry, ...). The exercise's OWN answer, check, feedback and other parts
+// are those outside any steps panel inside `el`; for a step's element, its own parts.
+const panelOf = (node) => node.parentElement?.closest(byRole(ROLE.workSteps)) ?? null; // the panel itself is the exercise's
+/** The first (or every) element with `role` that belongs to `el` itself, not to a step panel inside it. */
+export const ownRoles = (el, role, extra) => findRoles(el, role, extra).filter((node) => panelOf(node) === panelOf(el));
+export const ownRole = (el, role, extra) => ownRoles(el, role, extra)[0] ?? null;
+/** `el`'s own first element matching a CSS selector (the answer form, a label), outside any steps panel inside it. */
+export const ownQuery = (el, selector) => [...el.querySelectorAll(selector)].find((node) => panelOf(node) === panelOf(el)) ?? null;

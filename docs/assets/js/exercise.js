@@ -2,7 +2,7 @@
 // store: the parts every kind shares (state, attempts, hint and derivation); the
 // kind's own widget is docs/assets/js/kinds/<kind>.js, loaded by name.
 
-import { ATTR, REVIEW_KINDS, ROLE, STATE, findRole } from "./contract.js";
+import { ATTR, REVIEW_KINDS, ROLE, STATE, ownQuery, ownRole } from "./contract.js";
 import { setPending, showMessage, showReply } from "./feedback.js";
 import { afterGrade, afterReveal } from "./review.js";
 
@@ -48,16 +48,16 @@ function toggle(button, panel, showLabel, hideLabel) {
 
 function initHelp(ctx) {
   const { el, id, progress } = ctx;
-  const hintButton = findRole(el, ROLE.hint);
-  const revealButton = findRole(el, ROLE.reveal);
+  const hintButton = ownRole(el, ROLE.hint);
+  const revealButton = ownRole(el, ROLE.reveal);
   if (hintButton) {
-    const panel = findRole(el, ROLE.hintPanel);
+    const panel = ownRole(el, ROLE.hintPanel);
     hintButton.addEventListener("click", () => {
       if (toggle(hintButton, panel, "Show hint", "Hide hint")) progress.update(id, { hinted: true });
     });
   }
   if (revealButton) {
-    const panel = findRole(el, ROLE.solutionPanel);
+    const panel = ownRole(el, ROLE.solutionPanel);
     const showLabel = revealButton.textContent;
     const hideLabel = showLabel.replace("Show", "Hide");
     revealButton.addEventListener("click", () => {
@@ -78,7 +78,7 @@ function initHelp(ctx) {
 // The page's head holds back a Check pressed before the widget was ready
 // (docs/overrides/main.html); now that it is, check that answer.
 function replayEarlySubmit(el) {
-  const form = el.querySelector("form");
+  const form = ownQuery(el, "form");
   if (!form) return;
   form.dataset.wbReady = "true";
   const early = window.__workbookSubmits || [];

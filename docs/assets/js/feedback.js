@@ -2,7 +2,7 @@
 // and a Build run's test rows. The wording comes from the grader (Python); this
 // module only places it.
 
-import { ATTR, ROLE, STATE, findRole } from "./contract.js";
+import { ATTR, ROLE, STATE, findRole, ownRole } from "./contract.js";
 
 export function setPending(el) {
   el.setAttribute(ATTR.state, STATE.pending);
@@ -20,10 +20,13 @@ export function showReply(el, reply) {
   showMessage(el, verdict ? verdict.message : reply.error.message);
 }
 
+/** Where `el`'s messages go: an exercise's own feedback, or a checked step's (work-step-feedback). */
+export const feedbackOf = (el) => ownRole(el, ROLE.feedback) ?? ownRole(el, ROLE.workStepFeedback);
+
 export function showMessage(el, text) {
   const p = document.createElement("p");
   p.textContent = text;
-  findRole(el, ROLE.feedback).replaceChildren(p);
+  feedbackOf(el).replaceChildren(p);
 }
 
 function testRow(row) {

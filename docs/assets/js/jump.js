@@ -7,7 +7,7 @@
 // The same list and the page's table of contents name each exercise by its
 // title, which new numbers may change: retitle() keeps them all in step.
 
-import { ATTR, ROLE, findRole } from "./contract.js";
+import { ATTR, ROLE, ownRole } from "./contract.js";
 
 // Where an answer starts, by kind: the first of these roles an exercise has.
 const ANSWER_ROLES = [ROLE.entry, ROLE.answer, ROLE.choice, ROLE.line, ROLE.editor, ROLE.steps, ROLE.check];
@@ -18,9 +18,9 @@ const visible = (el) => el.getClientRects().length > 0 && !el.closest("[hidden]"
 /** The control an exercise's answer starts with (the checked option of a Trace, if one is). */
 export function firstControl(exercise) {
   for (const role of ANSWER_ROLES) {
-    const area = findRole(exercise, role);
+    const area = ownRole(exercise, role);
     if (!area) continue;
-    if (role === ROLE.choice) return exercise.querySelector(`[${ATTR.role}="${ROLE.choice}"]:checked`) || area;
+    if (role === ROLE.choice) return ownRole(exercise, ROLE.choice, ":checked") || area;
     const target = area.matches(FOCUSABLE) ? area : [...area.querySelectorAll(FOCUSABLE)].find(visible);
     if (target) return target;
   }

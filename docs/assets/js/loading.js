@@ -6,6 +6,7 @@
 // grader answers (feedback.js).
 
 import { ATTR, BOOT_PHASE, OFFLINE, ROLE, RUNTIME, STATE, byRole, findRole } from "./contract.js";
+import { feedbackOf } from "./feedback.js";
 import { formatSize } from "./offline-ui.js";
 import { el } from "./progress-view.js";
 
@@ -65,7 +66,7 @@ function draw(box) {
 }
 
 function showIn(exercise) {
-  const feedback = findRole(exercise, ROLE.feedback);
+  const feedback = feedbackOf(exercise); // an exercise's own feedback, or a checked step's
   if (!feedback) return;
   let box = findRole(feedback, ROLE.runtimeStatus);
   if (!box) {
@@ -83,7 +84,8 @@ export function initLoading() {
   new MutationObserver((records) => {
     if (!loading()) return;
     for (const { target } of records) {
-      if (target.getAttribute(ATTR.state) === STATE.pending && target.hasAttribute(ATTR.exercise)) showIn(target);
+      const waits = target.hasAttribute(ATTR.exercise) || target.getAttribute(ATTR.role) === ROLE.workStep;
+      if (target.getAttribute(ATTR.state) === STATE.pending && waits) showIn(target);
     }
   }).observe(document.body, { attributes: true, subtree: true, attributeFilter: [ATTR.state] });
   document.addEventListener("workbook:boot", (event) => {

@@ -2,7 +2,7 @@
 // tab, and initialises every exercise on every page, including pages reached by
 // mkdocs-material's instant navigation.
 
-import { ATTR, ERROR, ROLE, RUNTIME, STATE, findRole, setRootState } from "./contract.js";
+import { ATTR, ERROR, ROLE, RUNTIME, STATE, ownRole, setRootState } from "./contract.js";
 import { initExercise } from "./exercise.js";
 import { Progress } from "./progress.js";
 import { Runtime } from "./runtime.js";
@@ -23,7 +23,7 @@ const exercises = () => document.querySelectorAll(`[${ATTR.exercise}]`);
 
 function showRuntimeProblem(message) {
   for (const el of exercises()) {
-    const box = findRole(el, ROLE.feedback);
+    const box = ownRole(el, ROLE.feedback);
     if (box && !box.textContent) {
       const p = document.createElement("p");
       p.className = "wb-runtime-problem";
@@ -91,7 +91,7 @@ function initPage() {
     } catch (err) {
       // One exercise that cannot start must not stop the others.
       el.setAttribute(ATTR.state, STATE.error);
-      findRole(el, ROLE.feedback)?.replaceChildren(Object.assign(document.createElement("p"), { textContent: `This exercise could not start: ${err.message}` }));
+      ownRole(el, ROLE.feedback)?.replaceChildren(Object.assign(document.createElement("p"), { textContent: `This exercise could not start: ${err.message}` }));
     }
   }
   initFigures(document, shared.runtime);

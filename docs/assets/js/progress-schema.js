@@ -16,7 +16,7 @@
 
 import { KEEP, TOP_BOX, migrateRecord } from "./review.js";
 
-export const SCHEMA_VERSION = 3;
+export const SCHEMA_VERSION = 4;
 export const EXPORT_FORMAT = "robotics-math-workbook-progress";
 // No browser keeps more than 10 MB of local storage for a site, so the largest
 // export this page can write (escaped JSON included) stays below this.
@@ -32,6 +32,21 @@ const isGrid = (v) => Array.isArray(v) && v.length >= 1 && v.length <= 12 && v.e
 const isVariant = (v) => Number.isSafeInteger(v) && v >= 0 && v <= MAX_VARIANT;
 const isVariantList = (v) => Array.isArray(v) && v.length <= KEEP && v.every(isVariant);
 const notFuture = (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS;
+const STEP_NAME = /^[A-Za-z_][A-Za-z0-9_]{0,39}$/;
+const STATUSES = ["correct", "incorrect", "invalid"];
+const isAnswer = (v) => isText(v) || Number.isFinite(v) || isKeyList(v) || isGrid(v);
+const isShort = (v, n) => isText(v) && v.length <= n;
+// A carried step's link: back to the learner's own earlier step, or to an earlier exercise.
+const isCarriedLink = (v) => isObject(v) && Object.keys(v).every((k) => ["step", "from", "variant", "link"].includes(k))
+  && isShort(v.link, 200) && (v.step === undefined || STEP_NAME.test(v.step)) && (v.from === undefined || isShort(v.from, 20))
+  && (v.variant === undefined || isVariant(v.variant));
+const isStepVerdict = (v) => isObject(v) && Object.keys(v).every((k) => ["answer", "status", "tag", "message", "carried"].includes(k))
+  && isAnswer(v.answer) && (v.status === undefined || STATUSES.includes(v.status)) && (v.tag === undefined || isShort(v.tag, 40))
+  && (v.message === undefined || isShort(v.message, 2000)) && (v.carried === undefined || isCarriedLink(v.carried));
+/** The checked steps on screen: {variant, steps: {NAME: {answer, status, tag, message, carried}}} (null: cleared by new numbers). */
+const isStepWork = (v) => v === null || (isObject(v) && Object.keys(v).every((k) => k === "variant" || k === "steps")
+  && isVariant(v.variant) && isObject(v.steps) && Object.keys(v.steps).length <= 12
+  && Object.entries(v.steps).every(([name, step]) => STEP_NAME.test(name) && !FORBIDDEN_KEYS.has(name) && isStepVerdict(step)));
 const VARIANTS = { check: isVariantList, says: `a list of at most ${KEEP} variant numbers (0 to 999,999)`, merge: "union" };
 const TIME = "a time (milliseconds since 1970) not in the future";
 
@@ -53,7 +68,11 @@ export const FIELDS = {
   clean: VARIANTS,
   missed: VARIANTS,
   revealedIn: VARIANTS,
-  carried: VARIANTS, // since version 3: answers right given the learner's own wrong earlier value
+  carried: VARIANTS, // since version 3: answers right given the learner's own wrong earlier value (or step)
+  // Since version 4: checked steps (CONTRACT.md, "Checked steps").
+  stepped: VARIANTS, // the variants worked with steps (a step checked)
+  steppedDone: VARIANTS, // the variants solved after working with steps, the derivation not revealed first
+  stepWork: { check: isStepWork, says: "the steps on screen ({variant, steps: {name: {answer, status, tag, message, carried}}}) or null", merge: "latest" },
   box: { check: (v) => Number.isInteger(v) && v >= 1 && v <= TOP_BOX, says: `a review box from 1 to ${TOP_BOX}`, merge: "review" },
   due: { check: (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + 366 * DAY_MS, says: "a time (milliseconds since 1970) within a year", merge: "review" },
   reviewed: { check: notFuture, says: TIME, merge: "review" },
@@ -210,7 +229,7 @@ export function parseImport(text, knownIds) {
     for (const [id, raw] of Object.entries(data.exercises)) {
       if (knownIds && !knownIds.has(id)) throw new ImportError(`The file mentions exercise “${id.slice(0, 20)}”, which this workbook does not have.`);
       const record = cleanRecord(id, raw);
-      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load (2 -> 3 adds a field only)
+      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load (2 -> 3 -> 4 add fields only)
     }
     return { ok: true, exercises };
   } catch (err) {

@@ -4,7 +4,8 @@
 // attempts, last, code, draftOrder, updated} and, since version 2, the variant
 // on screen and what was done with each variant, with the review schedule:
 // {variant, done, clean, missed, revealedIn, box, due, reviewed} and, since
-// version 3, `carried` (review.js
+// version 3, `carried`, and since version 4 the checked steps: `stepped`,
+// `steppedDone` and `stepWork` (review.js
 // says what they mean; progress-schema.js checks them and merges two copies).
 //
 // Never lost:
@@ -47,6 +48,8 @@ const MIGRATIONS = {
   1: (data) => ({ ...data, version: 2, exercises: mapRecords(data.exercises, (r) => migrateRecord(r)) }),
   // 2 -> 3: adds `carried` (the variants answered right only given a wrong earlier value); records keep the rest.
   2: (data) => ({ ...data, version: 3 }),
+  // 3 -> 4: adds the checked steps (`stepped`, `steppedDone`, `stepWork`); records keep the rest.
+  3: (data) => ({ ...data, version: 4 }),
 };
 
 class Unreadable extends Error {}

@@ -6,12 +6,17 @@
 // numbers): `done` (answered correctly), `clean` (answered correctly without
 // revealing that variant's derivation first), `missed` (the first answer was
 // wrong, or the derivation was opened before any answer), `revealedIn` and
-// `carried` (an answer right only given the learner's own wrong earlier value).
-// Solved: one clean variant. Mastered: MASTERED different clean variants.
+// `carried` (an answer right only given the learner's own wrong earlier value,
+// from an earlier exercise or an earlier step), `stepped` (worked with checked
+// steps) and `steppedDone` (answered correctly after working with steps, the
+// derivation not revealed: solved, but not clean).
+// Solved: one clean variant, or one solved with steps. Mastered: MASTERED
+// different clean variants (steps do not count towards it).
 //
 // Review (Leitner boxes 1-5): only the first answer to each variant moves an
 // exercise. A clean first answer moves it one box up (a first one ever lands
-// in box 2); a miss puts it back in box 1. An exercise is due INTERVAL_MS[box]
+// in box 2); a miss puts it back in box 1; a first answer solved with steps
+// keeps the exercise in its box (box 1 if it had none). An exercise is due INTERVAL_MS[box]
 // after its last move: box 1 after 10 minutes, then 1, 3, 8 and 21 days.
 
 export const MASTERED = 3;
@@ -38,14 +43,27 @@ export function afterGrade(record, v, status, { schedule = true, now = Date.now(
   if (status === "incorrect" && tag === "carried") return { carried: add(record.carried, v) };
   const patch = {};
   if (status === "correct") {
-    if (schedule && first(record, v)) Object.assign(patch, move(Math.min(TOP_BOX, Math.max(1, record.box || 1) + 1), now));
+    const helped = has(record.stepped, v) && !has(record.revealedIn, v);
+    const box = Math.max(1, record.box || 1);
+    if (schedule && first(record, v)) Object.assign(patch, move(helped ? box : Math.min(TOP_BOX, box + 1), now));
     patch.done = add(record.done, v);
-    if (!has(record.revealedIn, v)) patch.clean = add(record.clean, v);
+    if (helped) patch.steppedDone = add(record.steppedDone, v);
+    else if (!has(record.revealedIn, v)) patch.clean = add(record.clean, v);
   } else if (status === "incorrect" && first(record, v)) {
     patch.missed = add(record.missed, v);
     if (schedule) Object.assign(patch, move(1, now));
   }
   return patch;
+}
+
+/**
+ * The progress patch for a checked step of variant `v` graded `status`: the variant was worked
+ * with steps; a step carried from the learner's own wrong value is also kept in `carried`.
+ * Neither a solve nor a miss, and the review queue does not move.
+ */
+export function afterStep(record, v, status, tag = "") {
+  if (status !== "correct" && status !== "incorrect") return {};
+  return { stepped: add(record.stepped, v), ...(tag === "carried" ? { carried: add(record.carried, v) } : {}) };
 }
 
 /** The progress patch for opening variant `v`'s derivation. */
@@ -58,7 +76,7 @@ export function afterReveal(record, v, { schedule = true, now = Date.now() } = {
   return patch;
 }
 
-export const isSolved = (r) => (r.clean?.length ?? 0) > 0;
+export const isSolved = (r) => (r.clean?.length ?? 0) > 0 || (r.steppedDone?.length ?? 0) > 0;
 export const isSolvedAfterReveal = (r) => !isSolved(r) && (r.done?.length ?? 0) > 0;
 export const isMastered = (r) => (r.clean?.length ?? 0) >= MASTERED;
 export const inQueue = (r) => Number.isInteger(r.box) && r.box >= 1;

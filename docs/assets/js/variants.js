@@ -5,7 +5,7 @@
 // complete). The variant on screen is in the address (?variant=0.4-1234), so a
 // link opens exactly it, and in the progress record, so a reload keeps it.
 
-import { ATTR, ROLE, STATE, findRole } from "./contract.js";
+import { ATTR, ROLE, STATE, ownQuery, ownRole } from "./contract.js";
 import { decodeBase64 } from "./exercise.js";
 import { showMessage } from "./feedback.js";
 import { retitle } from "./jump.js";
@@ -65,8 +65,8 @@ export const freshVariant = (current = 0) => {
 };
 
 function closePanel(ctx, role, buttonRole) {
-  const panel = findRole(ctx.el, role);
-  const button = findRole(ctx.el, buttonRole);
+  const panel = ownRole(ctx.el, role);
+  const button = ownRole(ctx.el, buttonRole);
   if (!panel || !button) return panel;
   panel.hidden = true;
   button.setAttribute("aria-expanded", "false");
@@ -84,9 +84,9 @@ function setTitle(ctx, title) {
 function showControls(ctx, n) {
   const { el, id } = ctx;
   // The Practise page always shows new numbers: it offers no way back to the book's.
-  findRole(el, ROLE.originalVariant).hidden = n === 0 || !ctx.remember;
-  findRole(el, ROLE.variantLabel).textContent = n === 0 ? "The workbook's numbers" : "New numbers, drawn for you";
-  const link = findRole(el, ROLE.variantLink);
+  ownRole(el, ROLE.originalVariant).hidden = n === 0 || !ctx.remember;
+  ownRole(el, ROLE.variantLabel).textContent = n === 0 ? "The workbook's numbers" : "New numbers, drawn for you";
+  const link = ownRole(el, ROLE.variantLink);
   link.hidden = n === 0 || !ctx.remember;
   link.href = variantHref(id, n, el.id);
 }
@@ -117,11 +117,12 @@ export async function showVariant(ctx, n, { remember = true } = {}) {
     delete solution.dataset.rendered;
     solution.replaceChildren();
   }
-  const label = el.querySelector("label.wb-label");
+  const label = ownQuery(el, "label.wb-label");
   if (label) label.innerHTML = v.label;
   setTitle(ctx, v.title);
   ctx.field?.clear();
-  findRole(el, ROLE.feedback).replaceChildren();
+  ctx.steps?.clear();
+  ownRole(el, ROLE.feedback).replaceChildren();
   el.removeAttribute(ATTR.tag);
   await ctx.renderMath?.(el);
   ctx.variant = v.variant;
@@ -129,7 +130,7 @@ export async function showVariant(ctx, n, { remember = true } = {}) {
   el.setAttribute(ATTR.state, record.done?.includes(v.variant) ? STATE.correct : STATE.unanswered);
   showControls(ctx, v.variant);
   if (remember) {
-    ctx.progress.update(ctx.id, { variant: v.variant, last: null }); // null, not absent: an older copy must not bring the old answer back
+    ctx.progress.update(ctx.id, { variant: v.variant, last: null, stepWork: null }); // null, not absent: an older copy must not bring the old answer back
     history.replaceState(history.state, "", variantHref(ctx.id, v.variant, el.id));
   }
   el.setAttribute(ATTR.variant, String(v.variant));
@@ -145,9 +146,9 @@ export async function initVariants(ctx, { start = null } = {}) {
   ctx.variant = 0;
   const remember = start === null;
   ctx.remember = remember;
-  findRole(el, ROLE.newVariant).addEventListener("click", () => showVariant(ctx, freshVariant(ctx.variant), { remember }));
-  findRole(el, ROLE.originalVariant).addEventListener("click", () => showVariant(ctx, 0, { remember }));
-  findRole(el, ROLE.variantLink).addEventListener("click", (event) => {
+  ownRole(el, ROLE.newVariant).addEventListener("click", () => showVariant(ctx, freshVariant(ctx.variant), { remember }));
+  ownRole(el, ROLE.originalVariant).addEventListener("click", () => showVariant(ctx, 0, { remember }));
+  ownRole(el, ROLE.variantLink).addEventListener("click", (event) => {
     event.preventDefault();
     const href = event.currentTarget.href;
     navigator.clipboard?.writeText(href).then(
@@ -160,7 +161,7 @@ export async function initVariants(ctx, { start = null } = {}) {
   showControls(ctx, 0);
   let shown = true;
   if (wanted) {
-    findRole(el, ROLE.variantLabel).textContent = "Drawing new numbers…";
+    ownRole(el, ROLE.variantLabel).textContent = "Drawing new numbers…";
     shown = await showVariant(ctx, wanted, { remember });
   }
   if (bad !== null) {

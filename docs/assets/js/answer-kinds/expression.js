@@ -1,12 +1,12 @@
 // A formula answer: one text field, and below it the formula as the grader reads
 // it, typeset with KaTeX while the learner types (the "read" op) and after a check.
-import { ROLE, findRole } from "../contract.js";
+import { ROLE, ownQuery, ownRole } from "../contract.js";
 
 const PAUSE_MS = 300;
 
 export function init(ctx) {
-  const input = findRole(ctx.el, ROLE.answer);
-  const reading = ctx.el.querySelector(".wb-reading");
+  const input = ownRole(ctx.el, ROLE.answer);
+  const reading = ownQuery(ctx.el, ".wb-reading");
   const show = (latex, message) => {
     reading.replaceChildren();
     if (latex && window.katex) {
@@ -24,7 +24,7 @@ export function init(ctx) {
     timer = setTimeout(async () => {
       if (!input.value.trim()) return show();
       const mine = ++asked;
-      const reply = await ctx.runtime.request({ op: "read", exercise: ctx.id, variant: ctx.variant, answer: input.value });
+      const reply = await ctx.runtime.request({ op: "read", exercise: ctx.id, variant: ctx.variant, step: ctx.step, answer: input.value });
       if (mine === asked && reply.ok) show(reply.value.latex, reply.value.message);
     }, PAUSE_MS);
   });

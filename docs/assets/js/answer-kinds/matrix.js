@@ -2,11 +2,11 @@
 // (left and right once the caret is at the edge), Tab goes in reading order, and a
 // whole matrix pasted into any entry is split by the grader and fills the grid; one
 // value pasted (even a long expression) stays in the entry it was pasted into.
-import { ATTR, ROLE, TAG, findRoles } from "../contract.js";
+import { ATTR, ROLE, TAG, ownRoles } from "../contract.js";
 import { showMessage } from "../feedback.js";
 
 export function init(ctx) {
-  const entries = findRoles(ctx.el, ROLE.entry);
+  const entries = ownRoles(ctx.el, ROLE.entry);
   const at = (r, c) => entries.find((e) => Number(e.getAttribute(ATTR.row)) === r && Number(e.getAttribute(ATTR.col)) === c);
   const rows = Math.max(...entries.map((e) => Number(e.getAttribute(ATTR.row))));
   const cols = Math.max(...entries.map((e) => Number(e.getAttribute(ATTR.col))));
@@ -34,7 +34,7 @@ export function init(ctx) {
       if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim())) return; // one value: paste as usual
       event.preventDefault();
       const at = [input.selectionStart ?? input.value.length, input.selectionEnd ?? input.value.length];
-      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, text });
+      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step, text });
       if (reply.ok && typeof reply.value.cell === "string") {
         input.setRangeText(reply.value.cell, at[0], at[1], "end");
         input.dispatchEvent(new Event("input", { bubbles: true }));

@@ -1,8 +1,8 @@
 // A number or an expression in one text field (the grader reads units and forms).
-import { ROLE, findRole } from "../contract.js";
+import { ROLE, ownRole } from "../contract.js";
 
 export function init(ctx) {
-  const input = findRole(ctx.el, ROLE.answer);
+  const input = ownRole(ctx.el, ROLE.answer);
   return {
     value: () => input.value,
     restore(last) {

@@ -6,7 +6,7 @@
 // browser is idle after the Python runtime has started, or at once when the
 // learner clicks, focuses or runs it: opening a chapter never waits for, or
 // stutters on, an editor nobody is looking at yet.
-import { ATTR, ROLE, RUNTIME, findRole } from "../contract.js";
+import { ATTR, ROLE, RUNTIME, ownRole } from "../contract.js";
 import { renderTests, setPending, showMessage } from "../feedback.js";
 import { runFigure } from "../run-figure.js";
 import { withSandbox } from "../sandbox-client.js";
@@ -22,7 +22,7 @@ const whenIdle = () => new Promise((resolve) => (self.requestIdleCallback ? requ
 
 /** The plain code first, the editor when it is wanted; `code()` is always the latest text. */
 function lazyEditor(ctx, host, onRun) {
-  const plain = findRole(host, ROLE.code);
+  const plain = ownRole(host, ROLE.code);
   const starter = plain.textContent;
   const saved = ctx.progress.get(ctx.id);
   let code = typeof saved.code === "string" ? saved.code : starter;
@@ -98,8 +98,8 @@ export function init(ctx) {
   }, { rootMargin: "400px 0px" });
   nearSandbox.observe(ctx.el);
   ctx.el.addEventListener("focusin", prepare, { once: true });
-  const host = findRole(ctx.el, ROLE.editor);
-  const runButton = findRole(ctx.el, ROLE.run);
+  const host = ownRole(ctx.el, ROLE.editor);
+  const runButton = ownRole(ctx.el, ROLE.run);
   const limitMs = Number(host.dataset.timeLimit || 5) * 1000;
   const editor = lazyEditor(ctx, host, () => run());
   const figure = runFigure(ctx.el);
@@ -117,7 +117,7 @@ export function init(ctx) {
     if (line) ed.markLine(line);
   }
   runButton.addEventListener("click", run);
-  findRole(ctx.el, ROLE.reset).addEventListener("click", async () => {
+  ownRole(ctx.el, ROLE.reset).addEventListener("click", async () => {
     if (window.confirm("Replace your code with the starter code? Your current code will be lost.")) {
       (await editor.open()).setCode(editor.starter);
       ctx.progress.update(ctx.id, { code: editor.starter });

@@ -1,11 +1,11 @@
 // Debug: a listbox of code lines; one line is selected at a time, by click or keyboard.
 // A correct answer's explanation comes with the symptom's figure (role "symptom",
 // drawn at build time and hidden until then), if the exercise has one.
-import { ATTR, ROLE, STATUS, findRole, findRoles } from "../contract.js";
+import { ATTR, ROLE, STATUS, ownQuery, ownRole, ownRoles } from "../contract.js";
 
 export function init(ctx) {
-  const form = ctx.el.querySelector("form");
-  const lines = findRoles(ctx.el, ROLE.line);
+  const form = ownQuery(ctx.el, "form");
+  const lines = ownRoles(ctx.el, ROLE.line);
   const number = (line) => Number(line.getAttribute(ATTR.line));
   let selected = null;
   const select = (line) => {
@@ -16,7 +16,7 @@ export function init(ctx) {
       l.tabIndex = l === line ? 0 : -1;
     }
   };
-  const symptom = findRole(ctx.el, ROLE.symptom);
+  const symptom = ownRole(ctx.el, ROLE.symptom);
   const saved = ctx.progress.get(ctx.id);
   // A review (the Practise page) starts with no line picked: the bug is to be found again.
   const restored = ctx.start == null && lines.find((l) => number(l) === Number(saved.last));

@@ -1,10 +1,10 @@
 // Design: reorder steps by the move buttons (keyboard and touch) or by drag and drop.
-import { ATTR, ROLE, byRole, findRole, findRoles } from "../contract.js";
+import { ATTR, ROLE, byRole, ownQuery, ownRole, ownRoles } from "../contract.js";
 import { showMessage } from "../feedback.js";
 
 export function init(ctx) {
-  const list = findRole(ctx.el, ROLE.steps);
-  const steps = () => findRoles(list, ROLE.step);
+  const list = ownRole(ctx.el, ROLE.steps);
+  const steps = () => ownRoles(list, ROLE.step);
   const order = () => steps().map((s) => s.getAttribute(ATTR.step));
   const saved = ctx.progress.get(ctx.id);
   const savedOrder = saved.draftOrder || saved.last;
@@ -34,7 +34,7 @@ export function init(ctx) {
     button.focus();
   });
   initDrag(list, announce);
-  ctx.el.querySelector("form").addEventListener("submit", (event) => {
+  ownQuery(ctx.el, "form").addEventListener("submit", (event) => {
     event.preventDefault();
     const answer = order();
     ctx.submit("grade", { answer }, { saved: { last: answer } });

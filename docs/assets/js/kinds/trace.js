@@ -1,11 +1,11 @@
 // Trace: one radio option; the reply explains the option picked.
-import { ROLE, findRoles } from "../contract.js";
+import { ROLE, ownQuery, ownRoles } from "../contract.js";
 
 export function init(ctx) {
-  const choices = findRoles(ctx.el, ROLE.choice);
+  const choices = ownRoles(ctx.el, ROLE.choice);
   const saved = ctx.progress.get(ctx.id);
   for (const c of choices) if (c.value === saved.last) c.checked = true;
-  ctx.el.querySelector("form").addEventListener("submit", (event) => {
+  ownQuery(ctx.el, "form").addEventListener("submit", (event) => {
     event.preventDefault();
     const answer = choices.find((c) => c.checked)?.value ?? null; // none picked: the grader says what to do
     ctx.submit("grade", { answer }, { saved: { last: answer } });
