@@ -26,7 +26,9 @@ def test_an_answer_that_follows_from_a_wrong_earlier_one_is_carried_and_links_ba
     expect(link).to_have_text("Back to exercise 9.2")
     assert link.get_attribute("href").endswith("#" + first.get_attribute("id"))
     link.click()
-    page.wait_for_url(re.compile("#" + re.escape(first.get_attribute("id")) + "$"))
+    # The address names 9.2; the theme's anchor tracking may then say its heading (…-title) instead.
+    page.wait_for_url(re.compile("#" + re.escape(first.get_attribute("id")) + "(-title)?$"))
+    expect(first).to_be_in_viewport()
 
     # an answer that follows from neither is plain wrong; the right one is still right
     assert answer_derive(later, fmt(mine.key + 1.3)) == STATE.incorrect
