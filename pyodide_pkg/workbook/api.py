@@ -92,8 +92,8 @@ def _grade(request: dict[str, Any]) -> dict[str, Any]:
     mine = request.get("steps") or {}
     if request.get("step") is not None:
         return steps.grade_step(ex, request["step"], answer, mine, chain).to_dict()
-    verdict = chains.grade(ex, answer, sent, bank.variant) if sent else ex.check(answer)
-    return steps.grade_final(ex, answer, mine, verdict, chain).to_dict() if ex.steps else verdict.to_dict()
+    verdict = chains.follow(ex, answer, ex.check(answer), chain)
+    return steps.grade_final(ex, answer, mine, verdict, chain).to_dict()
 
 
 def _run(request: dict[str, Any]) -> dict[str, Any]:

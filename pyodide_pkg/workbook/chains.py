@@ -99,8 +99,14 @@ def grade(ex: Derive, answer: object, sent: Mapping[str, Any] | None, find: Call
     verdict = ex.answer.check(answer)
     if verdict.status != "incorrect" or not sent or not ex.uses:
         return verdict
-    values, links = wrong_values(ex, sent, find)
-    if not values:
+    return follow(ex, answer, verdict, wrong_values(ex, sent, find))
+
+
+def follow(ex: Derive, answer: object, verdict: Verdict, chain: tuple[dict, dict]) -> Verdict:
+    """``verdict`` on ``answer``, or carried when it is wrong but follows from the learner's wrong
+    earlier values (``chain``: what :func:`wrong_values` found)."""
+    values, links = chain
+    if verdict.status != "incorrect" or not values:
         return verdict
     try:
         carried = ex.carried_answer(values)

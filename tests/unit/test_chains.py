@@ -15,6 +15,8 @@ import pytest
 from workbook import bank, chains
 from workbook.api import handle
 
+from moved import moved
+
 DRAWS = 200
 CHAINED = [(ex.id, link) for ex in bank.all_exercises() for link in getattr(ex, "uses", ())]
 
@@ -25,18 +27,8 @@ def test_the_chains_the_issue_names_are_declared():
 
 
 def _wrong(source, rng):
-    """A wrong answer to ``source`` as a learner types it: the key, or one entry of it, moved by 5-60 % and a little more."""
-    key = source.answer.key
-
-    def off(v):
-        return v + rng.choice((-1, 1)) * (abs(v) * rng.uniform(0.05, 0.6) + rng.uniform(0.05, 0.5))
-
-    if isinstance(key, tuple):
-        rows = [list(row) for row in key]
-        i, j = rng.randrange(len(rows)), rng.randrange(len(rows[0]))
-        rows[i][j] = off(rows[i][j])
-        return source.answer.typed(tuple(map(tuple, rows)))
-    return source.answer.typed(off(key))
+    """A wrong answer to ``source`` as a learner types it: the key, or one entry of it, moved."""
+    return source.answer.typed(moved(source.answer.key, rng))
 
 
 def _off(later, theirs):

@@ -25,6 +25,7 @@ from workbook import bank, steps
 from workbook.api import handle
 
 from exercise_text import load_all  # docs/hooks/exercise_text.py
+from moved import moved
 
 ROOT = Path(__file__).resolve().parents[2]
 DRAWS = 200
@@ -42,19 +43,6 @@ def test_enough_exercises_can_be_worked_in_steps():
     assert len(STEPPED) >= 15
     for ex in STEPPED:
         assert len(ex.steps) >= 2, f"{ex.id}: a derivation worked in steps has at least two intermediates"
-
-
-def _off(value, rng):
-    """A wrong value as a learner might reach it: one entry (or the number) moved by 5-60 % and a little more."""
-    def move(v):
-        return v + rng.choice((-1, 1)) * (abs(v) * rng.uniform(0.05, 0.6) + rng.uniform(0.05, 0.5))
-
-    if isinstance(value, tuple):
-        rows = [list(r) for r in value]
-        i, j = rng.randrange(len(rows)), rng.randrange(len(rows[0]))
-        rows[i][j] = move(rows[i][j])
-        return tuple(map(tuple, rows))
-    return move(value)
 
 
 def _grade(ex, answer, step=None, sent=None):
@@ -117,7 +105,7 @@ def test_a_wrong_step_is_carried_forward_and_named(ex):
         drawn += 1
         first, second = v.steps[0], v.steps[1]
         kind = v.step_answers[first.name]
-        wrong = _off(kind.key, rng)
+        wrong = moved(kind.key, rng)
         sent = {first.name: kind.typed(wrong)}
         try:
             carried = v.carried_steps({first.name: wrong})[second.name]
@@ -132,7 +120,7 @@ def test_a_wrong_step_is_carried_forward_and_named(ex):
         assert (said["status"], said["tag"]) == ("incorrect", "carried"), (v.seed, said)
         assert said["data"]["carried"]["step"] == first.name
         assert _grade(v, right.typed(right.key), second.name, sent)["status"] == "correct", v.seed
-        neither = _off(right.key, rng)
+        neither = moved(right.key, rng)
         if carried.check(carried.typed(neither)).status != "correct":
             plain = _grade(v, right.typed(neither), second.name, sent)
             assert plain["status"] == "incorrect" and plain["tag"] != "carried", (v.seed, plain)
@@ -146,7 +134,7 @@ def test_a_wrong_step_is_carried_forward_and_named(ex):
 def test_a_wrong_final_answer_names_the_first_step_to_look_at(ex):
     v = ex.variant(1)
     final = v.answer
-    wrong = final.typed(_off(final.key, random.Random(1)))
+    wrong = final.typed(moved(final.key, random.Random(1)))
     said = _grade(v, wrong)
     assert said["status"] == "incorrect" and said["data"]["steps"]["first"] == v.steps[0].name, said
     right_first = {v.steps[0].name: v.step_answers[v.steps[0].name].worked_text()}
