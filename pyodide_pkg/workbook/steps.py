@@ -171,7 +171,7 @@ def grade_step(ex: Derive, name: object, answer: object, sent: Mapping[str, Any]
 
 def grade_final(ex: Derive, answer: object, sent: Mapping[str, Any], verdict: Verdict,
                 chain: tuple[dict, dict] = ({}, {})) -> Verdict:
-    """The final answer's ``verdict`` (from :func:`chains.grade`) with the learner's steps: carried
+    """The final answer's ``verdict`` (from :func:`chains.follow`) with the learner's steps: carried
     when the answer follows from a wrong step; when wrong, ``data.steps`` names the step to look at."""
     if verdict.status != "incorrect" or verdict.tag == TAG.carried or not ex.steps:
         return verdict
