@@ -49,12 +49,12 @@ from typing import Any
 
 from . import bank, chains, steps
 from .build_plain import plain
-from .contract import OPS
+from .contract import LIMIT, OPS
 from .variants import VariantError, check_seed, fill
 from .verdict import GradingError, fail, ok, quote
 
 REQUEST_CAP = 2_000_000  # characters of a request (a Build program may be long)
-ANSWER_CAP = 10_000  # characters of an answer's text
+ANSWER_CAP = LIMIT.answer  # characters of an answer's text
 TEXTS_CAP = 50_000  # characters of a draw's templates
 # The type of each field a request may carry (None stands for a field left out); a figure's
 # params are the figure's to check (an error of kind "figure").
@@ -87,13 +87,8 @@ def _grade(request: dict[str, Any]) -> dict[str, Any]:
         if request.get("step") is not None or request.get("steps"):
             raise GradingError("bad-request", f"Exercise {ex.id} is a {ex.kind} exercise: it has no steps.")
         return ex.check(request.get("answer")).to_dict()
-    sent, answer = request.get("given") or {}, request.get("answer")
-    chain = chains.wrong_values(ex, sent, bank.variant) if sent and ex.uses else ({}, {})
-    mine = request.get("steps") or {}
-    if request.get("step") is not None:
-        return steps.grade_step(ex, request["step"], answer, mine, chain).to_dict()
-    verdict = chains.follow(ex, answer, ex.check(answer), chain)
-    return steps.grade_final(ex, answer, mine, verdict, chain).to_dict()
+    return ex.grade(request.get("answer"), given=request.get("given"), steps=request.get("steps"),
+                    step=request.get("step"), lookup=bank.variant).to_dict()
 
 
 def _run(request: dict[str, Any]) -> dict[str, Any]:
@@ -128,7 +123,7 @@ def _figure(request: dict[str, Any]) -> dict[str, Any]:
 def _part(request: dict[str, Any]):
     """The answer a split or read is for: the exercise's own, or one of its steps' (``step``)."""
     ex = _exercise(request, "derive")
-    return ex if request.get("step") is None else steps.answer_of(ex, request["step"])
+    return ex if request.get("step") is None else ex.step_kind(request["step"])
 
 
 def _split(request: dict[str, Any]) -> dict[str, Any]:

@@ -11,6 +11,8 @@ the repository explains each entry. The page's JavaScript imports the same file
 'data-role="move-up"'
 >>> ROLE.move_up
 'move-up'
+>>> LIMIT.variant, LIMIT.answer
+(999999, 10000)
 """
 
 from __future__ import annotations
@@ -43,6 +45,7 @@ REVIEW_KINDS: tuple[str, ...] = tuple(DATA["reviewKinds"])  # the kinds that joi
 STATUSES: tuple[str, ...] = tuple(DATA["statuses"])
 ERRORS: tuple[str, ...] = tuple(DATA["errors"])
 OPS: dict[str, dict[str, Any]] = DATA["ops"]
+LIMIT = SimpleNamespace(**{k: v for k, v in DATA["limits"].items() if not k.startswith("$")})  # shared with the page
 BUILD_FUNCTIONS: dict[str, str] = DATA["buildFunctions"]  # exercise id -> the signature the learner writes
 
 

@@ -46,13 +46,16 @@ def clean(x: float) -> float:
     return float(f"{x:.12g}")
 
 
-def agrees(value: float, key: float, rel: float = REL, exact: bool = False, half_unit: float | None = None) -> bool:
+def agrees(value: float, key: float, rel: float = REL, exact: bool = False, half_unit: float | None = None,
+           floor: float = 0.0) -> bool:
     """True when ``value`` counts as ``key``.
 
     Relative: |value − key| ≤ rel·|key|. A zero key (after :func:`clean`) takes
     |value| ≤ 1e-3 instead. ``exact`` (counts, integers): equal after cleaning.
     ``half_unit``, for a value typed to at least :data:`FIGURES` significant
     figures: half a unit of its last digit; within that of the key is right too.
+    ``floor``: an absolute tolerance from the scale of the question, for a key that
+    cancels to near zero where the question's numbers do not (a carried answer).
 
     >>> agrees(0.7071, math.sqrt(2) / 2), agrees(0.707, math.sqrt(2) / 2), agrees(0.70, math.sqrt(2) / 2)
     (True, True, False)
@@ -62,12 +65,16 @@ def agrees(value: float, key: float, rel: float = REL, exact: bool = False, half
     False
     >>> agrees(3.0000000000001, 3, exact=True), agrees(3.01, 3, exact=True)
     (True, False)
+    >>> agrees(0.0, 3e-9), agrees(0.0, 3e-9, floor=0.002)   # a key that cancels, on a scale of 2
+    (False, True)
     """
     if not (math.isfinite(value) and math.isfinite(key)):
         return False
     if exact:
         return clean(value) == clean(key)
     if half_unit is not None and abs(value - key) <= half_unit * (1 + 1e-9):
+        return True
+    if abs(value - key) <= floor:
         return True
     if abs(key) < NOISE:  # clean(key) == 0; rounding to 12 digits cannot matter at 1e-3
         return abs(value) <= ZERO_FLOOR

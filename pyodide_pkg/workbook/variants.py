@@ -27,8 +27,10 @@ from dataclasses import dataclass
 from html import escape
 from typing import Any, Callable, Iterator, Mapping
 
+from .contract import LIMIT
+
 PLACEHOLDER = re.compile(r"\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}")
-MAX_SEED = 999_999
+MAX_SEED = LIMIT.variant  # the largest variant number (contract.json, limits)
 TRIES = 400
 
 

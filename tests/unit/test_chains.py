@@ -50,8 +50,8 @@ def _nothing_carried_into(later, link, rng):
         typed = _wrong(source, rng)
         value = chains.value_of(source.answer.reader.read(source.answer, typed))
         theirs = later.carried_answer({link.name: value})
-        verdict = chains.grade(later, theirs.typed(theirs.key), {link.source: {"answer": typed, "variant": at}},
-                               bank.variant)
+        verdict = later.grade(theirs.typed(theirs.key), given={link.source: {"answer": typed, "variant": at}},
+                              lookup=bank.variant)
         assert verdict.tag != "carried", (later.id, later.seed, at)
 
 
@@ -74,18 +74,18 @@ def test_a_wrong_earlier_value_is_carried_forward(exercise_id, link):
         follows = theirs.typed(theirs.key)
         right = later.answer.typed(later.answer.key)
 
-        assert chains.grade(later, right, given, bank.variant).status == "correct", (n, right)
-        off = chains.grade(later, _off(later, theirs), given, bank.variant)
+        assert later.grade(right, given=given, lookup=bank.variant).status == "correct", (n, right)
+        off = later.grade(_off(later, theirs), given=given, lookup=bank.variant)
         assert off.status == "incorrect" and off.tag != "carried", (n, off)
         if later.answer.check(follows).status == "correct":
             continue  # this wrong value happens to change nothing downstream
-        verdict = chains.grade(later, follows, given, bank.variant)
+        verdict = later.grade(follows, given=given, lookup=bank.variant)
         assert (verdict.status, verdict.tag) == ("incorrect", "carried"), (n, typed, follows, verdict)
         assert verdict.data["carried"]["from"] == link.source and verdict.data["carried"]["variant"] == at
         assert link.source in verdict.message
         # the same value given for another variant of the source is not this draw's chain
         elsewhere = {link.source: {"answer": typed, "variant": at + 1}}
-        assert chains.grade(later, follows, elsewhere, bank.variant).tag != "carried"
+        assert later.grade(follows, given=elsewhere, lookup=bank.variant).tag != "carried"
         carried += 1
     assert carried >= DRAWS * 0.95
 
@@ -95,7 +95,7 @@ def test_a_right_earlier_answer_carries_nothing():
     right = bank.get("9.4").answer
     given = {"9.4": {"answer": right.typed(right.key), "variant": 0}}
     mine = later.carried_answer({"xu": 6.0})
-    assert chains.grade(later, mine.typed(mine.key), given, bank.variant).tag != "carried"
+    assert later.grade(mine.typed(mine.key), given=given, lookup=bank.variant).tag != "carried"
 
 
 def test_the_grade_request_carries_the_earlier_answers():

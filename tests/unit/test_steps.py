@@ -21,7 +21,7 @@ from pathlib import Path
 
 import pytest
 
-from workbook import bank, steps
+from workbook import bank, chains, steps
 from workbook.api import handle
 
 from exercise_text import load_all  # docs/hooks/exercise_text.py
@@ -87,7 +87,8 @@ def test_the_derivation_prints_each_step_and_the_step_accepts_it(ex):
 def test_the_steps_chain_to_the_final_key(ex):
     for v in _variants(ex):
         typed = {s.name: v.step_answers[s.name].worked_text() for s in v.steps}
-        read = {s.name: steps._status(v.step_answers[s.name], typed[s.name])[1] for s in v.steps}
+        read = {s.name: chains.value_of(v.step_answers[s.name].reader.read(v.step_answers[s.name], typed[s.name]))
+                for s in v.steps}
         final = v.carried_answer(read)
         assert final.check(v.answer.typed(v.answer.key)).status == "correct", (v.seed, "printed steps, final key")
         later = v.carried_steps(read)

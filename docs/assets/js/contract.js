@@ -16,6 +16,8 @@ export const BOOT_PHASE = names(contract.bootPhases);
 export const KINDS = Object.freeze([...contract.kinds]);
 export const ANSWER_KINDS = Object.freeze([...contract.answerKinds]);
 export const REVIEW_KINDS = Object.freeze([...contract.reviewKinds]); // the kinds that join the review queue
+/** Numbers the grader enforces too: the largest variant, steps and earlier answers a request carries, an entry's characters. */
+export const LIMIT = Object.freeze(Object.fromEntries(Object.entries(contract.limits).filter(([k]) => !k.startsWith("$"))));
 
 /** `[data-role="NAME"]`, optionally with more attribute tests. */
 export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;

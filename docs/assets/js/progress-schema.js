@@ -14,6 +14,7 @@
 // A new field needs one line in FIELDS with its check and its rule; a new list
 // of variants merges as a union without new code.
 
+import { LIMIT } from "./contract.js";
 import { KEEP, TOP_BOX, migrateRecord } from "./review.js";
 
 export const SCHEMA_VERSION = 4;
@@ -23,7 +24,7 @@ export const EXPORT_FORMAT = "robotics-math-workbook-progress";
 export const MAX_IMPORT_BYTES = 32_000_000;
 
 const DAY_MS = 86_400_000;
-const MAX_VARIANT = 999_999;
+const MAX_VARIANT = LIMIT.variant;
 const isBool = (v) => typeof v === "boolean";
 const isText = (v) => typeof v === "string";
 const isKeyList = (v) => Array.isArray(v) && v.length <= 50 && v.every((k) => isText(k) && k.length <= 200);
@@ -45,9 +46,9 @@ const isStepVerdict = (v) => isObject(v) && Object.keys(v).every((k) => ["answer
   && (v.message === undefined || isShort(v.message, 2000)) && (v.carried === undefined || isCarriedLink(v.carried));
 /** The checked steps on screen: {variant, steps: {NAME: {answer, status, tag, message, carried}}} (null: cleared by new numbers). */
 const isStepWork = (v) => v === null || (isObject(v) && Object.keys(v).every((k) => k === "variant" || k === "steps")
-  && isVariant(v.variant) && isObject(v.steps) && Object.keys(v.steps).length <= 12
+  && isVariant(v.variant) && isObject(v.steps) && Object.keys(v.steps).length <= LIMIT.steps
   && Object.entries(v.steps).every(([name, step]) => STEP_NAME.test(name) && !FORBIDDEN_KEYS.has(name) && isStepVerdict(step)));
-const VARIANTS = { check: isVariantList, says: `a list of at most ${KEEP} variant numbers (0 to 999,999)`, merge: "union" };
+const VARIANTS = { check: isVariantList, says: `a list of at most ${KEEP} variant numbers (0 to ${MAX_VARIANT.toLocaleString("en-US")})`, merge: "union" };
 const TIME = "a time (milliseconds since 1970) not in the future";
 
 export const FIELDS = {
@@ -63,7 +64,7 @@ export const FIELDS = {
   draftOrder: { check: isKeyList, says: "a list of step keys", merge: "latest" },
   code: { check: isText, says: "text", merge: "latest" },
   updated: { check: notFuture, says: TIME, merge: "max" },
-  variant: { check: isVariant, says: "a variant number from 0 to 999,999", merge: "latest" },
+  variant: { check: isVariant, says: `a variant number from 0 to ${MAX_VARIANT.toLocaleString("en-US")}`, merge: "latest" },
   done: VARIANTS,
   clean: VARIANTS,
   missed: VARIANTS,

@@ -19,8 +19,12 @@
 // keeps the exercise in its box (box 1 if it had none). An exercise is due INTERVAL_MS[box]
 // after its last move: box 1 after 10 minutes, then 1, 3, 8 and 21 days.
 
+import { TAG } from "./contract.js";
+
 export const MASTERED = 3;
 const MINUTE = 60_000;
+// Tags of an answer that points back to the learner's own wrong earlier value (carried, or left undefined by it).
+const BACK_TO_EARLIER = [TAG.carried, TAG.undefined];
 const DAY = 86_400_000;
 export const INTERVAL_MS = [0, 10 * MINUTE, DAY, 3 * DAY, 8 * DAY, 21 * DAY];
 export const TOP_BOX = INTERVAL_MS.length - 1;
@@ -40,7 +44,7 @@ const first = (record, v) => !has(record.done, v) && !has(record.missed, v);
  * `carried` and moves nothing in the review queue.
  */
 export function afterGrade(record, v, status, { schedule = true, now = Date.now(), tag = "" } = {}) {
-  if (status === "incorrect" && tag === "carried") return { carried: add(record.carried, v) };
+  if (status === "incorrect" && BACK_TO_EARLIER.includes(tag)) return { carried: add(record.carried, v) };
   const patch = {};
   if (status === "correct") {
     const helped = has(record.stepped, v) && !has(record.revealedIn, v);
@@ -63,7 +67,7 @@ export function afterGrade(record, v, status, { schedule = true, now = Date.now(
  */
 export function afterStep(record, v, status, tag = "") {
   if (status !== "correct" && status !== "incorrect") return {};
-  return { stepped: add(record.stepped, v), ...(tag === "carried" ? { carried: add(record.carried, v) } : {}) };
+  return { stepped: add(record.stepped, v), ...(BACK_TO_EARLIER.includes(tag) ? { carried: add(record.carried, v) } : {}) };
 }
 
 /** The progress patch for opening variant `v`'s derivation. */

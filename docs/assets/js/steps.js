@@ -7,8 +7,8 @@
 // The steps on screen, with their verdicts, are kept in the progress record
 // (stepWork) for the variant on screen; new numbers clear them.
 
-import { ATTR, ROLE, STATE, STATUS, TAG, findRoles, ownQuery, ownRole } from "./contract.js";
-import { showCarried as showCarriedFrom } from "./carry.js";
+import { ATTR, ROLE, STATE, STATUS, findRoles, ownQuery, ownRole } from "./contract.js";
+import { backTo, showCarried as showCarriedFrom } from "./carry.js";
 import { feedbackOf, setPending, showReply } from "./feedback.js";
 import { firstControl } from "./jump.js";
 import { afterStep } from "./review.js";
@@ -127,7 +127,7 @@ class Steps {
    */
   showCarried(el, reply) {
     if (el !== this.ctx.el) showCarriedFrom(el, reply);
-    const carried = reply.ok && reply.value.tag === TAG.carried ? reply.value.data?.carried : null;
+    const carried = backTo(reply);
     if (!carried?.step) return false;
     if (el !== this.ctx.el) el.setAttribute(ATTR.carried, carried.step); // an exercise's data-carried names an exercise
     const p = document.createElement("p");
@@ -141,7 +141,7 @@ class Steps {
     const variant = ctx.variant ?? 0;
     const record = ctx.progress.get(ctx.id);
     const kept = record.stepWork?.variant === variant ? record.stepWork.steps : {};
-    const carried = verdict.tag === TAG.carried ? verdict.data?.carried : undefined;
+    const carried = backTo({ ok: true, value: verdict }) ?? undefined;
     const step = { answer, status: verdict.status, message: verdict.message, ...(verdict.tag ? { tag: verdict.tag } : {}),
       ...(carried ? { carried } : {}) };
     // The Practise page (ctx.start) shows its own numbers: the chapter's steps on screen stay as they were.

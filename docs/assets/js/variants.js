@@ -5,13 +5,13 @@
 // complete). The variant on screen is in the address (?variant=0.4-1234), so a
 // link opens exactly it, and in the progress record, so a reload keeps it.
 
-import { ATTR, ROLE, STATE, ownQuery, ownRole } from "./contract.js";
+import { ATTR, LIMIT, ROLE, STATE, ownQuery, ownRole } from "./contract.js";
 import { decodeBase64 } from "./exercise.js";
 import { showMessage } from "./feedback.js";
 import { retitle } from "./jump.js";
 
 const PARAM = "variant";
-export const MAX_VARIANT = 999_999;
+export const MAX_VARIANT = LIMIT.variant;
 
 const encode = (text) => btoa(Array.from(new TextEncoder().encode(text), (b) => String.fromCharCode(b)).join(""));
 
@@ -167,7 +167,7 @@ export async function initVariants(ctx, { start = null } = {}) {
   if (bad !== null) {
     const now = ctx.variant ? "the numbers you had here last time are shown" : "the workbook's numbers are shown";
     showMessage(el, `This page's address asks for numbers ${quote(bad.slice(bad.lastIndexOf("-") + 1))} for this exercise, `
-      + `but a set of numbers is a whole number from 1 to 999,999 (as in “variant=${ctx.id}-1234”): ${now}.`);
+      + `but a set of numbers is a whole number from 1 to ${MAX_VARIANT.toLocaleString("en-US")} (as in “variant=${ctx.id}-1234”): ${now}.`);
   }
   return shown;
 }

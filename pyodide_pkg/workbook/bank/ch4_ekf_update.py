@@ -9,6 +9,7 @@ from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fixed, fmt, paren, relation, shown
+from ..reference.domain import bearing_of
 from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
 from ..variants import Param, Vary
 from .. import chains
@@ -118,7 +119,7 @@ def _predicted_bearing(p, given=None):
     in steps d and atan2(dy, dx) in radians."""
     s = _sighting(p)
     (dx, dy), offset = _offset(p, s, given)
-    phi = range_bearing((0, 0, 0), (dx, dy))[1]
+    phi = bearing_of(dx, dy)  # the learner's own offset may be (0, 0): then no bearing is defined
     turn = 2 * math.pi
     slips = [Slip(math.atan2(dx, dy), "The arguments are swapped. atan2 takes (dy, dx): the angle is measured "
                                       "from the x-axis.")]

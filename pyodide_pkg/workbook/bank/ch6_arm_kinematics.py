@@ -19,6 +19,7 @@ from ..reference.arm import (
     inverse_kinematics_2link,
     is_reachable,
 )
+from ..reference.domain import Undefined
 from ..variants import Choice, Param, Vary
 from .. import chains
 from ..steps import Step
@@ -122,6 +123,9 @@ def _elbow_share(theta2):
     """The angle (radians) the elbow adds to the shoulder's, atan2(L2 sin θ2, L1 + L2 cos θ2) for unit
     links: the direction of the tip when link 1 lies along x."""
     x, y = forward_kinematics_2link(1, 1, 0, theta2)
+    if math.hypot(x, y) < 1e-9:  # a learner's θ2 = ±180°: link 2 folded back onto link 1
+        raise Undefined("with θ2 = ±180° link 2 folds back onto link 1 and the tip sits on the base, "
+                        "so no θ1 reaches the target")
     return math.atan2(y, x)
 
 

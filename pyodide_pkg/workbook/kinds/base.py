@@ -54,12 +54,4 @@ class Exercise:
         return ""
 
 
-def check_button() -> str:
-    return f'<button type="submit" class="md-button md-button--primary wb-check" {role_attr(ROLE.check)}>Check</button>'
-
-
-def form(kind: str, inner: str) -> str:
-    return f'<form class="wb-form wb-{kind}" novalidate>{inner}</form>'
-
-
-__all__ = ["ATTR", "Callable", "Exercise", "Page", "PlainPage", "ROLE", "check_button", "escape", "form", "role_attr"]
+__all__ = ["ATTR", "Callable", "Exercise", "Page", "PlainPage", "ROLE", "escape", "role_attr"]

@@ -14,15 +14,16 @@ neither the exercise nor its answer kind has fails the build with the id.
 from __future__ import annotations
 
 from dataclasses import dataclass, field, replace
-from typing import Any, ClassVar, Mapping
+from typing import Any, Callable, ClassVar, Mapping
 
 from ..answer_kinds.base import AnswerKind, AnswerSpec
 from ..contract import ATTR
+from .. import carried
 from .. import steps as stepwise
 from ..chains import Uses
 from ..number_format import fmt
 from ..variants import VariantError, Vary, check_seed
-from ..verdict import Verdict
+from ..verdict import GradingError, Verdict, quote
 from .base import Exercise
 
 WORKED = "worked"  # the placeholder the answer kind fills: the Answer line's value, in TeX
@@ -129,6 +130,27 @@ class Derive(Exercise):
     def check(self, answer: object) -> Verdict:
         return self.answer.check(answer)
 
+    def grade(self, answer: object, given: Mapping[str, Any] | None = None, steps: Mapping[str, Any] | None = None,
+              step: str | None = None, lookup: Callable[[str, int], "Derive"] | None = None) -> Verdict:
+        """The verdict on ``answer`` to this exercise, or to its step ``step``, with error carried
+        forward (:mod:`workbook.carried`) from the learner's answers to the earlier exercises it
+        builds on (``given``: {ID: {answer, variant}}, found with ``lookup(id, seed)``) and to its
+        steps (``steps``: {name: answer})."""
+        if step is not None:
+            self.step_kind(step)  # a step it has, or a bad-request
+        if given and lookup is None:
+            raise ValueError("grading with the learner's earlier answers needs lookup(id, seed)")
+        return carried.grade(self, answer, given or {}, steps or {}, step, lookup or _no_lookup)
+
+    def step_kind(self, name: object) -> AnswerKind:
+        """Step ``name``'s answer kind; a ``bad-request`` naming the exercise's steps when it has none such."""
+        if isinstance(name, str) and name in self.step_answers:
+            return self.step_answers[name]
+        if not self.steps:
+            raise GradingError("bad-request", f"Exercise {self.id} has no steps.")
+        raise GradingError("bad-request", f"Exercise {self.id} has no step {quote(name)} "
+                           f"(its steps: {', '.join(s.name for s in self.steps)}).")
+
     def read(self, answer: object) -> dict:
         return self.answer.read(answer)
 
@@ -146,6 +168,10 @@ class Derive(Exercise):
 
     def widget(self, base: str, page: Any) -> str:
         return self.answer.widget(base, page)
+
+
+def _no_lookup(exercise_id: str, seed: int) -> Derive:
+    raise KeyError(exercise_id)
 
 
 EXERCISE = Derive

@@ -6,7 +6,8 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from ..verdict import Verdict
-from .base import ATTR, ROLE, Exercise, Page, check_button, escape, form, role_attr
+from .base import ATTR, ROLE, Exercise, Page, escape, role_attr
+from ..markup import check_button, form
 
 
 @dataclass(frozen=True)

@@ -7,7 +7,8 @@ from typing import ClassVar
 
 from ..contract import TAG
 from ..verdict import Verdict
-from .base import ROLE, Exercise, Page, check_button, escape, form, role_attr
+from .base import ROLE, Exercise, Page, escape, role_attr
+from ..markup import check_button, form
 
 
 @dataclass(frozen=True)

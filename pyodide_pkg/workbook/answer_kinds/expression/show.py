@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from ...contract import ATTR, ROLE, role_attr
 from ...expr import parse_formula
 from ...expr.latex_output import variable_latex
-from ...kinds.base import check_button, form
+from ...markup import check_button, form
 
 if TYPE_CHECKING:
     from . import FormulaAnswer

@@ -6,7 +6,7 @@ from html import escape
 from typing import TYPE_CHECKING
 
 from ...contract import ATTR, ROLE, role_attr
-from ...kinds.base import check_button, form
+from ...markup import check_button, form
 from ...number_format import fmt
 from ...tolerance import clean
 

@@ -6,7 +6,7 @@ from html import escape
 from typing import TYPE_CHECKING, Any
 
 from ...contract import ROLE, role_attr
-from ...kinds.base import check_button, form
+from ...markup import check_button, form
 from ...number_format import fmt
 from ...tolerance import clean
 
