@@ -238,7 +238,13 @@ def _follows_from(ex: Worked, step: str | None, answer: object, values: list[Val
                 return v
         except (ArithmeticError, ValueError, TypeError, KeyError):
             return v
-    return wrong[-1]
+    right = values
+    for v in wrong:
+        right = v.corrected(right)
+    try:  # no one value is needed: the answer follows from them together, or from none (it is near the key)
+        return None if _follows(ex, step, answer, right) else wrong[-1]
+    except (ArithmeticError, ValueError, TypeError, KeyError):
+        return wrong[-1]
 
 
 # ---- the verdicts ------------------------------------------------------------------------------------

@@ -18,7 +18,7 @@ from carried_probe import grade, read, variants
 
 @pytest.fixture(scope="module")
 def counts():
-    return carried_probe.run()
+    return carried_probe.run(draws=40)  # `python tests/unit/carried_probe.py` runs 200 of each
 
 
 @pytest.mark.parametrize("what", ["wrong place", "ignores a typed step", "undefined earns carried",
@@ -28,13 +28,13 @@ def test_no_verdict_is_untrue(counts, what):
 
 
 def test_the_probes_check_enough(counts):
-    assert counts["checked: two wrong steps"] >= 1000
-    assert counts["checked: a step that follows a wrong one"] >= 1000
-    assert counts["checked: right step after a wrong one"] >= 300
-    assert counts["checked: carried from an earlier exercise"] >= 300
-    assert counts["checked: a step carried from an earlier exercise"] >= 200
-    assert counts["checked: a chain of chains"] >= 150
-    assert counts["checked: undefined values"] >= 100
+    assert counts["checked: two wrong steps"] >= 300
+    assert counts["checked: a step that follows a wrong one"] >= 300
+    assert counts["checked: right step after a wrong one"] >= 100
+    assert counts["checked: carried from an earlier exercise"] >= 100
+    assert counts["checked: a step carried from an earlier exercise"] >= 50
+    assert counts["checked: a chain of chains"] >= 30
+    assert counts["checked: undefined values"] >= 30
 
 
 def test_the_learners_own_step_is_the_learners():
