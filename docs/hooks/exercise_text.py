@@ -15,6 +15,7 @@ from pathlib import Path
 from typing import Callable
 
 from blocks import ExerciseBlock, parse
+from workbook import bank
 from workbook.variants import fill, placeholders
 
 PARTS = ("prompt", "hint", "solution")
@@ -42,11 +43,27 @@ class ExerciseText:
         return asdict(self)
 
 
-def text_of(block: ExerciseBlock, title: str, convert: Callable[[str], str]) -> ExerciseText:
+SOLUTION_CODE = "{{solution_code}}"  # where a Build exercise's derivation shows the bank's model solution
+
+
+def source_of(block: ExerciseBlock, code: str | None = None) -> dict[str, str]:
+    """The block's parts as Markdown; for a Build exercise (``code``: the bank's model solution),
+    the derivation's ``{{solution_code}}`` line becomes that code, so the page shows what the tests pass."""
+    parts = {part: block.text(part) for part in PARTS}
+    if code is not None:
+        if parts["solution"].count(SOLUTION_CODE) != 1:
+            raise ValueError(f"exercise {block.id}: a Build exercise's derivation shows its model solution "
+                             f"once, with a line {SOLUTION_CODE} (filled from the bank)")
+        parts["solution"] = parts["solution"].replace(SOLUTION_CODE, f"```python\n{code.rstrip()}\n```")
+    return parts
+
+
+def text_of(block: ExerciseBlock, title: str, convert: Callable[[str], str], code: str | None = None) -> ExerciseText:
     """Convert one block's parts; a placeholder lost in conversion is an error."""
-    parts = {part: convert(block.text(part)) for part in PARTS}
+    source = source_of(block, code)
+    parts = {part: convert(source[part]) for part in PARTS}
     for part in PARTS:
-        asked, kept = placeholders(block.text(part)), placeholders(parts[part])
+        asked, kept = placeholders(source[part]), placeholders(parts[part])
         if sorted(asked) != sorted(kept):
             lost = sorted(set(asked) - set(kept))
             raise ValueError(f"exercise {block.id}: the {part}'s placeholder(s) {lost} did not survive Markdown")
@@ -68,5 +85,6 @@ def load_all(root: Path) -> dict[str, ExerciseText]:
     for path in sorted((root / "docs").rglob("*.md")):
         for block in parse(path.read_text(encoding="utf-8"), str(path)):
             if isinstance(block, ExerciseBlock):
-                found[block.id] = text_of(block, block.title, convert)
+                ex = bank.get(block.id)
+                found[block.id] = text_of(block, block.title, convert, code=ex.solution if ex.kind == "build" else None)
     return found

@@ -94,7 +94,7 @@ def _exercise(state: BuildState, block: ExerciseBlock, path: str) -> tuple[str, 
         raise PluginError(f"{path}: exercise {block.id} is placed twice (also in {state.placed[block.id]})")
     state.placed[block.id] = path
     try:
-        text = text_of(block, block.title, state.convert)
+        text = text_of(block, block.title, state.convert, code=ex.solution if ex.kind == "build" else None)
     except ValueError as err:
         raise PluginError(f"{path}: {err}") from None
     values = getattr(ex, "values", {})

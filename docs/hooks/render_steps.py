@@ -15,7 +15,7 @@ from html import escape
 from typing import Any
 
 from workbook.contract import ATTR, ROLE, STATE, role_attr
-from workbook.kinds.base import check_button
+from workbook.markup import check_button
 
 
 def step_base(base: str, name: str) -> str:

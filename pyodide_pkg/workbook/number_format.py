@@ -171,6 +171,37 @@ def fixed(x: float, places: int) -> str:
     return s.lstrip("-") if float(s) == 0 else s
 
 
+def readout(x: float, places: int = 3) -> str:
+    """A live figure's readout: exactly ``places`` decimals (the digits stay put as a slider
+    moves), a true minus sign, never "−0.000".
+
+    >>> readout(-0.00001), readout(-1.5), readout(2, 1)
+    ('0.000', '−1.500', '2.0')
+    """
+    return fixed(x, places).replace("-", "\u2212")
+
+
+def readout_vector(values, places: int = 3) -> str:
+    """A tuple of readouts: ``(1.000, −0.500)``.
+
+    >>> readout_vector([1, -0.5])
+    '(1.000, −0.500)'
+    """
+    return "(" + ", ".join(readout(v, places) for v in values) + ")"
+
+
+def readout_matrix(rows, places: int = 3) -> str:
+    """A matrix of readouts, one row per line, columns aligned.
+
+    >>> print(readout_matrix([[1, -0.5], [0, 2]]))
+     1.000  −0.500
+     0.000   2.000
+    """
+    cells = [[readout(v, places) for v in row] for row in rows]
+    width = max(len(c) for row in cells for c in row)
+    return "\n".join("  ".join(c.rjust(width) for c in row) for row in cells)
+
+
 def pi_frac(degrees: float, tex: bool = True) -> str:
     """An angle of whole degrees as a fraction of π: TeX (``\\pi/6``) or text (``π/6``).
 

@@ -29,6 +29,7 @@ from workbook.kinds.trace import Trace
 from workbook.variants import fill
 
 from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
+from exercise_text import source_of  # docs/hooks/exercise_text.py
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "golden"))
 from transcript import SLIP_TEXTS  # noqa: E402  (each formula slip typed as a learner would)
@@ -53,9 +54,12 @@ def page_blocks():
         for block in parse(page.read_text(), page.name):
             if isinstance(block, ExerciseBlock):
                 assert block.id not in blocks, f"{block.id} placed twice"
-                values = getattr(bank.get(block.id), "values", {})  # variant 0's numbers in the {{name}} places
+                ex = bank.get(block.id)
+                values = getattr(ex, "values", {})  # variant 0's numbers in the {{name}} places
+                source = source_of(block, ex.solution if ex.kind == "build" else None)  # as the build shows it
                 blocks[block.id] = {"page": page.name, "title": fill(block.title, values, html=False),
-                                    **{k: fill(block.text(k), values, html=False) for k in block.parts}}
+                                    "written": block.text("solution"),
+                                    **{k: fill(source[k], values, html=False) for k in block.parts}}
     return blocks
 
 
@@ -279,8 +283,9 @@ def test_build_solution_passes_and_starter_fails(ex: Build):
     starter = run_build(ex, ex.starter)
     assert starter.status == "incorrect"
     assert any(not row["passed"] for row in starter.data["tests"])
+    assert "```" not in BLOCKS[ex.id]["written"], f"{ex.id}: the page writes code of its own; show the bank's with {{{{solution_code}}}}"
     page_solution = re.search(r"```python\n(.*?)```", BLOCKS[ex.id]["solution"], re.S)
-    assert page_solution, f"{ex.id}: the page shows no Python solution"
+    assert page_solution and page_solution.group(1).strip() == ex.solution.strip(), f"{ex.id}: the page shows no Python solution"
     assert run_build(ex, page_solution.group(1)).status == "correct", f"{ex.id}: the page's solution fails"
 
 

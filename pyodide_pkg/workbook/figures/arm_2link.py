@@ -8,7 +8,8 @@ import math
 
 from ..reference.arm import forward_kinematics_2link, inverse_kinematics_2link, is_reachable
 from . import Control, Figure, Readout
-from .svg import Canvas, num, vec
+from ..number_format import readout, readout_vector
+from .svg import Canvas
 
 L1, L2 = 1.0, 0.6
 
@@ -26,7 +27,7 @@ def angles_text(pair) -> str:
     >>> angles_text((0.0, math.pi / 2))
     'θ1 = 0.0°, θ2 = 90.0°'
     """
-    return f"θ1 = {num(math.degrees(pair[0]), 1)}°, θ2 = {num(math.degrees(pair[1]), 1)}°"
+    return f"θ1 = {readout(math.degrees(pair[0]), 1)}°, θ2 = {readout(math.degrees(pair[1]), 1)}°"
 
 
 def draw(p: dict[str, float]) -> dict:
@@ -50,10 +51,10 @@ def draw(p: dict[str, float]) -> dict:
         for pair, name in ((sol.elbow_up, "up"), (sol.elbow_down, "down")):
             c.tag((L1 * math.cos(pair[0]), L1 * math.sin(pair[0])), name, "wb-fig-label wb-fig-small wb-fig-muted")
         up, down = angles_text(sol.elbow_up), angles_text(sol.elbow_down)
-        reach = f"reachable: r = {num(math.hypot(tx, ty))} m is within [{inner:g}, {outer:g}] m"
+        reach = f"reachable: r = {readout(math.hypot(tx, ty))} m is within [{inner:g}, {outer:g}] m"
     else:
         up = down = "none"
-        reach = f"unreachable: r = {num(math.hypot(tx, ty))} m is outside [{inner:g}, {outer:g}] m"
+        reach = f"unreachable: r = {readout(math.hypot(tx, ty))} m is outside [{inner:g}, {outer:g}] m"
     _arm(c, t1, t2, "wb-fig-a wb-fig-thick", 6)
     tip = forward_kinematics_2link(L1, L2, t1, t2)
     c.dot(tip, 5, "wb-fig-a wb-fig-solid")
@@ -67,7 +68,7 @@ def draw(p: dict[str, float]) -> dict:
     svg = c.svg(f"Two-link arm at θ1 = {p['theta1']:g}°, θ2 = {p['theta2']:g}°; target ({tx:g}, {ty:g}) is "
                 + ("reachable" if reachable else "out of reach"))
     return {"svg": svg, "flags": flags, "readouts": {
-        "tip": vec(tip),
+        "tip": readout_vector(tip),
         "reach": reach,
         "elbow_up": up,
         "elbow_down": down,

@@ -16,7 +16,8 @@ from ..reference.ekf import covariance_ellipse, ekf_predict, ekf_update_matrix, 
 from ..reference.ekf import motion_model
 from ..reference.pose_graph import wrap_angle
 from . import Control, Figure, Readout
-from .svg import Canvas, num
+from ..number_format import readout
+from .svg import Canvas
 
 WAYPOINTS = ((3.0, 0.0), (3.0, 3.0), (0.0, 3.0), (0.0, 0.0))
 LANDMARKS = ((1.5, -1.0), (4.3, 1.5), (1.5, 4.1), (-1.1, 1.5))
@@ -103,7 +104,7 @@ def pose_text(pose) -> str:
     >>> pose_text((1, 2, math.pi))
     '(1.000, 2.000, 180.0°)'
     """
-    return f"({num(pose[0])}, {num(pose[1])}, {num(math.degrees(pose[2]), 1)}°)"
+    return f"({readout(pose[0])}, {readout(pose[1])}, {readout(math.degrees(pose[2]), 1)}°)"
 
 
 def draw(p: dict[str, float]) -> dict:
@@ -134,13 +135,13 @@ def draw(p: dict[str, float]) -> dict:
     target = (f"waypoint {now.waypoint + 1} of {len(WAYPOINTS)}" if now.waypoint < len(WAYPOINTS)
               else "all waypoints reached")
     svg = c.svg(f"Step {k}: true pose {pose_text(now.true)}, estimate {pose_text(now.estimate)}, "
-                f"error {error:.2f} m")
+                f"error {readout(error, 2)} m")
     return {"svg": svg, "readouts": {
-        "time": f"{num(k * DT, 1)} s",
+        "time": f"{readout(k * DT, 1)} s",
         "true": pose_text(now.true),
         "estimate": pose_text(now.estimate),
-        "error": f"{num(error)} m",
-        "sigma": f"σx = {num(sx)} m, σy = {num(sy)} m",
+        "error": f"{readout(error)} m",
+        "sigma": f"σx = {readout(sx)} m, σy = {readout(sy)} m",
         "sighted": f"{len(now.sighted)} landmark{'s' if len(now.sighted) != 1 else ''}; steering to {target}"
                    if now.sighted else f"none; steering to {target}",
     }}

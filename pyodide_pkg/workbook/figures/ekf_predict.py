@@ -7,7 +7,8 @@ import math
 
 from ..reference.ekf import covariance_ellipse, ekf_predict
 from . import Control, Figure, Readout
-from .svg import Canvas, matrix, num
+from ..number_format import readout, readout_matrix
+from .svg import Canvas
 
 P0 = [[0.05 ** 2, 0.0, 0.0], [0.0, 0.05 ** 2, 0.0], [0.0, 0.0, math.radians(1) ** 2]]
 
@@ -68,12 +69,12 @@ def draw(p: dict[str, float]) -> dict:
     c.arrow((x, y), (x + 0.6 * math.cos(th), y + 0.6 * math.sin(th)), "wb-fig-a wb-fig-thick")
     c.tag((0, 0), "start", "wb-fig-label wb-fig-small")
     a, b, _ = ellipses[-1]
-    svg = c.svg(f"{last} predict steps: the robot ends at ({x:.2f}, {y:.2f}) and its 1σ ellipse is "
-                f"{a:.2f} m by {b:.2f} m")
+    svg = c.svg(f"{last} predict steps: the robot ends at ({readout(x, 2)}, {readout(y, 2)}) and its 1σ ellipse is "
+                f"{readout(a, 2)} m by {readout(b, 2)} m")
     return {"svg": svg, "readouts": {
-        "pose": f"({num(x)}, {num(y)}, {num(math.degrees(th), 1)}°)",
-        "P": matrix(Ps[-1], 4),
-        "ellipse": f"{num(a)} m × {num(b)} m",
+        "pose": f"({readout(x)}, {readout(y)}, {readout(math.degrees(th), 1)}°)",
+        "P": readout_matrix(Ps[-1], 4),
+        "ellipse": f"{readout(a)} m × {readout(b)} m",
     }}
 
 

@@ -9,7 +9,8 @@ from ..reference.ekf import (covariance_ellipse, ekf_update_matrix, kalman_gain,
                              range_bearing)
 from ..reference.pose_graph import wrap_angle
 from . import Control, Figure, Readout
-from .svg import Canvas, matrix, num
+from ..number_format import readout, readout_matrix
+from .svg import Canvas
 
 PREDICTED = (2.0, 1.0, math.radians(30))
 TRUE_POSE = (2.4, 0.7, math.radians(27))
@@ -66,12 +67,12 @@ def draw(p: dict[str, float]) -> dict:
     c.text(x_post[:2], "x⁺", "wb-fig-label wb-fig-b", dx=-14, dy=-12)
     shrink = math.sqrt((post[0] * post[1]) / (prior[0] * prior[1]))
     svg = c.svg(f"The update moves the estimate from x⁻ toward the true pose and shrinks its ellipse to "
-                f"{shrink:.0%} of its linear size")
+                f"{readout(100 * shrink, 0)}% of its linear size")
     return {"svg": svg, "readouts": {
-        "K": matrix(K),
-        "innovation": f"({num(z[0] - h[0])} m, {num(math.degrees(z[1] - h[1]), 2)}°)",
-        "posterior": f"({num(x_post[0])}, {num(x_post[1])}, {num(math.degrees(x_post[2]), 2)}°)",
-        "ellipses": f"{num(prior[0], 2)} × {num(prior[1], 2)} m → {num(post[0], 2)} × {num(post[1], 2)} m",
+        "K": readout_matrix(K),
+        "innovation": f"({readout(z[0] - h[0])} m, {readout(math.degrees(z[1] - h[1]), 2)}°)",
+        "posterior": f"({readout(x_post[0])}, {readout(x_post[1])}, {readout(math.degrees(x_post[2]), 2)}°)",
+        "ellipses": f"{readout(prior[0], 2)} × {readout(prior[1], 2)} m → {readout(post[0], 2)} × {readout(post[1], 2)} m",
     }}
 
 

@@ -12,7 +12,8 @@ import math
 from ..reference.linalg import matvec
 from ..reference.rotation3d import euler_zyx, gimbal_lock_angle, gimbal_locked, quat_from_matrix
 from . import Control, Figure, Readout
-from .svg import Canvas, matrix, num, vec
+from ..number_format import readout, readout_matrix, readout_vector
+from .svg import Canvas
 
 AZIMUTH, ELEVATION = math.radians(35), math.radians(22)
 RIGHT = (-math.sin(AZIMUTH), math.cos(AZIMUTH), 0.0)
@@ -68,13 +69,13 @@ def draw(p: dict[str, float]) -> dict:
     if locked:
         psi = gimbal_lock_angle(yaw, 1 if pitch > 0 else -1, roll)
         combo = "yaw − roll" if pitch > 0 else "yaw + roll"
-        status = f"locked: yaw and roll turn about one axis; only {combo} = {math.degrees(psi):.0f}° counts"
+        status = f"locked: yaw and roll turn about one axis; only {combo} = {readout(math.degrees(psi), 0)}° counts"
         flags.append("gimbal-lock")
     elif apart < NEAR_LOCK_DEG:
-        status = f"nearly locked: the yaw and roll axes are {apart:.0f}° apart"
+        status = f"nearly locked: the yaw and roll axes are {readout(apart, 0)}° apart"
         flags.append("gimbal-lock")
     else:
-        status = f"free: the yaw and roll axes are {apart:.0f}° apart"
+        status = f"free: the yaw and roll axes are {readout(apart, 0)}° apart"
 
     c = Canvas(400, 360, (-1.9, 1.9), (-1.7, 1.7))
     for k, name in enumerate("XYZ"):
@@ -93,10 +94,10 @@ def draw(p: dict[str, float]) -> dict:
         c.text(project([R[i][k] * 1.52 for i in range(3)]), "xyz"[k] + "′", f"wb-fig-label {colours[k]}", dy=5)
     svg = c.svg(f"A body turned by yaw {p['yaw']:g}°, pitch {p['pitch']:g}°, roll {p['roll']:g}° (ZYX)")
     return {"svg": svg, "flags": flags, "readouts": {
-        "R": matrix(R),
-        "q": vec(q),
+        "R": readout_matrix(R),
+        "q": readout_vector(q),
         "gimbal": status,
-        "apart": f"{num(apart, 1)}°",
+        "apart": f"{readout(apart, 1)}°",
     }}
 
 

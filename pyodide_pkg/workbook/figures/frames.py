@@ -11,7 +11,8 @@ import math
 
 from ..reference.transform2d import apply, chain, transform2d
 from . import Control, Figure, Readout
-from .svg import Canvas, matrix, vec
+from ..number_format import readout_matrix, readout_vector
+from .svg import Canvas
 
 SENSOR_OFFSET = (0.5, 0.0)  # where the sensor is mounted, in the robot frame (m)
 POINT_IN_SENSOR = (1.2, 0.4)  # what the sensor sees, in its own frame (m)
@@ -53,12 +54,12 @@ def draw(p: dict[str, float]) -> dict:
     c.dot(point_world, 5.5, "wb-fig-c wb-fig-solid")
     c.tag(point_world, "p", "wb-fig-label wb-fig-c")
     svg = c.svg(f"Robot at ({p['x']:g}, {p['y']:g}) heading {p['heading']:g}°, sensor turned {p['mount']:g}°; "
-                f"the point p is at {vec(point_world, 2)} in the world")
+                f"the point p is at {readout_vector(point_world, 2)} in the world")
     return {"svg": svg, "readouts": {
-        "sensor": vec(POINT_IN_SENSOR),
-        "robot": vec(point_robot),
-        "world": vec(point_world),
-        "T": matrix(Tws),
+        "sensor": readout_vector(POINT_IN_SENSOR),
+        "robot": readout_vector(point_robot),
+        "world": readout_vector(point_world),
+        "T": readout_matrix(Tws),
     }}
 
 

@@ -11,7 +11,8 @@ import math
 from ..reference.arm import (end_effector_velocity, forward_kinematics_2link, jacobian_2link, jacobian_det,
                              manipulability)
 from . import Control, Figure, Readout
-from .svg import Canvas, matrix, num
+from ..number_format import prose, readout, readout_matrix
+from .svg import Canvas
 
 L1, L2 = 1.0, 0.7
 SCALE = 0.45  # draw a velocity of 1 m/s as 0.45 m
@@ -52,11 +53,11 @@ def draw(p: dict[str, float]) -> dict:
     c.dot(elbow, 6, "wb-fig-a wb-fig-solid")
     c.dot((0, 0), 7, "wb-fig-muted wb-fig-solid")
     c.dot(tip, 4, "wb-fig-a wb-fig-solid")
-    svg = c.svg(f"Arm at θ1 = {p['theta1']:g}°, θ2 = {p['theta2']:g}°; det J = {det:.3f}"
+    svg = c.svg(f"Arm at θ1 = {prose(p['theta1'])}°, θ2 = {prose(p['theta2'])}°; det J = {readout(det)}"
                 + (", near a singularity" if singular else ""), css=" ".join(flags))
     return {"svg": svg, "flags": flags, "readouts": {
-        "J": matrix(J),
-        "det": num(det),
+        "J": readout_matrix(J),
+        "det": readout(det),
         "status": ("near a singularity: the tip barely moves along the arm" if singular
                    else "well away from a singularity"),
     }}

@@ -7,7 +7,8 @@ from functools import lru_cache
 
 from ..reference.pid import simulate_step_response, step_metrics
 from . import Control, Figure, Readout
-from .svg import Canvas, num
+from ..number_format import readout
+from .svg import Canvas
 
 DURATION = 10.0
 Y_RANGE = (-0.25, 2.0)
@@ -55,11 +56,11 @@ def draw(p: dict[str, float]) -> dict:
     c.polyline(clipped(ts, ys, *Y_RANGE), "wb-fig-a wb-fig-thick")
     settled = m.settling_time is not None
     svg = c.svg(f"Step response with Kp = {p['Kp']:g}, Ki = {p['Ki']:g}, Kd = {p['Kd']:g}: overshoot "
-                f"{m.overshoot:.0%}, " + (f"settles in {m.settling_time:.2f} s" if settled else "does not settle"))
+                f"{readout(100 * m.overshoot, 0)}%, " + (f"settles in {readout(m.settling_time, 2)} s" if settled else "does not settle"))
     return {"svg": svg, "flags": [] if settled else ["unsettled"], "readouts": {
-        "overshoot": f"{num(100 * m.overshoot, 1)} %",
-        "settling": f"{num(m.settling_time, 2)} s" if settled else f"not settled within {DURATION:g} s",
-        "error": num(m.steady_state_error, 3),
+        "overshoot": f"{readout(100 * m.overshoot, 1)} %",
+        "settling": f"{readout(m.settling_time, 2)} s" if settled else f"not settled within {DURATION:g} s",
+        "error": readout(m.steady_state_error, 3),
     }}
 
 

@@ -9,7 +9,8 @@ from html import escape
 
 from ..reference.pose_graph import compose_pose, gauss_newton, graph_cost, information_matrix
 from . import Control, Figure, Readout
-from .svg import Canvas, num, render_svg
+from ..number_format import readout
+from .svg import Canvas, render_svg
 
 SIDES = 8  # an octagon: eight 1 m legs, turning 45° after each
 OMEGA = information_matrix([[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.0025]])
@@ -62,7 +63,7 @@ def _chart(costs, optimise: bool) -> list[str]:
         parts.append(f'<rect x="{x:.1f}" y="{base - height:.1f}" width="{slot * 0.7:.1f}" height="{height:.1f}" '
                      f'class="wb-fig-a wb-fig-bar"/>')
         parts.append(f'<text x="{x + slot * 0.35:.1f}" y="{base - height - 5:.1f}" text-anchor="middle" '
-                     f'class="wb-fig-label wb-fig-small">{escape(num(cost, 1))}</text>')
+                     f'class="wb-fig-label wb-fig-small">{escape(readout(cost, 1))}</text>')
         parts.append(f'<text x="{x + slot * 0.35:.1f}" y="{base + 16:.1f}" text-anchor="middle" '
                      f'class="wb-fig-label wb-fig-small wb-fig-muted">{k}</text>')
     return parts
@@ -84,12 +85,12 @@ def draw(p: dict[str, float]) -> dict:
     gap = math.dist(shown[-1][:2], shown[0][:2])
     cost = graph_cost(shown, edges)
     title = (f"Pose graph with {SIDES} odometry edges and a loop closure, "
-             + ("after Gauss–Newton" if optimise else "before optimisation") + f": cost {cost:.1f}")
+             + ("after Gauss–Newton" if optimise else "before optimisation") + f": cost {readout(cost, 1)}")
     svg = render_svg(WIDTH, GRAPH_H + CHART_H, title, c.parts + _chart(costs, optimise))
     return {"svg": svg, "flags": ["optimised"] if optimise else [], "readouts": {
-        "cost": num(cost, 2),
-        "history": " → ".join(num(v, 2) for v in costs) if optimise else "not optimised yet",
-        "gap": f"{num(gap)} m",
+        "cost": readout(cost, 2),
+        "history": " → ".join(readout(v, 2) for v in costs) if optimise else "not optimised yet",
+        "gap": f"{readout(gap)} m",
     }}
 
 

@@ -6,7 +6,8 @@ import math
 
 from ..reference.rotation2d import rot2, rotate_2d
 from . import Control, Figure, Readout
-from .svg import Canvas, matrix, vec
+from ..number_format import readout_matrix, readout_vector
+from .svg import Canvas
 
 
 def arc_points(radius: float, start: float, sweep: float, n: int = 48) -> list[tuple[float, float]]:
@@ -55,7 +56,7 @@ def draw(p: dict[str, float]) -> dict:
     c.label((2.3, 0), "x", "wb-fig-label wb-fig-small", toward=(-1, -1))
     c.label((0, 2.3), "y", "wb-fig-label wb-fig-small", toward=(1, -1))
     svg = c.svg(f"The point p = ({px:g}, {py:g}) turned by {p['theta']:g}° about the origin")
-    return {"svg": svg, "readouts": {"R": matrix(R), "point": vec((px, py)), "image": vec((qx, qy))}}
+    return {"svg": svg, "readouts": {"R": readout_matrix(R), "point": readout_vector((px, py)), "image": readout_vector((qx, qy))}}
 
 
 FIGURE = Figure(

@@ -8,7 +8,7 @@ from __future__ import annotations
 
 import math
 from html import escape
-from typing import Iterable, Sequence
+from typing import Iterable
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]  # left, top, right, bottom (viewBox units)
@@ -29,39 +29,6 @@ LABEL_GAPS = (7.0, 15.0, 26.0, 40.0, 56.0, 75.0, 100.0)
 LABEL_TURNS = (0,) + tuple(k * sign for k in range(1, 12) for sign in (1, -1)) + (12,)
 CLEARANCE = 2.5  # what a label keeps from a drawn line (half a thick stroke, and a little air)
 AIR = 1.5  # what a label keeps from other texts and dots
-
-
-def num(v: float, digits: int = 3) -> str:
-    """A number for a readout: fixed digits, a real minus sign, no "−0.000".
-
-    >>> num(-0.00001), num(-1.5), num(2, 1)
-    ('0.000', '−1.500', '2.0')
-    """
-    text = f"{v:.{digits}f}"
-    if text.lstrip("-").strip("0.") == "":
-        text = text.lstrip("-")
-    return text.replace("-", "−")
-
-
-def vec(values: Iterable[float], digits: int = 3) -> str:
-    """A tuple of numbers for a readout.
-
-    >>> vec([1, -0.5])
-    '(1.000, −0.500)'
-    """
-    return "(" + ", ".join(num(v, digits) for v in values) + ")"
-
-
-def matrix(rows: Sequence[Sequence[float]], digits: int = 3) -> str:
-    """A matrix for a readout, one row per line, columns aligned.
-
-    >>> print(matrix([[1, -0.5], [0, 2]]))
-     1.000  −0.500
-     0.000   2.000
-    """
-    cells = [[num(v, digits) for v in row] for row in rows]
-    width = max(len(c) for row in cells for c in row)
-    return "\n".join("  ".join(c.rjust(width) for c in row) for row in cells)
 
 
 def font_size(cls: str) -> float:
