@@ -30,8 +30,7 @@ from blocks import BlockError, ExerciseBlock, FigureBlock, parse
 from exercise_text import text_of
 from render_exercise import PageTools, chapter_list_html, dom_id, exercise_html, exercise_index_html
 from render_figure import figure_html
-from workbook import bank, figures
-from workbook.answer_kinds import classes as answer_classes
+from workbook import bank, figures, registry
 from workbook.contract import ANSWER_KINDS, DATA, KINDS, REVIEW_KINDS
 from workbook.variants import VariantError, fill
 
@@ -73,7 +72,11 @@ def _check_kinds() -> None:
         for name in names:
             if not (JS / folder / f"{name}.js").is_file():
                 raise PluginError(f"{name!r} has no page module docs/assets/js/{folder}/{name}.js")
-    answer_classes()  # each answer kind's Python package exists and defines its class
+    for parts in registry.ALL:  # every kind, answer kind, chapter module, figure and run figure loads, under its name
+        try:
+            parts.check()
+        except (KeyError, TypeError, ImportError) as err:
+            raise PluginError(f"the grading package's {parts.what}s: {err}") from None
 
 
 def on_config(config, **kwargs):

@@ -13,23 +13,12 @@ of :class:`~.base.AnswerKind`) and a factory the bank writes
 
 from __future__ import annotations
 
-import importlib
 from functools import cache
 
-from ..contract import ANSWER_KINDS
-
-
-def module_name(answer_kind: str) -> str:
-    return f"{__name__}.{answer_kind}"
+from ..registry import ANSWERS
 
 
 @cache
 def classes() -> dict[str, type]:
-    """Each registered answer kind's class, by name."""
-    out = {}
-    for name in ANSWER_KINDS:
-        cls = getattr(importlib.import_module(module_name(name)), "ANSWER")
-        if cls.kind != name:
-            raise TypeError(f"{module_name(name)} defines answers of kind {cls.kind!r}, not {name!r}")
-        out[name] = cls
-    return out
+    """Each registered answer kind's class, by name (:data:`workbook.registry.ANSWERS`)."""
+    return ANSWERS.check()

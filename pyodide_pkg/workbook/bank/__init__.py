@@ -8,20 +8,21 @@ Chapters are imported lazily, so grading exercise 4.2 imports chapter 4 only.
 
 from __future__ import annotations
 
-import importlib
-import pkgutil
 from functools import cache, lru_cache
 
 from ..kinds.base import Exercise
+from ..registry import CHAPTER_MODULES
 
 
 @cache
 def _chapter_modules() -> dict[int, list[str]]:
+    """Chapter N's modules (``chN_*``, :data:`workbook.registry.CHAPTER_MODULES`), by N."""
     found: dict[int, list[str]] = {}
-    for info in pkgutil.iter_modules(__path__):
-        head, _, _ = info.name.partition("_")
-        if head.startswith("ch") and head[2:].isdigit():
-            found.setdefault(int(head[2:]), []).append(f"{__name__}.{info.name}")
+    for name in CHAPTER_MODULES.names():
+        head = name.partition("-")[0]
+        if not head[2:].isdigit():
+            raise TypeError(f"bank module {name.replace('-', '_')}.py is named like no chapter (chN_topic.py)")
+        found.setdefault(int(head[2:]), []).append(name)
     return {n: sorted(names) for n, names in sorted(found.items())}
 
 
@@ -31,7 +32,7 @@ def chapter(n: int) -> tuple[Exercise, ...]:
     names = _chapter_modules().get(n)
     if names is None:
         raise KeyError(f"no chapter {n}")
-    exercises = [ex for name in names for ex in importlib.import_module(name).EXERCISES]
+    exercises = [ex for name in names for ex in CHAPTER_MODULES.get(name)]
     for ex in exercises:
         if ex.id.split(".")[0] != str(n):
             raise ValueError(f"exercise {ex.id} sits in chapter {n}'s module")

@@ -19,23 +19,12 @@ True
 
 from __future__ import annotations
 
-import importlib
 import math
 from dataclasses import dataclass, field
 from typing import Any, Callable
 
-MODULES = {
-    "rotation-2d": "rotation_2d",
-    "frames": "frames",
-    "euler-3d": "euler_3d",
-    "ekf-predict": "ekf_predict",
-    "ekf-update": "ekf_update",
-    "pose-graph": "pose_graph",
-    "arm-2link": "arm_2link",
-    "jacobian": "jacobian",
-    "pid-response": "pid_response",
-    "capstone": "capstone",
-}
+from ..registry import FIGURES
+
 
 
 class FigureError(ValueError):
@@ -112,14 +101,15 @@ class Figure:
 
 
 def names() -> list[str]:
-    return list(MODULES)
+    """Every figure's name (:data:`workbook.registry.FIGURES`: one module each)."""
+    return FIGURES.names()
 
 
 def get(name: str) -> Figure:
     """The figure called ``name``; its module is imported on first use."""
-    if name not in MODULES:
+    if name not in FIGURES.names():
         raise FigureError(f"There is no figure called {name!r}.")
-    return importlib.import_module(f"{__name__}.{MODULES[name]}").FIGURE
+    return FIGURES.get(name)
 
 
 def render(name: str, params: dict[str, Any] | None = None) -> dict[str, Any]:

@@ -25,7 +25,6 @@ message on the frame, drawn as far as the numbers go.
 from __future__ import annotations
 
 import copy
-import importlib
 import math
 from dataclasses import dataclass
 from typing import Any, Callable
@@ -34,10 +33,8 @@ from workbook_sandbox import harness
 
 from ...build_judge import Mismatch, numbers
 from ...number_format import compact
+from ...registry import RUN_FIGURES
 
-MODULES = {"rotate": "rotate", "ekf-update": "ekf_update", "arm": "arm", "pid": "pid", "ik": "ik",
-           "jacobian": "jacobian", "pid-clamp": "pid_clamp", "pose-graph": "pose_graph",
-           "ekf-predict": "ekf_predict", "capstone": "capstone", "frames": "frames", "axis-angle": "axis_angle"}
 TRACE_CAP = 64  # samples of a trajectory the report carries (workbook_sandbox.values.ITEMS_CAP)
 
 
@@ -75,13 +72,12 @@ class RunFigure:
 
 
 def get(name: str) -> RunFigure:
-    if name not in MODULES:
-        raise KeyError(f"no run figure {name!r}")
-    return importlib.import_module(f"{__name__}.{MODULES[name]}").RUN
+    """The run figure called ``name`` (:data:`workbook.registry.RUN_FIGURES`: one module each)."""
+    return RUN_FIGURES.get(name)
 
 
 def names() -> list[str]:
-    return list(MODULES)
+    return RUN_FIGURES.names()
 
 
 # ---- the learner's numbers -------------------------------------------------------------
