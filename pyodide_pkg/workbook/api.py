@@ -48,6 +48,7 @@ import sys
 from typing import Any
 
 from . import bank, chains, steps
+from .assignment import slip_name
 from .build_plain import plain
 from .contract import OPS
 from .variants import VariantError, check_seed, fill
@@ -93,7 +94,10 @@ def _grade(request: dict[str, Any]) -> dict[str, Any]:
     if request.get("step") is not None:
         return steps.grade_step(ex, request["step"], answer, mine, chain).to_dict()
     verdict = chains.follow(ex, answer, ex.check(answer), chain)
-    return steps.grade_final(ex, answer, mine, verdict, chain).to_dict()
+    out = steps.grade_final(ex, answer, mine, verdict, chain).to_dict()
+    if out["status"] == "incorrect" and (name := slip_name(out["tag"], out["message"])):
+        out["data"]["slip"] = name  # the named slip, the same in every variant (the class page counts them)
+    return out
 
 
 def _run(request: dict[str, Any]) -> dict[str, Any]:
