@@ -162,6 +162,7 @@ export async function initClassPage(shared, siteRoot) {
     el("label", { htmlFor: input.id, textContent: "Hand-in files or progress exports (choose several, or drop them here)" }), input);
   const status = el("p", { role: "status", className: "wb-course-status" });
   const problems = el("ul", { className: "wb-class-problems" });
+  problems.dataset.wbProblems = "";
   const csv = el("button", { type: "button", className: "md-button", textContent: "Download the table (CSV)", hidden: true });
   csv.dataset.wbAction = "csv";
   const results = el("div", { className: "wb-class-results" });
