@@ -48,6 +48,7 @@ import sys
 from typing import Any
 
 from . import bank, chains, steps
+from .assignment import slip_name
 from .build_plain import plain
 from .contract import LIMIT, OPS
 from .variants import VariantError, check_seed, fill
@@ -87,8 +88,11 @@ def _grade(request: dict[str, Any]) -> dict[str, Any]:
         if request.get("step") is not None or request.get("steps"):
             raise GradingError("bad-request", f"Exercise {ex.id} is a {ex.kind} exercise: it has no steps.")
         return ex.check(request.get("answer")).to_dict()
-    return ex.grade(request.get("answer"), given=request.get("given"), steps=request.get("steps"),
-                    step=request.get("step"), lookup=bank.variant).to_dict()
+    out = ex.grade(request.get("answer"), given=request.get("given"), steps=request.get("steps"),
+                   step=request.get("step"), lookup=bank.variant).to_dict()
+    if out["status"] == "incorrect" and (name := slip_name(out["tag"], out["message"])):
+        out["data"]["slip"] = name  # the named slip, the same in every variant (the class page counts them)
+    return out
 
 
 def _run(request: dict[str, Any]) -> dict[str, Any]:

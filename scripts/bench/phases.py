@@ -11,7 +11,7 @@ import traceback
 from workbook import bank
 from workbook.contract import ATTR, ROLE, STATE
 
-from . import first_visit, pagejs
+from . import class_page, first_visit, pagejs
 from .browser import BenchError, Browsers
 from .config import (BUILD_HEAVY_ID, BUILD_ID, BUILD_NEW_ID, BUILD_LOOP, BUILD_NUMPY, BUILD_PLAIN, CH0, CH1, CH3, CH9, DERIVE_INPUT, GRADE_TIMEOUT_MS,
                      GRADED, NUMPY_TIMEOUT_MS, READY_TIMEOUT_MS, Profile)
@@ -21,7 +21,7 @@ from .records import percentile
 GRADED_STATES = (STATE.correct, STATE.incorrect)
 
 
-LOCAL_PHASES = ("startup", "first_feedback", "baseline", "ready")
+LOCAL_PHASES = ("startup", "first_feedback", "baseline", "ready", "class_page")
 
 
 class Phases:
@@ -190,6 +190,10 @@ class Phases:
             run["baseline_cold"], run["baseline_warm"] = cold, warm
         finally:
             ctx.close()
+
+    # -- the class page: 200 hand-ins read and re-graded (class_page.py) -----------
+    def class_page(self, run: dict) -> None:
+        run["class_page"] = class_page.measure(self.b)
 
     # -- a first visit on this profile's link, ours and the baseline's --------------
     def first_visit(self, run: dict) -> None:

@@ -42,7 +42,7 @@ def test_an_answer_that_follows_from_a_wrong_earlier_one_is_carried_and_links_ba
     assert page.evaluate("workbook.progress.get('9.2')")["missed"] == [0]
     exported = page.evaluate("JSON.stringify(workbook.progress.exportData())")
     data = json.loads(exported)
-    assert data["version"] == 4 and data["exercises"]["9.3"]["carried"] == [0]
+    assert data["version"] == 5 and data["exercises"]["9.3"]["carried"] == [0]
 
 
 def test_a_wrong_matrix_carried_into_the_next_matrix(page, site_url):

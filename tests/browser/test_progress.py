@@ -148,7 +148,7 @@ def test_export_reset_import_restores_exactly(page, site_url):
         page.get_by_role("button", name="Export progress").click()
     exported = json.loads(open(download.value.path(), encoding="utf-8").read())
     assert download.value.suggested_filename.endswith(".json")
-    assert exported["format"] == "robotics-math-workbook-progress" and exported["version"] == 4
+    assert exported["format"] == "robotics-math-workbook-progress" and exported["version"] == 5
     assert exported["exercises"] == before
 
     # Reset asks first; cancelling changes nothing.

@@ -166,7 +166,7 @@ def test_schema_3_is_migrated_and_steps_travel_through_export_and_import(page, s
     v3 = {"version": 3, "exercises": {"3.8": {"carried": [0], "missed": [0], "attempts": 1, "updated": 1_700_000_000_000}}}
     page.evaluate("([k, v]) => localStorage.setItem(k, v)", [key, json.dumps(v3)])
     open_progress_page(page, site_url)
-    assert page.evaluate("workbook.progress.data.version") == 4
+    assert page.evaluate("workbook.progress.data.version") == 5
     assert record(page) == v3["exercises"]["3.8"]
 
     work = {"variant": 7, "steps": {"FP": {"answer": [["1", "2", "3"], ["4", "5", "6"], ["7", "8", "9"]],
@@ -181,7 +181,7 @@ def test_schema_3_is_migrated_and_steps_travel_through_export_and_import(page, s
     assert got["stepped"] == [7] and got["carried"] == [0, 7] and got["steppedDone"] == [3] and got["missed"] == [0]
     assert got["stepWork"] == work  # the newer copy's steps on screen
     exported = page.evaluate("workbook.progress.exportData()")
-    assert exported["version"] == 4 and exported["exercises"]["3.8"]["stepWork"] == work
+    assert exported["version"] == 5 and exported["exercises"]["3.8"]["stepWork"] == work
 
     before = page.evaluate("workbook.progress.all()")
     bad_steps = {

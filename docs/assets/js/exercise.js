@@ -5,6 +5,7 @@
 import { ATTR, REVIEW_KINDS, ROLE, STATE, ownQuery, ownRole } from "./contract.js";
 import { setPending, showMessage, showReply } from "./feedback.js";
 import { afterGrade, afterReveal } from "./review.js";
+import { countSlip } from "./assignment-schema.js";
 
 /** Text from base64 of its UTF-8 bytes (the derivation, the variant templates). */
 export function decodeBase64(text) {
@@ -22,6 +23,8 @@ function recordAttempt(ctx, reply, extra = {}) {
   const before = progress.get(id);
   const variant = ctx.variant ?? 0;
   const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed, tag: reply.value.tag }) };
+  const slip = reply.value.data?.slip; // a named slip (CONTRACT.md): counted for the class page
+  if (status === STATE.incorrect && slip) patch.slips = countSlip(before.slips, slip);
   if (status === STATE.correct && !before.solved) {
     patch.solved = true;
     patch.solvedAfterReveal = Boolean(before.revealedIn?.includes(variant) ?? before.revealed);

@@ -15,6 +15,7 @@ import { initLoading } from "./loading.js";
 import { initJumps } from "./jump.js";
 import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
 import { strayVariantLinks } from "./variants.js";
+import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
@@ -102,6 +103,7 @@ function initPage() {
   if (stray.length && exercises().length) showNotice("variant-link", "This link", stray.join(" "));
   initProgressPage(progress, siteRoot);
   initPractise(shared, siteRoot);
+  initCourse(shared, siteRoot);
 }
 
 document.addEventListener("workbook:runtime", (event) => {

@@ -16,8 +16,9 @@
 
 import { LIMIT } from "./contract.js";
 import { KEEP, TOP_BOX, migrateRecord } from "./review.js";
+import { isAssigned, isSlips, mergeAssigned, mergeSlips } from "./assignment-schema.js";
 
-export const SCHEMA_VERSION = 4;
+export const SCHEMA_VERSION = 5;
 export const EXPORT_FORMAT = "robotics-math-workbook-progress";
 // No browser keeps more than 10 MB of local storage for a site, so the largest
 // export this page can write (escaped JSON included) stays below this.
@@ -74,6 +75,9 @@ export const FIELDS = {
   stepped: VARIANTS, // the variants worked with steps (a step checked)
   steppedDone: VARIANTS, // the variants solved after working with steps, the derivation not revealed first
   stepWork: { check: isStepWork, says: "the steps on screen ({variant, steps: {name: {answer, status, tag, message, carried}}}) or null", merge: "latest" },
+  // Since version 5: assignments (assignment-schema.js; CONTRACT.md, "Progress records").
+  slips: { check: isSlips, says: "the named slips hit, {name: count} (at most 24)", merge: "slips" },
+  assigned: { check: isAssigned, says: "an assignment's graded answers, {class: {variant, attempts}}", merge: "assigned" },
   box: { check: (v) => Number.isInteger(v) && v >= 1 && v <= TOP_BOX, says: `a review box from 1 to ${TOP_BOX}`, merge: "review" },
   due: { check: (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + 366 * DAY_MS, says: "a time (milliseconds since 1970) within a year", merge: "review" },
   reviewed: { check: notFuture, says: TIME, merge: "review" },
@@ -148,6 +152,8 @@ const RULES = {
     const from = when(newer) >= when(older) && newer.box !== undefined ? newer : older.box !== undefined ? older : newer;
     return from[field];
   },
+  slips: (older, newer, field) => mergeSlips(older[field], newer[field]),
+  assigned: (older, newer, field) => mergeAssigned(older[field], newer[field]),
   afterReveal: (older, newer) => [older, newer].filter((r) => r.solved).every((r) => r.solvedAfterReveal === true),
 };
 
@@ -230,7 +236,7 @@ export function parseImport(text, knownIds) {
     for (const [id, raw] of Object.entries(data.exercises)) {
       if (knownIds && !knownIds.has(id)) throw new ImportError(`The file mentions exercise “${id.slice(0, 20)}”, which this workbook does not have.`);
       const record = cleanRecord(id, raw);
-      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load (2 -> 3 -> 4 add fields only)
+      exercises[id] = data.version < 2 ? migrateRecord(record) : record; // a version-1 file: same migration as on load (2 -> 3 -> 4 -> 5 add fields only)
     }
     return { ok: true, exercises };
   } catch (err) {

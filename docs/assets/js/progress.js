@@ -50,6 +50,8 @@ const MIGRATIONS = {
   2: (data) => ({ ...data, version: 3 }),
   // 3 -> 4: adds the checked steps (`stepped`, `steppedDone`, `stepWork`); records keep the rest.
   3: (data) => ({ ...data, version: 4 }),
+  // 4 -> 5: adds the assignment fields (`slips`, `assigned`: assignment-schema.js); records keep the rest.
+  4: (data) => ({ ...data, version: 5 }),
 };
 
 class Unreadable extends Error {}

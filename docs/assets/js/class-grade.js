@@ -1,0 +1,112 @@
+// The class page's reading and re-grading (docs/class.md, class-page.js): a file is a
+// hand-in (assignment-page.js) or a progress export; every recorded answer to the
+// assignment's numbers is graded again by the same grader, at the variant recomputed from
+// the class code and the student id (never the file's word for it). A claimed solve whose
+// answers do not grade correct is "not verified".
+
+import { assignedVariant } from "./assignment-hash.js";
+import { classKey } from "./assignment-link.js";
+import { isAssigned, isSlips } from "./assignment-schema.js";
+import { EXPORT_FORMAT, cleanRecord, parseImport } from "./progress-schema.js";
+import { HAND_IN_FORMAT, HAND_IN_VERSION } from "./assignment-page.js";
+
+export const MAX_FILE_BYTES = 4_000_000; // a hand-in holds a few exercises' records
+const has = (list, v) => Array.isArray(list) && list.includes(v);
+const isObject = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+
+class FileProblem extends Error {}
+
+/** One file's text -> a learner {student, code, ids, due, records, kind} or throws FileProblem (its message is for the page). */
+export function readLearner(name, text, known) {
+  if (typeof text !== "string" || text.length > MAX_FILE_BYTES) throw new FileProblem(`is larger than ${MAX_FILE_BYTES.toLocaleString("en")} characters`);
+  let data;
+  try {
+    data = JSON.parse(text);
+  } catch {
+    throw new FileProblem("is not JSON");
+  }
+  if (!isObject(data)) throw new FileProblem("is not a hand-in or a progress export");
+  if (data.format === EXPORT_FORMAT) {
+    const parsed = parseImport(text, known);
+    if (!parsed.ok) throw new FileProblem(`is not a readable progress export: ${parsed.reason}`);
+    const ids = [...known].filter((id) => parsed.exercises[id]);
+    return { kind: "progress", student: name.replace(/\.json$/i, ""), code: null, ids, due: null, records: parsed.exercises };
+  }
+  if (data.format !== HAND_IN_FORMAT) throw new FileProblem("is not a hand-in or a progress export (its “format” is missing or different)");
+  if (data.version !== HAND_IN_VERSION) throw new FileProblem(`is a hand-in of version ${String(data.version).slice(0, 10)}, which this page does not read`);
+  const a = data.assignment;
+  if (!isObject(a) || typeof a.class !== "string" || !classKey(a.class) || a.class.length > 200) throw new FileProblem("names no class code");
+  if (typeof data.student !== "string" || !data.student.trim() || data.student.length > 100) throw new FileProblem("names no student");
+  if (!Array.isArray(a.exercises) || !a.exercises.length || a.exercises.length > 200 || !a.exercises.every((id) => typeof id === "string" && known.has(id))) {
+    throw new FileProblem("sets exercises this workbook does not have");
+  }
+  if (!isObject(data.records)) throw new FileProblem("holds no records");
+  const records = {};
+  for (const [id, raw] of Object.entries(data.records)) {
+    if (!a.exercises.includes(id)) throw new FileProblem(`holds a record of exercise “${id.slice(0, 12)}”, which the assignment does not set`);
+    try {
+      records[id] = cleanRecord(id, raw);
+    } catch (err) {
+      throw new FileProblem(`holds a record that is not valid: ${err.message}`);
+    }
+  }
+  return { kind: "hand-in", student: data.student.trim(), code: classKey(a.class), ids: [...new Set(a.exercises)], due: typeof a.due === "string" ? a.due.slice(0, 10) : null, records };
+}
+
+export function problemOf(err) {
+  return err instanceof FileProblem ? err.message : "could not be read";
+}
+
+async function grade(runtime, request) {
+  const reply = await runtime.request({ op: "grade", ...request });
+  return reply.ok ? reply.value : { error: reply.error };
+}
+
+/**
+ * One learner's row: per exercise {variant, claimed, verified, regraded, attempts, hinted,
+ * revealed, stepped, carried, slips: {name: n} (re-graded), recordedSlips, note}.
+ * `drawing`: the ids that draw variants (Derive).
+ */
+export async function gradeLearner(learner, drawing, runtime) {
+  const cells = {};
+  for (const id of learner.ids) {
+    const r = learner.records[id] ?? {};
+    const cell = { attempts: 0, claimed: false, verified: false, hinted: Boolean(r.hinted), slips: {},
+      recordedSlips: isSlips(r.slips) ? r.slips : {}, note: "" };
+    if (learner.kind === "hand-in") {
+      const v = drawing.has(id) ? await assignedVariant(learner.code, learner.student, id) : 0;
+      const entry = isAssigned(r.assigned) ? r.assigned[learner.code] : undefined;
+      const attempts = entry?.attempts ?? [];
+      Object.assign(cell, { variant: v, claimed: has(r.done, v) || attempts.some((t) => t.status === "correct"),
+        revealed: has(r.revealedIn, v), stepped: has(r.stepped, v), carried: has(r.carried, v), attempts: attempts.length });
+      if (entry && entry.variant !== v) cell.note = `the file's answers are for numbers ${entry.variant}, not this student's ${v}`;
+      for (const attempt of attempts) {
+        const verdict = await grade(runtime, { exercise: id, variant: v, answer: attempt.answer,
+          ...(attempt.steps ? { steps: attempt.steps } : {}), ...(attempt.given ? { given: attempt.given } : {}) });
+        if (verdict.error) {
+          cell.note ||= verdict.error.kind === "wrong-op" ? "a code exercise: its runs are not re-run here" : `not re-graded: ${verdict.error.message}`;
+          continue;
+        }
+        cell.regraded = true;
+        if (verdict.status === "correct") cell.verified = true;
+        const slip = verdict.status === "incorrect" ? verdict.data?.slip : null;
+        if (slip) cell.slips[slip] = (cell.slips[slip] ?? 0) + 1;
+      }
+    } else {
+      // A progress export: the last answer, at the numbers it was given for.
+      const v = r.variant ?? 0;
+      Object.assign(cell, { variant: v, claimed: (r.clean?.length ?? 0) > 0 || (r.steppedDone?.length ?? 0) > 0,
+        revealed: has(r.revealedIn, v), stepped: (r.stepped?.length ?? 0) > 0, carried: (r.carried?.length ?? 0) > 0, attempts: r.attempts ?? 0 });
+      if (r.last !== undefined && r.last !== null && has(r.done, v)) {
+        const verdict = await grade(runtime, { exercise: id, variant: v, answer: r.last });
+        if (verdict.error) cell.note = verdict.error.kind === "wrong-op" ? "a code exercise: its runs are not re-run here" : `not re-graded: ${verdict.error.message}`;
+        else {
+          cell.regraded = true;
+          cell.verified = verdict.status === "correct";
+        }
+      }
+    }
+    cells[id] = cell;
+  }
+  return cells;
+}

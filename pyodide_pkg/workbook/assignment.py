@@ -1,0 +1,88 @@
+"""Assignments: each learner's own numbers, and the names of the slips a class makes.
+
+An assignment link (the site's ``teach/`` page) sets exercises for a class code; a
+learner who opens it gives a name or student number once, and every Derive
+exercise of the assignment then shows the variant :func:`assigned_variant` of
+(class code, student id, exercise id). The same function, in the page's
+``docs/assets/js/assignment-hash.js``, chooses it in the browser, and the class
+page (``class/``) recomputes it from a hand-in file to re-grade the answers; a
+test checks the two agree over many inputs.
+
+The text is tidied first, the same way in both (:func:`tidy`): Unicode NFC,
+whitespace runs as one space, trimmed; a student id also with ASCII capitals as
+small letters ("Ada Lovelace" and "ada  lovelace" are one student), never other
+letters (their case rules differ between languages).
+
+>>> assigned_variant("ROB101", "s1234567", "0.1")
+300744
+>>> assigned_variant("ROB101", " S1234567 ", "0.1") == assigned_variant("ROB101", "s1234567", "0.1")
+True
+>>> 1 <= assigned_variant("x", "y", "9.7") <= MAX_SEED
+True
+
+A wrong answer that matches a named slip says which in its verdict's
+``data.slip`` (:func:`slip_name`): the tag for the slips every answer can make
+(``sign``, ``degrees``, ``transpose``...), and for an exercise's own slips
+``slip: `` and its message with every number written as ``#``, so the same
+mistake has the same name in every variant:
+
+>>> slip_name("slip", "That is the y-coordinate, 2.5 m, not x = −1.25.")
+'slip: That is the y-coordinate, # m, not x = #.'
+>>> slip_name("sign", "The size is right but the sign is wrong.")
+'sign'
+>>> slip_name("", "Not quite.") is None
+True
+"""
+
+from __future__ import annotations
+
+import hashlib
+import re
+import unicodedata
+
+from .variants import MAX_SEED
+
+SALT = "robotics-math-workbook/assignment/1"
+# The tags that name a mistake (contract.json "tags"): the exercise's own slips, and those every answer kind knows.
+NAMED = ("slip", "close", "radians", "degrees", "sign", "transpose", "inverse", "sine-sign", "rows-swapped",
+         "columns-swapped", "negated")
+NAME_CAP = 80  # characters of a slip's name
+# A number the variant chose; not a digit that is part of a name (θ1, atan2, e[k−1]) or an
+# entry's place (J(1,2), "the (2,2) entry"), which every variant shares.
+_NUMBER = re.compile(r"(?<![\w\[−\-])[−\-+]?\d+(?:[.,]\d+)*(?:e[−\-+]?\d+)?(?!\w)")
+_PLACE = re.compile(r"\((\d(?:,\d)*)\)")
+_SPACE = re.compile(r"\s+")
+
+
+def tidy(text: str, *, fold: bool = False) -> str:
+    """``text`` as the hash reads it: NFC, runs of whitespace as one space, trimmed (``fold``: A-Z as a-z)."""
+    out = _SPACE.sub(" ", unicodedata.normalize("NFC", text)).strip(" ")
+    return out.translate(_FOLD) if fold else out
+
+
+_FOLD = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")
+
+
+def assigned_variant(class_code: str, student: str, exercise_id: str) -> int:
+    """The variant (1 to MAX_SEED) a student's assignment shows for an exercise: SHA-256 of the
+    salt, the tidied class code, student id and exercise id, one per line; its first 8 bytes
+    as a whole number, modulo MAX_SEED, plus 1."""
+    text = "\n".join((SALT, tidy(class_code), tidy(student, fold=True), exercise_id))
+    digest = hashlib.sha256(text.encode("utf-8")).digest()
+    return 1 + int.from_bytes(digest[:8], "big") % MAX_SEED
+
+
+def slip_name(tag: str, message: str) -> str | None:
+    """The stable name of the named slip a wrong answer hit (its verdict's tag and message), or None."""
+    if tag not in NAMED:
+        return None
+    if tag != "slip":
+        return tag
+    places = _PLACE.findall(message)
+    text = _NUMBER.sub("#", _PLACE.sub("(@)", message))
+    for place in places:
+        text = text.replace("(@)", f"({place})", 1)
+    text = _SPACE.sub(" ", text).strip()
+    if len(text) > NAME_CAP - 6:
+        text = text[: NAME_CAP - 7].rsplit(" ", 1)[0] + "…"
+    return f"slip: {text}"
