@@ -1,6 +1,6 @@
 // The page contract, as JavaScript names. esbuild bundles the same JSON file the
 // grading package reads (pyodide_pkg/workbook/contract.json); CONTRACT.md explains it.
-import contract from "../../../pyodide_pkg/workbook/contract.json";
+import contract from "../../../pyodide_pkg/workbook/contract.json" with { type: "json" };
 
 const names = (values) => Object.freeze(Object.fromEntries(values.map((v) => [v.replace(/-(\w)/g, (_, c) => c.toUpperCase()), v])));
 
