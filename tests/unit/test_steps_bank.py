@@ -1,5 +1,5 @@
-"""The steps at the hard part (issue 26): 1.6's Rᵀ and −Rᵀt, 3.7's move and θ column, 4.7's
-bearing row; and the chain 3.8 ← 3.7 over 3.8's whole grid.
+"""The steps at the hard part (issue 26): 1.6's Rᵀ and −Rᵀt, 3.7's move and θ column, 4.3's
+∂r/∂dx (in place of q = dx² + dy²), 4.7's bearing row (in place of q); and the chain 3.8 ← 3.7 over 3.8's whole grid.
 
 Over 200 draws of each exercise, every step's key is checked against a computation written
 here from the formulas the derivation states (not the bank's), so a generator that carries a
@@ -69,8 +69,17 @@ def _jacobian(v, given):
     return {"d": d, "bearing": bearing}, final
 
 
-EXPECTED = {"1.6": _inverse, "3.7": _north, "4.7": _jacobian}
-STEPS = {"1.6": ["RT", "tinv"], "3.7": ["move", "col"], "4.7": ["d", "bearing"]}
+def _slope(v, given):
+    """4.3: d = (lx − x, ly − y), then ∂r/∂dx = dx/√q from the learner's d, then H(1,1) = −∂r/∂dx."""
+    p = v.params
+    d = ((p["lx"] - p["x"],), (p["ly"] - p["y"],))
+    (dx,), (dy,) = given.get("d", d)
+    drdx = dx / math.sqrt(dx * dx + dy * dy)
+    return {"d": d, "drdx": drdx}, -given.get("drdx", drdx)
+
+
+EXPECTED = {"1.6": _inverse, "3.7": _north, "4.3": _slope, "4.7": _jacobian}
+STEPS = {"1.6": ["RT", "tinv"], "3.7": ["move", "col"], "4.3": ["d", "drdx"], "4.7": ["d", "bearing"]}
 
 
 def _grade(v, answer, step=None, sent=None):
