@@ -45,7 +45,8 @@ def _sighting(p):
     }
 
 
-# ---- the steps of a sighting (4.1 to 4.3, 4.7): the offset d = (dx, dy), then q or the bearing ----------
+# ---- the steps of a sighting (4.1 to 4.3, 4.7): the offset d = (dx, dy), then q (4.1), the bearing (4.2),
+# ---- ∂r/∂dx (4.3, below) or H's bearing row (4.7, ch4_jacobian.py)
 OFFSET = Step("d", "(dx, dy)", matrix(label="(dx, dy) = (lx − x, ly − y)", names=("dx", "dy"), unit="m"))
 SQUARED = Step("q", "q = dx² + dy²", number(label="q = dx² + dy²"))
 ANGLE = Step("phi", "atan2(dy, dx) in radians", number(label="atan2(dy, dx)", unit="rad", angle="rad", periodic=True))
