@@ -20,8 +20,8 @@ def test_derive_messages(page, site_url):
     assert "close" in feedback(bearing).lower()
     h11 = exercise(page, "4.3")
     assert answer_derive(h11, "0.6") == "incorrect"
-    assert h11.get_attribute("data-feedback") == "sign"
-    assert "sign" in feedback(h11).lower()
+    assert h11.get_attribute("data-feedback") == "slip"  # 4.3 names where its sign comes from: the chain rule
+    assert "sign" in feedback(h11).lower() and "∂dx/∂x = −1" in feedback(h11)
     innovation = exercise(page, "4.4")
     assert answer_derive(innovation, "0.2") == "incorrect"
     assert innovation.get_attribute("data-feedback") == "slip"

@@ -41,8 +41,11 @@ def test_radians_for_degrees_and_explicit_units():
 
 
 def test_sign_error_is_named():
-    result = grade("4.3", "0.6")
+    result = grade("3.3", "0.5")
     assert (result.status, result.tag) == ("incorrect", "sign")
+    # where the sign comes from one known place, the exercise names it: 4.3's chain rule
+    result = grade("4.3", "0.6")
+    assert (result.status, result.tag) == ("incorrect", "slip") and "∂dx/∂x = −1" in result.message
 
 
 def test_unit_on_a_non_angle_is_invalid():

@@ -33,7 +33,7 @@ STEPPED = [ex for ex in bank.all_exercises() if ex.kind == "derive" and ex.steps
 TEXTS = load_all(ROOT)
 # The exercises that must offer steps: every EKF, pose-graph, IK, Jacobian and capstone derivation
 # with two intermediate quantities or more (4.4, 7.2, 9.5 and 9.6 have one: nothing to step through).
-REQUIRED = {"3.4", "3.8", "4.1", "4.2", "4.3", "4.7", "5.2", "5.6", "5.7",
+REQUIRED = {"1.6", "3.4", "3.7", "3.8", "4.1", "4.2", "4.3", "4.7", "5.2", "5.6", "5.7",
             "6.2", "6.3", "7.1", "7.6", "9.2", "9.3", "9.4", "9.8"}
 
 

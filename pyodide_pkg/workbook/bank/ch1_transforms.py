@@ -11,9 +11,11 @@ from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, relation_all, shown, signed
 from ..reference.linalg import matvec, transpose
 from ..reference.transform2d import apply, chain, inverse_transform, transform2d
+from ..steps import Step as WorkStep
 from ..variants import Param, Vary
-from . import grid
-from .checks import apart
+from .. import chains
+from . import column, grid
+from .checks import apart, kept_slips
 
 
 def _with(rot, t):
@@ -105,19 +107,44 @@ def _tool_point_ok(p):
     return (p["bx"], p["by"]) != (0, 0) and reversed_x != b_plus_u and reversed_x != unturned_x
 
 
-def _inverse_pose(p):
-    """1.6: T⁻¹ for a robot at (tx, ty) with heading θ."""
+def _inverse_steps(R, t, given):
+    """1.6's steps: Rᵀ, then −Rᵀt from the learner's own Rᵀ (each the learner's own when ``given``
+    has it), and the slips made at each. Returns (Rᵀ, −Rᵀt) and the steps."""
+    RT = [list(r) for r in chains.given(given, "RT", grid(transpose(R)))]
+    back = [-v for v in matvec(RT, t)]
+    tinv = [r[0] for r in chains.given(given, "tinv", column(back))]
+    return (RT, tinv), {
+        "RT": {"key": grid(transpose(R)), "slips": kept_slips(grid(transpose(R)), (
+            (grid(R), "That is R itself. Undoing the turn takes the transpose Rᵀ: swap the two entries off the "
+                      "diagonal, so the sine changes sign."),))},
+        "tinv": {"key": column(back), "slips": kept_slips(column(back), (
+            (column([-v for v in t]), "That is −t, the robot's position negated in world axes. T⁻¹ needs it in "
+                                      "the robot's own axes: multiply by Rᵀ as well, −Rᵀt."),
+            (column(matvec(RT, t)), "That is Rᵀt, without the minus: the translation of T⁻¹ is −Rᵀt. Check with "
+                                    f"the robot's own position: T⁻¹ must send ({fmt(t[0])}, {fmt(t[1])}) to the origin."),
+            (column([-v for v in matvec(transpose(RT), t)]),
+             "That multiplies t by R, the turn forwards (or takes the columns of Rᵀ for its rows). −Rᵀt takes "
+             "each row of Rᵀ times t."),
+        ))},
+    }
+
+
+def _inverse_pose(p, given=None):
+    """1.6: T⁻¹ for a robot at (tx, ty) with heading θ, in steps: Rᵀ, then −Rᵀt (the learner's own
+    when ``given`` has them)."""
     tx, ty, theta = p["tx"], p["ty"], p["theta"]
     T = transform2d(tx, ty, math.radians(theta))
     R = [row[:2] for row in T[:2]]
     RT = transpose(R)
     RT_t = matvec(RT, [tx, ty])
-    key = grid(inverse_transform(T))
+    (mine, tinv), worked = _inverse_steps(R, [tx, ty], given)
+    key = _with(mine, tinv)
     wx, wy = apply(T, 1, 0)  # the point 1 m ahead of the robot, in the world
     (c, s_), (ns, _) = RT
     default = (tx, ty, theta) == (2, 1, 90)
     rt = [_terms(row, (tx, ty)) for row in RT]  # R^T t written out, and its value from the printed entries
-    chk = [_terms(row[:2], (wx, wy), row[2]) for row in key[:2]]  # T^-1 applied to the point ahead
+    printed = _with(RT, [-v for v in RT_t])
+    chk = [_terms(row[:2], (wx, wy), row[2]) for row in printed[:2]]  # T^-1 applied to the point ahead
     return {
         "key": key,
         "slips": (
@@ -132,6 +159,7 @@ def _inverse_pose(p):
                  "Rᵀ, and the translation becomes −Rᵀt."),
             Slip(grid(T), "That is T itself, the robot's pose. The question asks for the transform that undoes it."),
         ),
+        "steps": worked,
         "values": {
             "whose": "Exercise 1.2's robot, with the workbook's numbers," if default else "A robot",
             "check_on": "exercise 1.2's answer with the workbook's numbers" if default
@@ -140,7 +168,7 @@ def _inverse_pose(p):
             "r11": fmt(c), "r12": fmt(s_), "r21": fmt(ns),
             "rt1_terms": rt[0][0], "rt2_terms": rt[1][0],
             "rt_rel": relation_all(RT_t, [v for _, v in rt]), "rt1": fmt(RT_t[0]), "rt2": fmt(RT_t[1]),
-            "k13": fmt(key[0][2]), "k23": fmt(key[1][2]), "wx": fmt(wx), "wy": fmt(wy),
+            "k13": fmt(printed[0][2]), "k23": fmt(printed[1][2]), "wx": fmt(wx), "wy": fmt(wy),
             "chk1": chk[0][0], "chk2": chk[1][0], "chk_rel": relation_all((1, 0), [v for _, v in chk]),
         },
     }
@@ -214,5 +242,7 @@ EXERCISES = (
         answer=matrix(label="T⁻¹"),
         vary=Vary(_inverse_pose, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1),
                   Param("theta", 90, -175, 180, 5, unit="°"), valid=_inverse_pose_ok),
+        steps=(WorkStep("RT", "Rᵀ", matrix(label="Rᵀ, the rotation block of T⁻¹")),
+               WorkStep("tinv", "−Rᵀt", matrix(label="−Rᵀt, the translation of T⁻¹", names=("x", "y")))),
     ),
 )

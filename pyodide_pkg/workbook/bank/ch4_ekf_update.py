@@ -16,7 +16,7 @@ from .. import chains
 from ..chains import Uses
 from ..steps import Step
 from . import column
-from .checks import apart
+from .checks import apart, kept_slips
 
 _POSE = (0, 0, 0)
 _LANDMARK = (3, 4)
@@ -46,7 +46,8 @@ def _sighting(p):
     }
 
 
-# ---- the steps of a sighting (4.1 to 4.3, 4.7): the offset d = (dx, dy), then q or the bearing ----------
+# ---- the steps of a sighting (4.1 to 4.3, 4.7): the offset d = (dx, dy), then q (4.1), the bearing (4.2),
+# ---- ∂r/∂dx (4.3, below) or H's bearing row (4.7, ch4_jacobian.py)
 OFFSET = Step("d", "(dx, dy)", matrix(label="(dx, dy) = (lx − x, ly − y)", names=("dx", "dy"), unit="m"))
 SQUARED = Step("q", "q = dx² + dy²", number(label="q = dx² + dy²"))
 ANGLE = Step("phi", "atan2(dy, dx) in radians", number(label="atan2(dy, dx)", unit="rad", angle="rad", periodic=True))
@@ -141,23 +142,39 @@ def _predicted_bearing(p, given=None):
     }
 
 
+SLOPE = Step("drdx", "∂r/∂dx", number(label="∂r/∂dx, the range's derivative by dx"))
+
+
 def _range_slope(p, given=None):
-    """4.3: H(1,1) = −dx/√q, how fast the range changes as the robot steps along x, in steps d and q."""
+    """4.3: H(1,1) = −dx/√q, how fast the range changes as the robot steps along x, in steps: the
+    offset d, then ∂r/∂dx = dx/√q (the derivative of √q), which the chain rule's ∂dx/∂x = −1 turns
+    into H(1,1) (each the learner's own when ``given`` has it)."""
     s = _sighting(p)
     d, offset = _offset(p, s, given)
-    q, squared = _squared(d, given)
-    H = _jacobian_of(d, q)
+    dx, dy = d
+    root = math.sqrt(dx * dx + dy * dy)
+    slope = dx / root
+    mine = chains.given(given, "drdx", slope)
+    h11 = _jacobian_of((s["dx"], s["dy"]), s["q"])[0][0]  # the printed H(1,1), from the printed offset
     deg = math.degrees(range_bearing(s["pose"], s["landmark"])[1])
     return {
-        "key": H[0][0],
+        "key": -mine,
         "slips": (
-            Slip(H[0][1], "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx."),
-            Slip(-d[0] / q, f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
-                            "it is the bearing row that divides by q."),
+            Slip(-dy / root, "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx."),
+            Slip(slope, "The sign is flipped: that is ∂r/∂dx = dx/√q. The robot's x enters through dx = lx − x, "
+                        "so the chain rule multiplies by ∂dx/∂x = −1: H(1,1) = −dx/√q."),
+            Slip(-dx / (root * root), f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
+                                      "it is the bearing row that divides by q."),
         ),
-        "steps": {"d": offset, "q": squared},
-        "values": {**s["values"], "h11": fmt(H[0][0]), "size": fmt(abs(H[0][0])),
-                   "cos_rel": relation(abs(H[0][0]), math.cos(math.radians(shown(deg)))),
+        "steps": {"d": offset, "drdx": {"key": slope, "slips": kept_slips(slope, (
+            (dx / (root * root), "That divides by q. The range is √q, and the derivative of √q by dx is "
+                                 "(1/(2√q))·2dx = dx/√q."),
+            (dy / root, "That is ∂r/∂dy = dy/√q. The derivative by dx has dx on top."),
+            (-slope, "That already has the minus of ∂dx/∂x = −1: that is H(1,1) itself. This step is the "
+                     "derivative by dx alone, dx/√q."),
+        ))}},
+        "values": {**s["values"], "h11": fmt(h11), "size": fmt(abs(h11)), "drel": relation(h11),
+                   "cos_rel": relation(abs(h11), math.cos(math.radians(shown(deg)))),
                    "phi": f"{fmt(deg)}°" if deg >= 0 else f"({fmt(deg)}°)"},
     }
 
@@ -225,7 +242,7 @@ EXERCISES = (
         answer=number(label="H(1,1)"),
         vary=Vary(_range_slope, *_SIGHTING,
                   valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(p["lx"] - p["x"]) != abs(p["ly"] - p["y"])),
-        steps=(OFFSET, SQUARED),
+        steps=(OFFSET, SLOPE),
     ),
     Derive(
         id="4.4",

@@ -1,5 +1,6 @@
-"""Chapter 4 · the measurement Jacobian H: the whole of it at a sighting (4.7, worked in steps d
-and q, as 4.1 and 4.3 are) and one entry of its position columns as a formula (4.8)."""
+"""Chapter 4 · the measurement Jacobian H: the whole of it at a sighting (4.7, worked in steps: the
+offset d, as in 4.1 to 4.3, then H's bearing row, where the chain rule goes wrong) and one entry of
+its position columns as a formula (4.8)."""
 
 import math
 
@@ -7,23 +8,52 @@ from ..answer_kinds.base import Slip
 from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
 from ..kinds.derive import Derive
-from ..number_format import fmt, relation
+from ..number_format import fmt, relation, relation_all
 from ..reference.ekf import measurement_jacobian
+from ..steps import Step
 from ..variants import Choice, Vary
+from .. import chains
 from . import grid
-from .ch4_ekf_update import (  # the chapter's sighting and its steps
-    OFFSET, SQUARED, _LANDMARK, _SIGHTING, _ahead, _jacobian_of, _offset, _sighting, _squared)
+from .checks import kept_slips
+from .ch4_ekf_update import (  # the chapter's sighting and its first step
+    OFFSET, _LANDMARK, _SIGHTING, _ahead, _jacobian_of, _offset, _sighting)
+
+BEARING_ROW = Step("bearing", "H's bearing row (∂φ/∂x, ∂φ/∂y, ∂φ/∂θ)",
+                   matrix(label="the bearing row of H: ∂φ/∂x, ∂φ/∂y, ∂φ/∂θ"))
+
+
+def _bearing_row(d, given):
+    """Step 2 of 4.7: H's bearing row from the learner's own offset ``d``, (dy/q, −dx/q, −1) with
+    q = dx² + dy², and the slips made at it; the learner's own row when ``given`` has it."""
+    dx, dy = d
+    q = dx * dx + dy * dy
+    root = math.sqrt(q)
+    key = ((dy / q, -dx / q, -1.0),)
+    slips = kept_slips(key, (
+        (((dy / root, -dx / root, -1.0),), "That divides by √q, as the range row does. The derivative of "
+                                           f"atan2(dy, dx) divides by q = dx² + dy² = {fmt(q)} itself."),
+        (((-dy / q, dx / q, -1.0),), "The x and y entries have the wrong sign: (−dy/q, dx/q) is atan2's "
+                                     "derivative by (dx, dy). The robot's x and y enter through dx = lx − x and "
+                                     "dy = ly − y, so the chain rule multiplies each by −1."),
+        (((dy / q, -dx / q, 0.0),), "∂φ/∂θ is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot "
+                                    "by δθ changes it by −δθ."),
+        (((-dx / q, -dy / q, -1.0),), "That follows the range row's pattern (−dx, −dy). The bearing turns, it "
+                                      "does not stretch: ∂φ/∂x = dy/q and ∂φ/∂y = −dx/q, dx and dy crossed over."),
+    ))
+    return chains.given(given, "bearing", key)[0], {"key": key, "slips": slips}
 
 
 def _whole_jacobian(p, given=None):
-    """4.7: the measurement Jacobian H of a landmark ahead and to the left of the robot, in steps
-    d and q (the learner's own when ``given`` has them)."""
+    """4.7: the measurement Jacobian H of a landmark ahead and to the left of the robot, in steps:
+    the offset d, then H's bearing row (the learner's own when ``given`` has them)."""
     s = _sighting(p)
     d, offset = _offset(p, s, given)
-    q, squared = _squared(d, given)
-    H = _jacobian_of(d, q)
     dx, dy = d
+    q = dx * dx + dy * dy
+    bearing, row = _bearing_row(d, given)
+    H = [_jacobian_of(d, q)[0], list(bearing)]
     root = math.sqrt(q)
+    printed = _jacobian_of((s["dx"], s["dy"]), s["q"])[1]
     return {
         "key": grid(H),
         "slips": (
@@ -39,8 +69,8 @@ def _whole_jacobian(p, given=None):
                  "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
                  "dx = lx − x, so moving the robot by +δx shrinks dx."),
         ),
-        "steps": {"d": offset, "q": squared},
-        "values": {**s["values"],
+        "steps": {"d": offset, "bearing": row},
+        "values": {**s["values"], "brel": relation_all(printed),
                    "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{s['q']}}} {relation(s['r'])} {fmt(s['r'])}"},
     }
 
@@ -145,7 +175,7 @@ EXERCISES = (
         title="The whole measurement Jacobian H",
         answer=matrix(label="H"),
         vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
-        steps=(OFFSET, SQUARED),
+        steps=(OFFSET, BEARING_ROW),
     ),
     Derive(
         id="4.8",
