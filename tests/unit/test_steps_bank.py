@@ -22,7 +22,7 @@ import random
 
 import pytest
 
-from workbook import bank, steps
+from workbook import bank, chains, steps
 from workbook.api import handle
 from workbook.bank import ch3_whole_matrices
 from workbook.number_format import bmatrix
@@ -127,7 +127,7 @@ def test_a_wrong_step_is_carried_into_every_later_step_and_the_answer(ex_id):
         printed, _ = EXPECTED[ex_id](v, {})
         for i, name in enumerate(names):
             kind = v.step_answers[name]
-            wrong = steps._status(kind, kind.typed(moved(kind.key, rng)))[1]  # as typed, and read back
+            wrong = chains.value_of(kind.reader.read(kind, kind.typed(moved(kind.key, rng))))  # as typed, and read back
             if _agrees(kind, wrong):
                 continue
             given = {name: wrong}
@@ -220,9 +220,9 @@ def test_a_wrong_3_7_is_carried_into_3_8_only_at_the_set_3_8_names():
         follows = v.answer.typed(theirs.key)
         if _agrees(v.answer, theirs.key):
             continue
-        here = chains.grade(v, follows, {"3.7": {"answer": typed, "variant": at}}, bank.variant)
+        here = v.grade(follows, given={"3.7": {"answer": typed, "variant": at}}, lookup=bank.variant)
         assert (here.status, here.tag, here.data["carried"]["variant"]) == ("incorrect", "carried", at), (seed, here)
-        other = chains.grade(v, follows, {"3.7": {"answer": typed, "variant": at + 1}}, bank.variant)
+        other = v.grade(follows, given={"3.7": {"answer": typed, "variant": at + 1}}, lookup=bank.variant)
         assert other.tag != "carried", (seed, other)
         carried += 1
     assert carried >= DRAWS * 0.9
