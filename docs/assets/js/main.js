@@ -15,9 +15,13 @@ import { initLoading } from "./loading.js";
 import { initJumps } from "./jump.js";
 import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
 import { strayVariantLinks } from "./variants.js";
+import { connectLms } from "./lms/session.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
+// In an LMS (the SCORM package): the session opens and merges the LMS's copy of the
+// progress now, before any exercise is drawn; null on the hosted site (lms/session.js).
+const lms = connectLms(progress);
 
 const exercises = () => document.querySelectorAll(`[${ATTR.exercise}]`);
 
@@ -42,8 +46,8 @@ if (typeof Worker === "undefined") {
   runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
   runtime.announce([...exercises()].map((el) => el.getAttribute(ATTR.exercise)));
 }
-window.workbook = { runtime, progress, checkScrollRegionsNow };
-registerOffline(siteRoot, progress);
+window.workbook = { runtime, progress, checkScrollRegionsNow, lms };
+if (!lms) registerOffline(siteRoot, progress); // no service worker in an LMS frame: the LMS serves the package from its own paths
 initLoading();
 initScrollRegions();
 initJumps();
