@@ -167,6 +167,7 @@ def test_launch_report_and_resume_on_another_computer(browser, lms, lms_server, 
     try:
         page2 = open_lms(other, lms_server)
         frame2 = launch(page2, version, stored=stored)
+        frame2.locator('[data-exercise-id="0.6"][data-wb-ready]').wait_for(state="attached")  # drawn (initExercise)
         assert ex(frame2, "0.1").get_attribute("data-state") == "correct"
         assert ex(frame2, "0.6").locator('[data-role="answer"]').input_value() == "7"
         assert ex(frame2, "0.3").locator(f'[data-role="choice"][value="{bank.get("0.3").answer}"]').is_checked()
@@ -247,4 +248,17 @@ def test_a_session_the_lms_will_not_open_is_said_and_the_page_works(lms):
     ready(frame)
     assert answer(frame, "0.1", "3") == "correct"
     assert calls(lms)["commit"] == 0
+    no_trouble(lms)
+
+
+def test_another_chapter_opened_inside_the_frame_does_not_report_as_the_launched_one(lms):
+    """The chapter-0 SCO's frame follows a link to chapter 1: that page opens no session of its own."""
+    frame = launch(lms, "1.2")
+    ready(frame)
+    assert answer(frame, "0.1", "3") == "correct"
+    frame.goto(frame.url.replace("00-rotations-2d", "01-transforms"))
+    frame.wait_for_function("(a) => document.documentElement.getAttribute(a) === 'failed'", arg=LMS_ATTR)
+    assert "not the chapter the course opened" in frame.locator('[data-wb-notice="lms"]').inner_text()
+    assert calls(lms)["init"] == 1 and calls(lms)["finish"] == 1  # the launched page finished its session on leaving
+    assert value(lms, "cmi.core.score.max") == str(len(CH0))  # still chapter 0's report
     no_trouble(lms)

@@ -97,6 +97,16 @@ export class ScormApi {
     return false;
   }
 
+  /** The page the session was launched for: marked on the API object by the first page that asks (`path`). */
+  pin(path) {
+    try {
+      if (!this.api.__workbookLaunch) Object.defineProperty(this.api, "__workbookLaunch", { value: path, configurable: true });
+      return this.api.__workbookLaunch ?? path;
+    } catch {
+      return path; // an API object that cannot be marked: every page is taken as launched
+    }
+  }
+
   initialize() {
     return this.ok(this.call("init", ""));
   }

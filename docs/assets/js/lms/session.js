@@ -63,6 +63,14 @@ class Session {
   }
 
   start() {
+    // The session belongs to the page the LMS launched: a page of another chapter, opened by a
+    // link inside the same frame, must not report itself as the launched SCO.
+    const launched = this.lms.pin(location.pathname);
+    if (launched !== location.pathname) {
+      this.setState(LMS.failed);
+      this.tell("This page is not the chapter the course opened, so its results are not sent to the course from here. Your work is kept in this browser and goes to the platform the next time you open a chapter from the course in this browser.");
+      return;
+    }
     if (!this.lms.initialize()) {
       this.setState(LMS.failed);
       this.tell(`The course's platform did not open a session for this page (${says(this.lms.lastError)}), so this chapter's results are not sent to it from here. Your work is kept in this browser, and goes to the platform the next time you open the chapter from the course in this browser.`);
