@@ -76,11 +76,11 @@ class Session {
       this.tell(`The course's platform did not open a session for this page (${says(this.lms.lastError)}), so this chapter's results are not sent to it from here. Your work is kept in this browser, and goes to the platform the next time you open the chapter from the course in this browser.`);
       return;
     }
-    this.setState(LMS.open);
     const mastery = this.lms.get(this.el.mastery);
     const threshold = mastery === "" || !Number.isFinite(Number(mastery)) ? null : Number(mastery) / (this.version === "1.2" ? 100 : 1);
     this.threshold = threshold === null ? null : Math.min(1, Math.max(0, threshold));
     this.restore();
+    this.setState(LMS.open);
     for (const id of this.ids) this.seen.set(id, { ...this.look(id), since: this.started });
     this.progress.onChange((id) => this.changed(id));
     window.addEventListener("pagehide", () => this.finish());
