@@ -7,7 +7,7 @@ import assert from "node:assert/strict";
 import { LIMIT_12, LIMIT_2004, decodeSuspend, encodeCompact, encodeSuspend } from "../../docs/assets/js/lms/suspend.js";
 import { cleanRecord, mergeRecord } from "../../docs/assets/js/progress-schema.js";
 import { MASTERED, isMastered, isSolved } from "../../docs/assets/js/review.js";
-import { chapterValues, duration2004, timespan12 } from "../../docs/assets/js/lms/report.js";
+import { chapterValues, duration2004, interactionValues, timespan12 } from "../../docs/assets/js/lms/report.js";
 
 const IDS = JSON.parse(process.env.WORKBOOK_IDS);
 const NOW = Date.now();
@@ -159,4 +159,13 @@ test("times in each version's format", () => {
   assert.equal(duration2004(0), "PT0S");
   assert.equal(duration2004(3_723_450), "PT1H2M3.45S");
   assert.equal(duration2004(60_000), "PT1M0S");
+  // 2004's timestamp: UTC, said so, to the hundredth of a second (the most SCORM's time type holds).
+  const at = Date.UTC(2026, 10, 27, 5, 52, 1, 239);
+  const v = Object.fromEntries(interactionValues("2004", 3, "0.4", { last: "1" }, { correct: true, latencyMs: 90_500, at }));
+  assert.equal(v["cmi.interactions.3.timestamp"], "2026-11-27T05:52:01.23Z");
+  assert.equal(v["cmi.interactions.3.latency"], "PT1M30.5S");
+  assert.equal(v["cmi.interactions.3.learner_response"], "1");
+  const none = Object.fromEntries(interactionValues("1.2", 3, "0.4", { last: "1" }, { correct: false, latencyMs: null, at }));
+  assert.equal(none["cmi.interactions.3.result"], "wrong");
+  assert.ok(!("cmi.interactions.3.latency" in none), "no latency for a check of an earlier session");
 });

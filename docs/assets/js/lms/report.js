@@ -108,7 +108,7 @@ export function interactionValues(version, i, id, record = {}, check = null) {
       [`${at}.student_response`, answer.slice(0, 255)], [`${at}.result`, check.correct ? "correct" : "wrong"],
       ...(check.latencyMs === null ? [] : [[`${at}.latency`, timespan12(check.latencyMs)]])];
   }
-  return [...base, [`${at}.objectives.0.id`, objectiveId(id)], [`${at}.timestamp`, new Date(check.at).toISOString().slice(0, 19)],
+  return [...base, [`${at}.objectives.0.id`, objectiveId(id)], [`${at}.timestamp`, `${new Date(check.at).toISOString().slice(0, 22)}Z`],
     [`${at}.learner_response`, answer.slice(0, 4000)], [`${at}.result`, check.correct ? "correct" : "incorrect"],
     ...(check.latencyMs === null ? [] : [[`${at}.latency`, duration2004(check.latencyMs)]]), [`${at}.description`, `Exercise ${id}`]];
 }
