@@ -5,6 +5,7 @@
 #   make browser  find a Chromium for the tests, or install Debian's (says so first)
 #   make bench    measure start-up and grading speed (writes bench-results/)
 #   make lock     re-lock requirements/*.in into requirements/*.lock (with hashes)
+#   make scorm    SCORM 1.2 and 2004 packages of the site for an LMS (writes dist/)
 #
 # One toolchain: Python 3.12 (the version Pyodide 0.27.7 runs; the build parses and
 # compiles Python for it), Node 20+. Every output below lists all of its inputs;
@@ -34,7 +35,7 @@ OVERRIDES := $(shell find docs/overrides -type f)
 PAGES := $(shell find docs -type f -not -path 'docs/assets/vendor/*' -not -path 'docs/assets/dist/*' \
   -not -path 'docs/assets/js/*' -not -path 'docs/hooks/*' -not -path 'docs/overrides/*' -not -name '*.pyc')
 
-.PHONY: serve site test test-unit test-browser bench deps browser clean dev lock python312
+.PHONY: serve site test test-unit test-browser bench deps browser clean dev lock python312 scorm
 
 # ---- Python 3.12 -------------------------------------------------------------------
 # Where none is found, the first install says so and provides one with uv (`make python312`).
@@ -127,6 +128,14 @@ serve: site
 dev: $(RUNTIME_STAMPS)
 	$(BIN)/mkdocs serve -a $(HOST):$(PORT)
 
+# ---- SCORM packages (README, "Use it in a course"): the built site/ zipped for an LMS ----
+# They zip site/ exactly as built, the same files `make test` tests (nothing is rebuilt for them).
+SCORM_ZIPS := dist/robotics-workbook-scorm12.zip dist/robotics-workbook-scorm2004.zip
+$(SCORM_ZIPS) &: site/.stamp scripts/scorm_package.py $(wildcard scripts/scorm/*.j2)
+	$(BIN)/python scripts/scorm_package.py --site site --out dist
+
+scorm: $(SCORM_ZIPS)
+
 # ---- Tests ----------------------------------------------------------------------------
 # A browser for the tests: Playwright's own where installed, else the system's chromium.
 # Where there is none, this installs Debian's chromium with apt-get, and says so first.
@@ -159,4 +168,4 @@ bench: site browser
 	cd scripts && ../$(BIN)/python -m bench $(BENCH_ARGS)
 
 clean:
-	rm -rf site build docs/assets/vendor docs/assets/dist
+	rm -rf site build docs/assets/vendor docs/assets/dist dist

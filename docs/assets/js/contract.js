@@ -12,6 +12,7 @@ export const TAG = names(Object.keys(contract.tags));
 export const ERROR = names(Object.keys(contract.errors));
 export const RUNTIME = names(contract.runtimeStates);
 export const OFFLINE = names(contract.offlineStates);
+export const LMS = names(contract.lmsStates); // <html data-workbook-lms>: the SCORM session (lms/session.js)
 export const BOOT_PHASE = names(contract.bootPhases);
 export const KINDS = Object.freeze([...contract.kinds]);
 export const ANSWER_KINDS = Object.freeze([...contract.answerKinds]);

@@ -16,9 +16,14 @@ import { initJumps } from "./jump.js";
 import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
 import { strayVariantLinks } from "./variants.js";
 import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
+import { findApi } from "./lms/api.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
+// In an LMS (the SCORM package, lms/): the session opens and merges the LMS's copy of the
+// progress before any exercise is drawn (initPage waits for it); the hosted site loads none of it.
+const inLms = Boolean(findApi(window));
+const lmsSession = inLms ? import("./lms/session.js").then((m) => m.connectLms(progress)) : null;
 
 const exercises = () => document.querySelectorAll(`[${ATTR.exercise}]`);
 
@@ -43,8 +48,11 @@ if (typeof Worker === "undefined") {
   runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
   runtime.announce([...exercises()].map((el) => el.getAttribute(ATTR.exercise)));
 }
-window.workbook = { runtime, progress, checkScrollRegionsNow };
-registerOffline(siteRoot, progress);
+window.workbook = { runtime, progress, checkScrollRegionsNow, lms: null };
+lmsSession?.then((session) => { window.workbook.lms = session; }, (err) => {
+  showNotice("lms", "Course platform", `The connection to the course's platform could not start (${err?.message || err}). Your work is kept in this browser.`);
+});
+if (!inLms) registerOffline(siteRoot, progress); // no service worker in an LMS frame: the LMS serves the package from its own paths
 initLoading();
 initScrollRegions();
 initJumps();
@@ -113,10 +121,11 @@ document.addEventListener("workbook:progress-problem", () => showProgressProblem
 document.addEventListener("workbook:progress-saved", () => ["full", "blocked"].forEach((kind) => clearNotice(`progress-${kind}`)));
 
 // mkdocs-material emits every page (the first and each instant navigation) on document$.
+const startPage = () => (lmsSession ? lmsSession.then(initPage, initPage) : initPage());
 if (window.document$ && typeof window.document$.subscribe === "function") {
-  window.document$.subscribe(() => initPage());
+  window.document$.subscribe(() => startPage());
 } else if (document.readyState === "loading") {
-  document.addEventListener("DOMContentLoaded", initPage);
+  document.addEventListener("DOMContentLoaded", startPage);
 } else {
-  initPage();
+  startPage();
 }

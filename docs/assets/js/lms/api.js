@@ -1,0 +1,131 @@
+// The SCORM run-time API, found the standard way and called through one small
+// adapter for both versions (SCORM 1.2's `API`, SCORM 2004's `API_1484_11`).
+//
+// Discovery follows the ADL algorithm: look at this window, then walk up
+// window.parent (at most MAX_HOPS frames), then do the same from the top
+// window's opener. A frame of another origin cannot be read: the walk stops
+// there. No API found: the page is not in an LMS and behaves as the hosted site.
+//
+// Why not a wrapper library: the npm SCO-side wrappers are single releases of
+// old code (pipwerks-scorm-api-wrapper depends on a git URL that `npm ci`
+// cannot fetch from the registry alone; @gamestdio/scorm is one TypeScript 2
+// release); the part this page needs is the walk and eight calls, here.
+
+const MAX_HOPS = 500;
+
+// What each version calls the same operation and the same data.
+const NAMES = {
+  "1.2": { init: "LMSInitialize", finish: "LMSFinish", get: "LMSGetValue", set: "LMSSetValue", commit: "LMSCommit",
+    error: "LMSGetLastError", errorText: "LMSGetErrorString", diagnostic: "LMSGetDiagnostic" },
+  "2004": { init: "Initialize", finish: "Terminate", get: "GetValue", set: "SetValue", commit: "Commit",
+    error: "GetLastError", errorText: "GetErrorString", diagnostic: "GetDiagnostic" },
+};
+const GLOBAL = { "2004": "API_1484_11", "1.2": "API" };
+
+/** The API object in `win` ({version, api}), or null; a window of another origin reads as none. */
+function apiIn(win) {
+  try {
+    for (const version of ["2004", "1.2"]) {
+      const api = win[GLOBAL[version]];
+      if (api && typeof api[NAMES[version].init] === "function") return { version, api };
+    }
+  } catch {
+    /* another origin: not ours to read */
+  }
+  return null;
+}
+
+function walkUp(win) {
+  for (let hops = 0; win && hops <= MAX_HOPS; hops += 1) {
+    const found = apiIn(win);
+    if (found) return found;
+    let parent = null;
+    try {
+      parent = win.parent;
+    } catch {
+      return null;
+    }
+    if (!parent || parent === win) return null;
+    win = parent;
+  }
+  return null;
+}
+
+/** The LMS's API seen from `win` ({version, api}), or null outside an LMS. */
+export function findApi(win = window) {
+  const found = walkUp(win);
+  if (found) return found;
+  try {
+    const opener = win.top?.opener;
+    return opener ? walkUp(opener) : null;
+  } catch {
+    return null;
+  }
+}
+
+/** One SCORM session over a found API: every call says whether it worked, failures keep their error. */
+export class ScormApi {
+  constructor({ version, api }) {
+    this.version = version;
+    this.api = api;
+    this.names = NAMES[version];
+    this.lastError = null; // {code, text, element} of the last call that failed
+  }
+
+  call(op, ...args) {
+    let result;
+    try {
+      result = this.api[this.names[op]](...args);
+    } catch (err) {
+      this.lastError = { code: "", text: `the platform's ${this.names[op]} failed (${err?.message || err})`, element: args[0] };
+      return null;
+    }
+    return result;
+  }
+
+  ok(result, element = "") {
+    if (String(result) === "true") return true;
+    let code = "";
+    let text = "";
+    try {
+      code = String(this.api[this.names.error]() ?? "");
+      text = String(this.api[this.names.errorText](code) ?? "");
+    } catch {
+      /* an API that cannot even say its error */
+    }
+    if (result !== null || !this.lastError) this.lastError = { code, text, element };
+    return false;
+  }
+
+  /** The page the session was launched for: marked on the API object by the first page that asks (`path`). */
+  pin(path) {
+    try {
+      if (!this.api.__workbookLaunch) Object.defineProperty(this.api, "__workbookLaunch", { value: path, configurable: true });
+      return this.api.__workbookLaunch ?? path;
+    } catch {
+      return path; // an API object that cannot be marked: every page is taken as launched
+    }
+  }
+
+  initialize() {
+    return this.ok(this.call("init", ""));
+  }
+
+  finish() {
+    return this.ok(this.call("finish", ""));
+  }
+
+  commit() {
+    return this.ok(this.call("commit", ""));
+  }
+
+  /** The value of `element` ("" when unset or unreadable). */
+  get(element) {
+    const value = this.call("get", element);
+    return value === null || value === undefined ? "" : String(value);
+  }
+
+  set(element, value) {
+    return this.ok(this.call("set", element, String(value)), element);
+  }
+}
