@@ -6,7 +6,7 @@ worker's ``draw`` fill them):
 
 - the derivation's ``**Answer:**`` line ends with the worked answer itself
   (the ``{{worked}}`` placeholder, which the answer kind fills), and the grader
-  accepts what it prints;
+  accepts what it prints, with the words after it (``300 variables``, ``0.5 m``);
 - "Type it as" (the worked answer) is accepted;
 - every relation ``A = B`` or ``A ≈ B`` between two numeric sides, in the
   statement, the hint and the derivation, holds to the printed precision
@@ -66,6 +66,12 @@ def answer_line_problems(v, solution_html: str) -> list[str]:
     verdict = v.check(printed)
     if verdict.status != "correct":
         out.append(f"the Answer line's {printed!r} is graded {verdict.status}: {verdict.message}")
+    words = re.sub(r"<[^>]*>", "", found[0].rsplit("</span>", 1)[-1]).strip().rstrip(".").strip()
+    if words and v.answer_kind == "number":  # "$300$ variables", "$x = 0.5$ m": the line as a learner copies it
+        verdict = v.check(f"{printed.rstrip('. ')} {words}")
+        if verdict.status != "correct":
+            out.append(f"the Answer line's {printed!r} with its words {words!r} is graded {verdict.status}: "
+                       f"{verdict.message}")
     return out
 
 
