@@ -114,8 +114,11 @@ class Parser:
             if after[2]:
                 raise InvalidAnswer("One number is expected; there is a space between two numbers.")
             raise not_an_expression(self.g)
+        if after[0] == "num" and before[0] == "unit" and before[1] == "°":
+            raise InvalidAnswer("Write an angle in degrees, minutes and seconds with their marks, 53°7′48″ "
+                                "(or 53°7'48\"), or in decimal degrees: 53.13°.")
         if after[0] == "num" and before[0] in ("var", "const", "unit"):
-            raise InvalidAnswer(f"Put * between “{before[1] if before[0] != 'unit' else 'the unit'}” and the number after it.")
+            raise InvalidAnswer(f"Put * between “{before[1]}” and the number after it.")
 
     def unary(self) -> tuple:
         tok = self.peek()
