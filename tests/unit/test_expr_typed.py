@@ -67,3 +67,44 @@ def test_following_the_advice_on_a_formula_is_read():
             parse_formula(typed, grammar_vars)
         for form in _follow(typed, str(refused.value)):
             parse_formula(form, grammar_vars)
+
+
+# ---------------------------------------------------------------- a function of one symbol, as typeset
+
+def _same(a: str, b: str, variables=("v", "theta", "dt", "x", "y")) -> bool:
+    fa, fb = parse_formula(a, variables), parse_formula(b, variables)
+    point = {"v": 0.7, "theta": 1.3, "dt": 0.4, "x": 0.9, "y": -1.7}
+    return math.isclose(fa.evaluate(point), fb.evaluate(point), rel_tol=1e-12)
+
+
+@pytest.mark.parametrize("typed,meant", [
+    ("-v sin θ dt", "-v*sin(theta)*dt"), (r"-v\sin\theta\,dt", "-v*sin(theta)*dt"),
+    ("v cos θ dt", "v*cos(theta)*dt"), (r"v\cos\theta\,dt", "v*cos(theta)*dt"), ("sin θ y", "sin(theta)*y"),
+    (r"\sin\theta\,y", "sin(theta)*y"), ("sin 2θ", "sin(2*theta)"), (r"\sin 2\theta", "sin(2*theta)"),
+    ("sin 2θ dt", "sin(2*theta)*dt"), ("-sin θ cos θ", "-sin(theta)*cos(theta)"), ("cos x dt^2", "cos(x)*dt^2"),
+    ("sin 30° x", "sin(pi/6)*x"), ("sin -θ dt", "sin(-theta)*dt"),
+])
+def test_a_function_of_one_symbol_is_read_as_the_page_typesets_it(typed, meant):
+    assert _same(typed, meant), (typed, meant)
+
+
+@pytest.mark.parametrize("typed,fragment", [
+    ("-v sin θdt", "sin(θ*dt) or sin(θ)*dt"), ("sin θ^2", "parentheses"), ("sin θ (dt + 1)", "parentheses"),
+    ("cos pi/3", "cos(pi/3) or cos(pi)/3"), ("sin 2 x^2", "parentheses"), ("sin x 2", "parentheses"),
+])
+def test_ambiguous_functions_still_get_a_clear_message(typed, fragment):
+    with pytest.raises(InvalidAnswer) as refused:
+        parse_formula(typed, ("v", "theta", "dt", "x", "y"))
+    assert fragment in str(refused.value)
+    for form in _follow(typed, str(refused.value)):
+        parse_formula(form, ("v", "theta", "dt", "x", "y"))
+
+
+def test_3_9_accepts_its_derivation_typed_and_pasted():
+    from workbook import bank
+    for seed in range(40):
+        v = bank.get("3.9").variant(seed)
+        key = v.worked_text()
+        for typed in (key.replace("*sin(theta)*", " sin θ ").replace("*cos(theta)*", " cos θ "),
+                      key.replace("*sin(theta)*", r"\sin\theta\,").replace("*cos(theta)*", r"\cos\theta\,")):
+            assert v.check(typed).status == "correct", (seed, typed, v.check(typed).message)
