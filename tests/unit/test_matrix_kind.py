@@ -317,3 +317,16 @@ def test_any_printed_matrix_reads_back(rows):
 def test_swapped_components_of_a_named_vector_are_named():
     verdict = pose().check("x = 3.5, y = 5.866, θ = 0.6236")
     assert verdict.tag == "rows-swapped" and verdict.message == "The values of x and y are swapped."
+
+
+@pytest.mark.parametrize("typed", ["[[0, -1], [1, 0]]", "0 -1; 1 0", "{{0,-1},{1,0}}", "[0 -1; 1 0]",
+                                   r"\begin{bmatrix} 0 & -1 \\ 1 & 0 \end{bmatrix}", "array([[0, -1], [1, 0]])"])
+@pytest.mark.parametrize("box", [(0, 0), (0, 1), (1, 0), (1, 1)])
+def test_a_whole_matrix_typed_into_one_box_is_read_as_if_pasted(typed, box):
+    """Issue 28: the page sends the grid with the whole matrix in one box and the others empty."""
+    ans = matrix_kind(label="R").build("t.1", key=((0.0, -1.0), (1.0, 0.0)))
+    grid = [["", ""], ["", ""]]
+    grid[box[0]][box[1]] = typed
+    assert ans.check(grid).status == "correct", typed
+    one = [["cos 30°", ""], ["", ""]]  # one value in one box stays that box's value
+    assert ans.check(one).data["invalid"] == [[1, 2], [2, 1], [2, 2]]
