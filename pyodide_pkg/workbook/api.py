@@ -52,7 +52,7 @@ from .assignment import slip_name
 from .build_plain import plain
 from .contract import LIMIT, OPS
 from .variants import VariantError, check_seed, fill
-from .verdict import GradingError, fail, ok, quote
+from .verdict import GradingError, Verdict, fail, ok, quote
 
 REQUEST_CAP = 2_000_000  # characters of a request (a Build program may be long)
 ANSWER_CAP = LIMIT.answer  # characters of an answer's text
@@ -214,7 +214,19 @@ def _check_given(sent: dict[str, Any]) -> None:
             check_seed(earlier.get("variant", 0))
         except ValueError as err:
             raise GradingError("bad-request", f"This request's earlier answer to {quote(source)}: {err}.") from None
-        _check_answer(earlier.get("answer"))
+        try:
+            _check_answer(earlier.get("answer"))
+        except TooLong as err:  # the earlier exercise's answer, not the one being checked
+            raise GradingError("bad-request", f"This request's earlier answer to {quote(source)}: {err.message}") from None
+
+
+class TooLong(GradingError):
+    """An answer's text is over :data:`ANSWER_CAP`: a learner can type or paste that, so a grade or a read
+    answers with the learner's verdict (``invalid``), not a request error."""
+
+    def __init__(self, length: int):
+        super().__init__("bad-request", f"This answer is too long to read ({length:,} characters; at most "
+                         f"{ANSWER_CAP:,}): type the value asked for, one number or expression per box.")
 
 
 def _check_answer(answer: Any, depth: int = 0) -> None:
@@ -223,8 +235,7 @@ def _check_answer(answer: Any, depth: int = 0) -> None:
         return
     if isinstance(answer, str):
         if len(answer) > ANSWER_CAP:
-            raise GradingError("bad-request", f"This answer is too long to read ({len(answer):,} characters; "
-                               f"at most {ANSWER_CAP:,}).")
+            raise TooLong(len(answer))
         return
     if isinstance(answer, list) and depth < 2 and len(answer) <= 1000:
         for item in answer:
@@ -241,6 +252,10 @@ def dispatch(request: Any) -> dict[str, Any]:
     try:
         _well_formed(request)
         return ok(HANDLERS[op](request))
+    except TooLong as err:
+        if op == "grade":
+            return ok(Verdict("invalid", err.message).to_dict())
+        return ok({"message": err.message}) if op == "read" else fail(err.kind, err.message)
     except GradingError as err:
         return fail(err.kind, err.message)
 

@@ -93,15 +93,31 @@ def is_close_miss(value: float, key: float, rel: float = REL, half_unit: float |
     False
     >>> is_close_miss(0.003, 0.0), is_close_miss(0.02, 1e-17), is_close_miss(0.0005, 0.0)
     (True, False, False)
+    >>> is_close_miss(0.0, -0.1, half_unit=0.5)  # 0 is no rounding of −0.1
+    False
     """
     if not (math.isfinite(value) and math.isfinite(key)) or agrees(value, key, rel):
         return False
     key = clean(key)
-    if half_unit is not None and key != 0.0 and abs(value - key) <= half_unit * (1 + 1e-9):
+    if half_unit is not None and is_rounding(value, key, half_unit):
         return True
     if key == 0.0:
         return abs(value) <= 5 * ZERO_FLOOR
     return abs(value - key) <= CLOSE * abs(key)
+
+
+def is_rounding(value: float, key: float, half_unit: float) -> bool:
+    """``value`` is ``key`` rounded to the last digit typed (``half_unit``: half a unit of that digit) with at
+    least one significant figure: not zero, the key's sign, within half a unit. 0 is no rounding of −0.1.
+
+    >>> is_rounding(0.12, 0.12341, 0.005), is_rounding(0.0, -0.1, 0.5), is_rounding(0.1, -0.1, 0.5)
+    (True, False, False)
+    >>> is_rounding(-0.1, -0.1234, 0.05), is_rounding(-0.2, -0.1234, 0.05)
+    (True, False)
+    """
+    key = clean(key)
+    return (key != 0.0 and value != 0.0 and (value > 0) == (key > 0)
+            and abs(value - key) <= half_unit * (1 + 1e-9))
 
 
 def is_sign_slip(value: float, key: float, rel: float = REL) -> bool:

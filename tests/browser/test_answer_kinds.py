@@ -213,3 +213,30 @@ def test_a_matrix_answer_comes_back_after_a_reload_and_through_a_progress_file(p
     el = exercise(page, ex.id)
     assert el.get_attribute(ATTR.state) == STATE.correct
     expect(entry(el, 2, 1)).to_have_value(key[1][0])
+
+
+def test_a_whole_matrix_typed_into_one_entry_is_read_as_a_paste(page, site_url):
+    """Issue 28: typing (not pasting) [[0, -1], [1, 0]] into one entry was refused, while the label invites pasting."""
+    ex = bank.get("0.7")  # 2×2
+    key = grid_text(ex.answer.cleaned)
+    whole = "[" + ", ".join("[" + ", ".join(row) + "]" for row in key) + "]"
+    open_chapter(page, site_url, 0)
+    el = exercise(page, ex.id)
+    el.scroll_into_view_if_needed()
+
+    entry(el, 1, 1).click()
+    page.keyboard.type(whole)
+    page.keyboard.press("Tab")  # leaving the entry splits it over the grid
+    page.wait_for_function("el => el.value !== ''", arg=entry(el, 2, 2).element_handle())
+    assert entry_values(el) == key
+    assert check(el) == STATE.correct
+
+    fill_matrix(el, [[""] * 2 for _ in range(2)])
+    transposed = [list(col) for col in zip(*key)]
+    entry(el, 1, 2).click()
+    page.keyboard.type("; ".join(" ".join(row) for row in transposed))
+    page.keyboard.press("Enter")  # Check straight away: graded as the whole matrix, the marks where they belong
+    page.wait_for_function("el => el.value !== ''", arg=entry(el, 2, 2).element_handle())
+    el.locator(role("feedback")).filter(has_text="transpose").wait_for()
+    assert entry_values(el) == transposed
+    assert marked_entries(el) == wrong_entries(ex, [[float(v) for v in row] for row in transposed])

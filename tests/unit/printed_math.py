@@ -165,3 +165,19 @@ def check_formula(tex: str) -> list[str]:
                     problems.append(f"{a_tex.strip()} {rel} {b_tex.strip()}: {va!r} vs {vb!r} (room {room:.2g})")
                     break
     return problems
+
+
+def computed(tex: str) -> Value | None:
+    """A side that is arithmetic on printed numbers (``0.8192 - 0.8660``, or a matrix with such an entry), read
+    as numbers; None for a side of single printed numbers or of no numbers."""
+    value = read_side(tex)
+    if value is None:
+        return None
+    tex = tex.strip().rstrip(".").strip()
+    if "\\begin" in tex:
+        entries = [e for row in split_matrix(tex) for e in row]
+    elif tex[:1] + tex[-1:] in ("()", "[]"):
+        entries = [e for e, _ in _top_split(tex[1:-1], re.compile(","))]
+    else:
+        entries = [tex]
+    return None if all(_SINGLE.fullmatch(e.strip()) for e in entries) else value

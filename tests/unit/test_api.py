@@ -45,3 +45,24 @@ def test_bad_requests_get_an_error_envelope():
     ]
     for request, kind in cases:
         assert call(request)["error"]["kind"] == kind, request
+
+
+def test_an_answer_over_the_cap_is_an_invalid_verdict_the_page_shows():
+    """Issue 26: 10,001 characters typed or pasted came back as a request error, which the page cannot
+    show as the exercise's feedback."""
+    from workbook import bank
+    from workbook.api import ANSWER_CAP
+    long = "1" * (ANSWER_CAP + 1)
+    derive = {ex.answer_kind: ex.id for ex in bank.all_exercises() if ex.kind == "derive"}
+    for kind, ex_id in derive.items():
+        answer = long if kind != "matrix" else [[long] * len(row) for row in bank.get(ex_id).answer.key]
+        for sent in (answer, long):
+            value = call({"op": "grade", "exercise": ex_id, "answer": sent})["value"]
+            assert value["status"] == "invalid" and "too long" in value["message"], (kind, value)
+        read = call({"op": "read", "exercise": ex_id, "answer": long})["value"]
+        assert "too long" in read["message"]
+        stepped = next(ex for ex in bank.all_exercises() if ex.kind == "derive" and ex.steps)
+        value = call({"op": "grade", "exercise": stepped.id, "answer": long, "step": stepped.steps[0].name})["value"]
+        assert value["status"] == "invalid" and "too long" in value["message"]
+    earlier = call({"op": "grade", "exercise": "7.2", "answer": "1", "given": {"7.1": {"answer": long, "variant": 0}}})
+    assert earlier["error"]["kind"] == "bad-request" and "earlier answer" in earlier["error"]["message"]

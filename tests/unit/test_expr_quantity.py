@@ -151,7 +151,7 @@ def test_every_degree_like_sign(sign):
     ("2,5", "write 2.5, not 2,5"), ("0,25", "write 0.25"),
     ("45 + 45°", "every term its unit"), ("1 m + 20", "every term its unit"), ("2 m + 3 s", "a length and a time"),
     ("sin(2 m)", "needs an angle"), ("exp(2 s)", "plain number"), ("°", "before the unit"), ("m", "before the unit"),
-    ("cos 2x", "Unknown name"), ("cos 2 pi", "parentheses"), ("cos pi/3", "cos(pi/3) or cos(pi)/3"), ("sin 30 45", "parentheses"), ("x = ", "after “=”"),
+    ("cos 2x", "Unknown name"), ("cos 2 pi^2", "parentheses"), ("cos pi/3", "cos(pi/3) or cos(pi)/3"), ("sin 30 45", "parentheses"), ("x = ", "after “=”"),
     ("a = b = 2", "Type just the value"), ("2 ^ (1 m)", "exponent cannot have a unit"), ("1 M", "Unknown name"),
 ])
 def test_unit_and_comma_mistakes_say_what_to_do(text, fragment):

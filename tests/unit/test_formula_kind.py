@@ -45,7 +45,7 @@ def test_names_and_implicit_products(text, variables, names):
 
 @pytest.mark.parametrize("text,fragment", [
     ("L1 cos(x)", "Unknown name “x”"), ("L1 cos(x)", "theta1, theta2"), ("L1 cos(x)", "θ₁"),
-    ("cos 2θ1", "parentheses"), ("sin θ1 L1", "parentheses"), ("sin θ1^2", "parentheses"),
+    ("sin θ1L1", "sin(θ1*L1) or sin(θ1)*L1"), ("cos 2 θ1^2", "parentheses"), ("sin θ1^2", "parentheses"),
     ("θ1 2", "Put *"), ("", "Type an answer"), ("L1 +", "missing"), ("L1 cos(θ1", "not closed"),
     ("L1 m", "Unknown name"), ("L1 = L2 = 2", "Type just the value"), ("[L1, L2]", "not a list"),
     ("foo(L1)", "Unknown name"),

@@ -261,6 +261,22 @@ def test_one_value_pasted_into_one_box_stays_in_that_box():
     assert ans.split("0 -1; 1 0") == {"entries": [["0", "-1"], ["1", "0"]]}
 
 
+@pytest.mark.parametrize("function", ["sin", "cos", "tan", "sqrt", "√", "exp", "ln", "abs", "\\cos", "arctan"])
+@pytest.mark.parametrize("argument", ["30°", "120°", "θ", "0.5", "pi", "2", "30 deg", "\\pi"])
+@pytest.mark.parametrize("sign", ["", "-", "2 * ", "0.5*"])
+def test_a_function_of_a_spaced_argument_stays_one_entry(function, argument, sign):
+    """1.6: cos 30° or -sin 120° pasted into one box was split into "1×2 (2 entries)"."""
+    ans = matrix_kind(label="R").build("t.1", key=((0.0, -1.0), (1.0, 0.0)))
+    text = f"{sign}{function} {argument}"
+    assert ans.split(text) == {"cell": text}, text
+
+
+def test_a_row_of_functions_still_splits_into_its_entries():
+    ans = matrix_kind(label="R").build("t.1", key=((0.0, -1.0), (1.0, 0.0)))
+    assert ans.split("cos 30° -sin 30°; sin 30° cos 30°") == {
+        "entries": [["cos 30°", "-sin 30°"], ["sin 30°", "cos 30°"]]}
+
+
 def test_entries_with_units_are_converted_and_a_wrong_unit_is_named():
     ans = matrix_kind(label="x′", units=("m", "m", "rad")).build("t.1", key=POSE)
     assert ans.check([["586.6 cm"], ["3.5 m"], ["35.73°"]]).status == "correct"
@@ -301,3 +317,16 @@ def test_any_printed_matrix_reads_back(rows):
 def test_swapped_components_of_a_named_vector_are_named():
     verdict = pose().check("x = 3.5, y = 5.866, θ = 0.6236")
     assert verdict.tag == "rows-swapped" and verdict.message == "The values of x and y are swapped."
+
+
+@pytest.mark.parametrize("typed", ["[[0, -1], [1, 0]]", "0 -1; 1 0", "{{0,-1},{1,0}}", "[0 -1; 1 0]",
+                                   r"\begin{bmatrix} 0 & -1 \\ 1 & 0 \end{bmatrix}", "array([[0, -1], [1, 0]])"])
+@pytest.mark.parametrize("box", [(0, 0), (0, 1), (1, 0), (1, 1)])
+def test_a_whole_matrix_typed_into_one_box_is_read_as_if_pasted(typed, box):
+    """Issue 28: the page sends the grid with the whole matrix in one box and the others empty."""
+    ans = matrix_kind(label="R").build("t.1", key=((0.0, -1.0), (1.0, 0.0)))
+    grid = [["", ""], ["", ""]]
+    grid[box[0]][box[1]] = typed
+    assert ans.check(grid).status == "correct", typed
+    one = [["cos 30°", ""], ["", ""]]  # one value in one box stays that box's value
+    assert ans.check(one).data["invalid"] == [[1, 2], [2, 1], [2, 2]]

@@ -110,3 +110,36 @@ def test_the_workbook_s_degree_exercises_name_it():
 def test_a_slip_typed_to_three_figures_is_still_named():
     ans = answer(3.0, slips=(Slip(-1.23456, "That turns the other way."),))
     assert ans.check("-1.23").message == "That turns the other way."
+
+
+# ---------------------------------------------------------------- "close" only for a real rounding
+
+@settings(max_examples=300, deadline=None)
+@given(st.floats(min_value=-50, max_value=50, allow_nan=False).filter(lambda k: abs(k) > 1e-3),
+       st.integers(min_value=1, max_value=2))
+def test_close_by_rounding_only_when_the_value_typed_is_a_rounding_of_the_key(key, figures):
+    """A rounding of the key to 1 or 2 significant figures is "close"; 0, the other sign, or the rounding
+    at the wrong digit never are (unless within the 2 % band, which they are not here)."""
+    from workbook.answer_kinds.matrix import matrix
+    ans, grid = answer(key), matrix(label="M").build("t.2", key=((key, 1.0),))
+    rounded = float(f"{key:.{figures - 1}e}")
+    if abs(rounded - key) > 0.02 * abs(key):  # the rounding itself is outside the 2 % band
+        text = f"{rounded:.{figures - 1}e}"
+        assert ans.check(text).tag == "close", (key, text)
+        assert grid.check([[text, "1"]]).data.get("close") == [[1, 1]], (key, text)
+    digit = 10.0 ** (math.floor(math.log10(abs(key))) - figures + 1)
+    for wrong in ("0", "0.0", "-0", f"{-rounded:.{figures - 1}e}", repr(rounded + 3 * digit)):
+        if abs(float(wrong) - key) <= 0.02 * abs(key):
+            continue
+        said = ans.check(wrong)
+        assert said.tag != "close" and "Close" not in said.message, (key, wrong, said.message)
+        assert not grid.check([[wrong, "1"]]).data.get("close"), (key, wrong)
+
+
+def test_zero_typed_for_a_key_of_minus_a_tenth_is_plain_wrong():
+    """3.8 variant 0: 0 for −0.1 was "close: round correctly to 3 significant figures"."""
+    v = bank.get("3.8").variant(0)
+    typed = [["0" if abs(x + 0.1) < 1e-12 else fmt(x, significant=7) for x in row] for row in v.answer.key]
+    said = v.check(typed)
+    assert said.status == "incorrect" and said.tag != "close" and "close" not in said.message, said.message
+    assert said.data["wrong"] == [[1, 3], [3, 1]] and not said.data.get("close")

@@ -6,11 +6,15 @@ worker's ``draw`` fill them):
 
 - the derivation's ``**Answer:**`` line ends with the worked answer itself
   (the ``{{worked}}`` placeholder, which the answer kind fills), and the grader
-  accepts what it prints;
+  accepts what it prints, with the words after it (``300 variables``, ``0.5 m``);
 - "Type it as" (the worked answer) is accepted;
 - every relation ``A = B`` or ``A ≈ B`` between two numeric sides, in the
   statement, the hint and the derivation, holds to the printed precision
-  (``printed_math.check_formula``).
+  (``printed_math.check_formula``);
+- arithmetic the hint or the derivation prints on its own printed numbers
+  (``0.8192 - 0.8660``) that stands for the answer, done as printed and typed
+  with every digit it gives (``-0.0468``), is accepted: the page never prints
+  values too rounded to reach the key.
 
 ``python tests/unit/test_printed.py`` prints the counts (draws, relations
 checked) and every failure, for a closing note.
@@ -27,7 +31,7 @@ import pytest
 from workbook import bank
 
 from exercise_text import load_all  # docs/hooks/exercise_text.py
-from printed_math import check_formula, math_of, relations, read_side
+from printed_math import check_formula, computed, math_of, relations, read_side
 
 ROOT = Path(__file__).resolve().parents[2]
 SEEDS = range(1000)
@@ -62,6 +66,40 @@ def answer_line_problems(v, solution_html: str) -> list[str]:
     verdict = v.check(printed)
     if verdict.status != "correct":
         out.append(f"the Answer line's {printed!r} is graded {verdict.status}: {verdict.message}")
+    words = re.sub(r"<[^>]*>", "", found[0].rsplit("</span>", 1)[-1]).strip().rstrip(".").strip()
+    if words and v.answer_kind == "number":  # "$300$ variables", "$x = 0.5$ m": the line as a learner copies it
+        verdict = v.check(f"{printed.rstrip('. ')} {words}")
+        if verdict.status != "correct":
+            out.append(f"the Answer line's {printed!r} with its words {words!r} is graded {verdict.status}: "
+                       f"{verdict.message}")
+    return out
+
+
+def computed_problems(v, filled) -> list[str]:
+    """The answer computed from the printed numbers of the hint and the derivation, where they print the sum."""
+    key = v.answer.key
+    if v.answer_kind == "number":
+        flat = [key]
+    elif v.answer_kind == "matrix":
+        flat = [x for row in key for x in row]
+    else:
+        return []
+    out = []
+    for tex in math_of(filled.hint) + math_of(filled.solution):
+        for chain in relations(tex):
+            for side, _ in chain:
+                got = computed(side)
+                if got is None or len(got.values) != len(flat) or not all(
+                        abs(a - k) <= s + 2e-3 * abs(k) for a, s, k in zip(got.values, got.slack, flat)):
+                    continue  # not arithmetic on printed numbers, or not the answer
+                typed = [f"{x:.12g}" for x in got.values]
+                if v.answer_kind == "matrix":
+                    c = v.answer.shape[1]
+                    typed = [typed[i:i + c] for i in range(0, len(typed), c)]
+                verdict = v.check(typed if v.answer_kind == "matrix" else typed[0])
+                if verdict.status != "correct":
+                    out.append(f"{side.strip()[:70]!r} computed as printed, {typed}, is graded {verdict.status}: "
+                               f"{verdict.message}")
     return out
 
 
@@ -72,6 +110,7 @@ def problems_of(ex) -> tuple[list[str], int, int]:
         n_draws += 1
         filled = TEXTS[ex.id].filled(v.values)
         here = [f"Answer line: {p}" for p in answer_line_problems(v, filled.solution)]
+        here += computed_problems(v, filled)
         worked = v.check(v.worked_text() if v.answer_kind != "matrix" else v.answer.typed(v.answer.key))
         if worked.status != "correct":
             here.append(f"type it as {v.worked_text()!r}: {worked.status}")

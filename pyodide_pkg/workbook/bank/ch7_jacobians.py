@@ -26,6 +26,7 @@ from . import column, grid
 from .checks import apart
 from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
 from .checks import kept_slips
+from ..tolerance import agrees, clean
 
 _BUGGY = """\
 import math
@@ -219,14 +220,32 @@ def _unit_jacobian(p, given=None):
         "values": {
             "deg1": "" if t1 == 0 else "°", "t12": fmt(t1 + t2), "a12": _angle(t1 + t2, tex=True),
             "sum12": f"{fmt(t1)}{'' if t1 == 0 else '°'} {signed(t2)}°",
-            "s1": fmt(s1), "c1": fmt(c1), "s12": fmt(s12), "c12": fmt(c12),
-            "a11": fmt(-s1), "b11": signed(-s12), "b21": signed(c12),
+            **_trig_terms(s1, c1, s12, c12, J),
             "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
             "x": fmt(x), "y": fmt(y), "link2": _link2_direction(t1 + t2),
             "det": fmt(jacobian_det(1, 1, r1, r2)),
             "as71": " as in exercise 7.1" if (t1, t2) == (0, 90) else " a new pose",
         },
     }
+
+
+def _trig_terms(s1, c1, s12, c12, J):
+    """7.6's printed sines and cosines, to the fewest figures (at least 4) with which the sums the
+    hint and the derivation print, −s1 − s12 and c1 + c12, land on J's entries within the
+    tolerance: where the two terms nearly cancel (0.8192 − 0.8660 for −0.04687), more figures.
+
+    >>> _trig_terms(-0.57358, 0.81915, -0.5, -0.86603, ((1.07358, 0.5), (-0.04688, -0.86603)))["c1"]
+    '0.81915'
+    """
+    for figures in range(4, 12):
+        s1_, c1_, s12_, c12_ = (fmt(v, significant=figures) for v in (s1, c1, s12, c12))
+        sums = (-float(s1_) - float(s12_), float(c1_) + float(c12_))
+        if all(agrees(got, clean(want)) for got, want in zip(sums, (J[0][0], J[1][0]))):
+            break
+    b11, b21 = fmt(-s12, significant=figures), c12_
+    return {"s1": s1_, "c1": c1_, "s12": s12_, "c12": c12_, "a11": fmt(-s1, significant=figures),
+            "b11": f"- {b11[1:]}" if b11.startswith("-") else f"+ {b11}",
+            "b21": f"- {b21[1:]}" if b21.startswith("-") else f"+ {b21}"}
 
 
 def _well_posed_jacobian(p):

@@ -76,7 +76,7 @@ def _convert(s: str) -> str:
             inner = _convert(arg).strip()
             if ch == "_":
                 out.append("_" + inner)
-            elif inner in ("°", "ᵀ", "′"):
+            elif inner in ("°", "ᵀ") or (inner and set(inner) == {"′"}):  # 7^{\prime}, 48^{\prime\prime}
                 out.append(inner)
             else:
                 out.append(f"^({inner})")

@@ -23,7 +23,8 @@ from __future__ import annotations
 
 import re
 
-from .grammar import MAX_LENGTH, InvalidAnswer
+from .. import units as U
+from .grammar import ALIASES, FUNCTIONS, MAX_LENGTH, InvalidAnswer
 from .tokens import canonical_name, normalise
 
 Grid = list[list[str]]
@@ -48,11 +49,18 @@ def _split_top(s: str, seps: str) -> list[str]:
     return out
 
 
+_FUNCTION_END = re.compile(r"(?:^|[^A-Za-z])(?:%s)$" % "|".join(sorted(
+    (*FUNCTIONS, *ALIASES, "√"), key=len, reverse=True)))
+
+
 def _split_row(row: str) -> list[str]:
-    """Entries of one row: at commas if it has any, else at spaces the way MATLAB reads them.
+    """Entries of one row: at commas if it has any, else at spaces the way MATLAB reads them;
+    a function keeps the argument after its space (``-sin 120°`` is one entry), a number its unit.
 
     >>> _split_row("0 -1"), _split_row("1 - 2  3"), _split_row("sqrt(2) / 2, cos(30°)")
     (['0', '-1'], ['1 - 2', '3'], ['sqrt(2) / 2', 'cos(30°)'])
+    >>> _split_row("cos 30° -sin 30°"), _split_row("1 m 2 m")
+    (['cos 30°', '-sin 30°'], ['1 m', '2 m'])
     """
     parts = _split_top(row, ",")
     if len(parts) > 1:
@@ -66,7 +74,8 @@ def _split_row(row: str) -> list[str]:
         prev = entries[-1] if entries else ""
         nxt_is_binary = word in ("+", "-") and k + 1 < len(words)
         joins = entries and (prev[-1] in _OPERATORS or word[0] in "*/^)" or nxt_is_binary
-                             or (prev in ("+", "-")))
+                             or (prev in ("+", "-")) or _FUNCTION_END.search(prev) is not None
+                             or (U.lookup(word) is not None and prev[-1] in "0123456789.)°"))
         if joins:
             entries[-1] = f"{prev} {word}"
         else:

@@ -21,7 +21,7 @@ import math
 import re
 
 from .. import units as U
-from .grammar import (FUNCTIONS, MAX_DEPTH, MAX_LENGTH, MAX_NODES, SCALAR, Grammar, InvalidAnswer,
+from .grammar import (FUNCTIONS, GREEK, MAX_DEPTH, MAX_LENGTH, MAX_NODES, SCALAR, Grammar, InvalidAnswer,
                       not_an_expression)
 from .tokens import check_commas, normalise, tokenize
 
@@ -114,8 +114,11 @@ class Parser:
             if after[2]:
                 raise InvalidAnswer("One number is expected; there is a space between two numbers.")
             raise not_an_expression(self.g)
+        if after[0] == "num" and before[0] == "unit" and before[1] == "°":
+            raise InvalidAnswer("Write an angle in degrees, minutes and seconds with their marks, 53°7′48″ "
+                                "(or 53°7'48\"), or in decimal degrees: 53.13°.")
         if after[0] == "num" and before[0] in ("var", "const", "unit"):
-            raise InvalidAnswer(f"Put * between “{before[1] if before[0] != 'unit' else 'the unit'}” and the number after it.")
+            raise InvalidAnswer(f"Put * between “{before[1]}” and the number after it.")
 
     def unary(self) -> tuple:
         tok = self.peek()
@@ -209,6 +212,9 @@ class Parser:
             self.enter()
             arg = self.call(tok[1])
             self.depth -= 1
+        elif tok[0] == "num" and self.peek(1)[0] in ("var", "const") and not self.is_op(self.peek(2), "^", "**"):
+            number = self.primary()  # sin 2θ, as typeset: the number is the symbol's coefficient
+            arg = self.node("bin", "*", number, self.primary())
         elif tok[0] in ("num", "var", "const"):
             arg = self.primary()
             if self.peek()[0] == "unit":
@@ -219,6 +225,11 @@ class Parser:
         if name not in ("√", "sqrt", "abs") and self.is_op(after, "/"):
             # cos pi/3: cos(π/3) or cos(π)/3? Both are common; ask instead of guessing.
             raise InvalidAnswer(f"Put the argument of {name} in parentheses: {name}(pi/3) or {name}(pi)/3.")
+        if after[0] in ("var", "const") and after[2] and arg[0] != "num":
+            return self.node("neg", arg) if negative else arg  # sin θ dt, as typeset: sin(θ)·dt
+        if after[0] in ("var", "const") and arg[0] in ("var", "const"):  # sin θdt: sin(θ·dt) or sin(θ)·dt?
+            shown, a, b = ("√" if name == "√" else name), _name(arg[1]), _name(after[1])
+            raise InvalidAnswer(f"Put the argument of {shown} in parentheses: {shown}({a}*{b}) or {shown}({a})*{b}.")
         if after[0] in ("num", "var", "const") or self.is_op(after, "(", "^", "**", "[", "{"):
             shown = "√" if name == "√" else name
             raise InvalidAnswer(f"Put the argument of {shown} in parentheses, for example {shown}(2x) or {shown}(x)·y.")
@@ -236,6 +247,12 @@ class Parser:
             factor, dim, label = factor / f2, tuple(a - b for a, b in zip(dim, d2)), f"{label}/{denom[1]}"
             angle = None
         return (factor, dim, label, angle)
+
+
+def _name(name: str) -> str:
+    """A name as a learner types it in a message: θ for theta."""
+    greek = {word: letter for letter, word in GREEK.items() if letter not in "ϕ"}
+    return greek.get(name, name)
 
 
 def _has_unit(node: tuple) -> bool:

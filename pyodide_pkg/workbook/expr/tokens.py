@@ -27,7 +27,7 @@ _AFTER_NFKC = str.maketrans({
     "\u2010": "-", "\u2011": "-", "\u2012": "-", "\u2013": "-", "\u2014": "-", "\u2212": "-",
     "\ufe63": "-", "\uff0d": "-", "\u00d7": "*", "\u22c5": "*", "\u00b7": "*", "\u2217": "*",
     "\u00f7": "/", "\u2044": "/", "\u2215": "/", "\u2248": "=", "\u2219": "*", "\u2027": "*",
-    "\u2206": "Δ", "\u2032": "'", "\u02b9": "'", "\u2019": "'", "\u2033": "''",
+    "\u2206": "Δ", "\u2032": "'", "\u02b9": "'", "\u2019": "'", "\u2033": "''", "\u201d": "''",
 })
 _TOKEN = re.compile(r"""\s*(?:
     (?P<num>(?:[0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE][+-]?[0-9]+)?)
@@ -63,8 +63,8 @@ def normalise(text: str) -> str:
     """
     if "\\" in text or "_{" in text or "^{" in text:  # LaTeX: commands, or braced sub- and superscripts
         text = from_latex(text)
-    if text.replace("°", "").isascii():  # nothing below changes ASCII text
-        return text.strip()
+    if text.replace("°", "").isascii():  # nothing below changes ASCII text but degrees-minutes-seconds
+        return _dms(text.strip())
     s = text.translate(_DEGREE_LIKE)
     if any(ch in s for ch in _FRACTIONS):  # 2½ is 2 + 1/2, ½ alone is 1/2
         s = re.sub(r"(\d)\s*([½¼¾⅓⅔])", lambda m: f"({m.group(1)}+{_FRACTIONS[m.group(2)]})", s)
@@ -72,7 +72,29 @@ def normalise(text: str) -> str:
             s = s.replace(old, new)
     s = _SUPER_RUN.sub(lambda m: "^(" + m.group(0).translate(_SUPER) + ")", s)
     s = unicodedata.normalize("NFKC", s)
-    return s.translate(_AFTER_NFKC).strip()
+    return _dms(s.translate(_AFTER_NFKC).strip())
+
+
+_DMS = re.compile(r"""([0-9]+(?:\.[0-9]*)?)\s*°\s*([0-9]+(?:\.[0-9]*)?)\s*'(?!')(?:\s*([0-9]+(?:\.[0-9]*)?)\s*(?:''|"))?""")
+
+
+def _dms(s: str) -> str:
+    """Degrees, minutes and seconds (``53°7'48"``, ``53°7.8'``) as one number of degrees: ``(53+7/60+48/3600)°``.
+
+    >>> _dms("53°7'48''"), _dms("-12° 30'")
+    ('(53+7/60+48/3600)°', '-(12+30/60)°')
+    """
+    if "'" not in s or "°" not in s:
+        return s
+
+    def degrees(m: re.Match) -> str:
+        d, minutes, seconds = m.group(1), m.group(2), m.group(3)
+        if float(minutes) >= 60 or (seconds is not None and float(seconds) >= 60):
+            raise InvalidAnswer(f"Minutes and seconds are below 60: {m.group(0).strip()} is not an angle in "
+                                "degrees, minutes and seconds.")
+        return f"({d}+{minutes}/60{f'+{seconds}/3600' if seconds is not None else ''})°"
+
+    return _DMS.sub(degrees, s)
 
 
 def check_commas(s: str) -> None:

@@ -1,7 +1,9 @@
 // A vector or matrix answer: a grid of entries. Arrow keys move between entries
 // (left and right once the caret is at the edge), Tab goes in reading order, and a
 // whole matrix pasted into any entry is split by the grader and fills the grid; one
-// value pasted (even a long expression) stays in the entry it was pasted into.
+// value pasted (even a long expression) stays in the entry it was pasted into. A whole
+// matrix typed into one entry, the others empty, is split the same way once the entry
+// is left (and the grader reads it so if Check comes first).
 import { ATTR, ROLE, TAG, ownRoles } from "../contract.js";
 import { showMessage } from "../feedback.js";
 
@@ -28,6 +30,13 @@ export function init(ctx) {
       event.preventDefault();
       target.focus();
       target.select();
+    });
+    input.addEventListener("change", async () => {
+      // A whole matrix typed (not pasted) into one entry, the others empty: split it as a paste.
+      const text = input.value;
+      if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim()) || entries.some((e) => e !== input && e.value.trim())) return;
+      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step, text });
+      if (reply.ok && reply.value.entries && input.value === text) fill(reply.value.entries);
     });
     input.addEventListener("paste", async (event) => {
       const text = event.clipboardData?.getData("text") ?? "";

@@ -3,7 +3,8 @@
 Every entry is read by :func:`workbook.expr.read_quantity` in its own unit,
 and every entry that cannot be read is reported at once, by position.
 Components written with their names are placed by name (``y = 2`` in the first
-entry of an (x, y) vector goes to y), never graded by position.
+entry of an (x, y) vector goes to y), never graded by position. A whole matrix
+typed (not pasted) into one box, the others empty, is read as if pasted.
 """
 
 from __future__ import annotations
@@ -43,12 +44,20 @@ def _cells(ans: "MatrixAnswer", answer: object) -> Grid:
         given = f"{len(grid)}×{len(grid[0]) if grid else 0}"
         raise InvalidAnswer(f"This answer is {describe_shape(ans.shape)}; the boxes sent were {given}.")
     texts = [text for row in grid for text in row]
+    typed = [text for text in texts if text.strip()]
+    if len(texts) > 1 and len(typed) == 1 and _whole(typed[0]):
+        return split_matrix(typed[0], ans.shape, ans.names)  # a whole matrix typed into one box, as if pasted
     pairs = [named_entry(text) for text in texts]
     if not any(pairs):
         return grid
     if any(text.strip() and not pair for text, pair in zip(texts, pairs)):
         raise InvalidAnswer("Give every entry its name, or none: x = 1 in each box, or just the values.")
     return place_by_name([p for p in pairs if p], ans.shape, ans.names, partial=True)
+
+
+def _whole(text: str) -> bool:
+    """Text in one box that is a whole vector or matrix (``[[0, -1], [1, 0]]``, ``x = 1, y = 2``), not one value."""
+    return not is_one_value(text) and (named_entry(text) is None or any(ch in text for ch in ",;\n"))
 
 
 def reply(readings: list[list[Reading]]) -> dict:
