@@ -178,7 +178,7 @@ def close(got: Any, want: Any, rel_tol: float, abs_tol: float, angles: tuple[str
     return first_difference(got, want, rel_tol, abs_tol, angles=angles) is None
 
 
-def _angle_at(at: str, angles: tuple[str, ...]) -> bool:
+def angle_at(at: str, angles: tuple[str, ...]) -> bool:
     """Whether the entry at index path ``at`` is an angle: a pattern such as ``[0][2]``, ``*`` any index."""
     return any(re.fullmatch(re.escape(p).replace(r"\*", r"\d+"), at) for p in angles)
 
@@ -214,7 +214,7 @@ def first_difference(got: Any, want: Any, rel_tol: float, abs_tol: float, at: st
                 return found
         return None
     tol = max(rel_tol * abs(want), abs_tol, 1e-9)
-    if angles and not isinstance(want, bool) and _angle_at(at, angles):
+    if angles and not isinstance(want, bool) and angle_at(at, angles):
         return None if _same_angle(got, want, tol) else (at, got, want)
     return None if math.isclose(got, want, rel_tol=rel_tol, abs_tol=max(abs_tol, 1e-9)) else (at, got, want)
 

@@ -32,7 +32,7 @@ from typing import Any, Callable
 
 from workbook_sandbox import harness
 
-from ...build_judge import Mismatch, first_difference, numbers
+from ...build_judge import Mismatch, angle_at, numbers
 from ...number_format import compact
 
 MODULES = {"rotate": "rotate", "ekf-update": "ekf_update", "arm": "arm", "pid": "pid", "ik": "ik",
@@ -187,16 +187,31 @@ def _call_case(label: str, args: tuple, want: Any, outcome: dict[str, Any], poin
             drawn.message = f"Your function returned something else: {err}."
             drawn.raw = _plain(outcome["value"])
         else:
-            drawn.error = (distance if points else largest_gap)(drawn.got, want)
-            if angles and drawn.error and first_difference(drawn.got, want, 1e-6, 1e-9, angles=angles) is None:
-                drawn.error = 0.0  # π for −π: the same half-turn, which the tests accept
+            drawn.error = (distance if points else largest_gap)(as_angles(drawn.got, want, angles), want)
             if not math.isfinite(drawn.error):
                 drawn.message = "Your function returned a number that is not finite (NaN or infinity)."
                 drawn.error = None
     return drawn
 
 
-def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], width: int, start: int) -> Drawn:
+def as_angles(got: Any, want: Any, angles: tuple[str, ...], at: str = "") -> Any:
+    """``got`` with each angle entry (``Build.angles``) in [−π, π] written as the turn nearest ``want``'s
+    (−π for π: the same half-turn, which the tests accept), for measuring errors.
+
+    >>> as_angles([1.0, -math.pi], [1.0, math.pi], ("[1]",))
+    [1.0, 3.141592653589793]
+    """
+    if not angles or got is None or want is None:
+        return got
+    if isinstance(got, (list, tuple)) and isinstance(want, (list, tuple)):
+        return [as_angles(g, w, angles, f"{at}[{i}]") for i, (g, w) in enumerate(zip(got, want))] + list(got[len(want):])
+    if isinstance(got, float) and math.isfinite(got) and abs(got) <= math.pi + 1e-9 and angle_at(at, angles):
+        return want + math.remainder(got - want, 2 * math.pi)
+    return got
+
+
+def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], width: int, start: int,
+                angles: tuple[str, ...] = ()) -> Drawn:
     drawn = Drawn(label, args, want, got=[])
     value = outcome.get("value", outcome.get("partial"))
     if value is not None:
@@ -209,7 +224,7 @@ def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], wi
         drawn.message = "The run stopped before this case."
     if len(drawn.got) > start:  # a start alone compares nothing
         common = min(len(drawn.got), len(want))
-        drawn.error = largest_gap(drawn.got[:common], want[:common])
+        drawn.error = largest_gap(as_angles(drawn.got[:common], want[:common], angles), want[:common])
     return drawn
 
 
@@ -240,7 +255,7 @@ def _items(fig: RunFigure, ex: Any, report: Any, cases: list, arguments: list[li
     def one(label: str, args: tuple, want: Any, outcome: dict[str, Any]) -> Drawn:
         if fig.width is None:
             return _call_case(label, args, want, outcome, fig.points, getattr(ex, "angles", ()))
-        return _trace_case(label, args, want, outcome, fig.width, int(fig.with_start))
+        return _trace_case(label, args, want, outcome, fig.width, int(fig.with_start), getattr(ex, "angles", ()))
     items = [one(f"test {k + 1}" if k < shown else f"hidden case {k - shown + 1}", tuple(args), case.want, outcome)
              for k, (args, case, outcome) in enumerate(zip(arguments, cases, outcomes))]
     hidden = items[shown:]
