@@ -82,13 +82,11 @@ def _fine(n: int, note: str) -> str:
     'Line 2 is fine: the derivative of the error.'
     >>> _fine(4, "correct once the angle is in radians: y by r·sin")
     'Line 4 is correct once the angle is in radians: y by r·sin.'
-    >>> _fine(1, "takes the pose"), _fine(3, "")
-    ('Line 1 is fine: it takes the pose.', 'Line 3 is fine: it does what it should.')
+    >>> _fine(1, "takes the pose"), _fine(7, "correct: adds Q"), _fine(3, "")
+    ('Line 1 is fine: it takes the pose.', 'Line 7 is fine: it adds Q.', 'Line 3 is fine: it does what it should.')
     """
-    note = note.strip().rstrip(".") or "it does what it should"
-    if note.startswith("correct: "):
-        text = f"Line {n} is fine: {note[len('correct: '):]}"
-    elif note.startswith("correct "):
+    note = note.strip().rstrip(".").removeprefix("correct: ") or "it does what it should"
+    if note.startswith("correct "):
         text = f"Line {n} is {note}"
     elif note.split(" ", 1)[0] in _VERBS:
         text = f"Line {n} is fine: it {note}"
