@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import json
 import math
+import re
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -152,6 +153,8 @@ def numbers(value: dict[str, Any], want: Any) -> Any:
             raise Mismatch(f"expected None (the reference refuses this input), got {_what(value)}")
         return None
     if not isinstance(want, (list, tuple)):
+        if isinstance(want, bool) and value["type"] in ("bool", "bool_") and value.get("number") is not None:
+            return bool(value["number"])  # a yes/no answer is shown as one (False, not 0.0)
         if "number" not in value:
             if value["type"] == "int":
                 raise Mismatch(f"expected plain numbers, got a number too large for a float ({value['text']})")
@@ -171,28 +174,53 @@ def numbers(value: dict[str, Any], want: Any) -> Any:
     return out
 
 
-def close(got: Any, want: Any, rel_tol: float, abs_tol: float) -> bool:
-    return first_difference(got, want, rel_tol, abs_tol) is None
+def close(got: Any, want: Any, rel_tol: float, abs_tol: float, angles: tuple[str, ...] = ()) -> bool:
+    return first_difference(got, want, rel_tol, abs_tol, angles=angles) is None
 
 
-def first_difference(got: Any, want: Any, rel_tol: float, abs_tol: float, at: str = "") -> tuple | None:
+def angle_at(at: str, angles: tuple[str, ...]) -> bool:
+    """Whether the entry at index path ``at`` is an angle: a pattern such as ``[0][2]``, ``*`` any index."""
+    return any(re.fullmatch(re.escape(p).replace(r"\*", r"\d+"), at) for p in angles)
+
+
+def _same_angle(got: float, want: float, tol: float) -> bool:
+    """Two angles in [−π, π] that name the same direction: an exact half-turn may come out as π or −π
+    (``math.atan2(math.sin(a), math.cos(a))`` gives −π at a = −π), and both are right.
+
+    >>> _same_angle(-math.pi, math.pi, 1e-9), _same_angle(3 * math.pi, math.pi, 1e-9)
+    (True, False)
+    """
+    if not (math.isfinite(got) and math.isfinite(want)) or abs(got) > math.pi + tol:
+        return False  # an angle outside [−π, π] was not brought into the range the statement asks for
+    return abs(math.remainder(got - want, 2 * math.pi)) <= tol
+
+
+def first_difference(got: Any, want: Any, rel_tol: float, abs_tol: float, at: str = "",
+                     angles: tuple[str, ...] = ()) -> tuple | None:
     """Where ``got`` first disagrees with ``want`` (same shape): ``(index path, got, want)``, or None.
+    Entries whose path matches one of ``angles`` are compared as angles (π and −π agree).
 
     >>> first_difference([[1.0, 2.0], [3.0, 4.5]], [[1.0, 2.0], [3.0, 4.0]], 1e-6, 1e-9)
     ('[1][1]', 4.5, 4.0)
+    >>> first_difference([1.0, -math.pi], [1.0, math.pi], 1e-6, 1e-9, angles=("[1]",)) is None
+    True
     """
     if want is None or got is None:
         return None if got is want else (at, got, want)
     if isinstance(want, (list, tuple)):
         for i, (g, w) in enumerate(zip(got, want)):
-            found = first_difference(g, w, rel_tol, abs_tol, f"{at}[{i}]")
+            found = first_difference(g, w, rel_tol, abs_tol, f"{at}[{i}]", angles)
             if found is not None:
                 return found
         return None
+    tol = max(rel_tol * abs(want), abs_tol, 1e-9)
+    if angles and not isinstance(want, bool) and angle_at(at, angles):
+        return None if _same_angle(got, want, tol) else (at, got, want)
     return None if math.isclose(got, want, rel_tol=rel_tol, abs_tol=max(abs_tol, 1e-9)) else (at, got, want)
 
 
-def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float) -> dict[str, Any]:
+def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float,
+        angles: tuple[str, ...] = ()) -> dict[str, Any]:
     """One test row: the case, what the learner's function gave, and whether it agrees."""
     out: dict[str, Any] = {"name": case.name, "input": case.input, "expected": case.expected}
     if "error" in outcome:
@@ -206,16 +234,17 @@ def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float) -> 
         got = numbers(value, case.want)
     except Mismatch as err:
         return {**out, "actual": value["text"], "passed": False, "message": str(err)}
-    found = first_difference(got, case.want, rel_tol, abs_tol)
+    found = first_difference(got, case.want, rel_tol, abs_tol, angles=angles)
     message = "" if found is None or not found[0] else (
         f"first difference at {found[0]}: expected {show(_rounded(found[2]))}, got {show(_rounded(found[1]))}")
     return {**out, "actual": show(_rounded(got)), "passed": found is None, "message": message}
 
 
-def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float) -> list[dict[str, Any]]:
+def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float,
+            angles: tuple[str, ...] = ()) -> list[dict[str, Any]]:
     """A row per case, in order (a case the report lacks was not run)."""
     outcomes = report.cases + [{"skipped": True}] * (len(cases) - len(report.cases))
-    return [row(case, outcome, rel_tol, abs_tol) for case, outcome in zip(cases, outcomes)]
+    return [row(case, outcome, rel_tol, abs_tol, angles) for case, outcome in zip(cases, outcomes)]
 
 
 def hidden_summary(rows: list[dict[str, Any]]) -> dict[str, Any]:

@@ -8,14 +8,17 @@
   they define, the contents of their module-level dicts, lists and sets, and
   the code and defaults of their functions;
 * the fields (``__dict__``) of ``objects``, and the code of the functions they hold;
-* the recursion limit.
+* the recursion limit, the trace and profile hooks (``sys.settrace``, ``sys.setprofile``) and the
+  import machinery's lists (``sys.meta_path``, ``sys.path``, ``sys.path_hooks``).
 
 On exit it puts all of that back (names a run added to a module are removed),
 the builtins and this module's own names first, with nothing but dict methods
 (the rest of the restore looks them up),
 reseeds :mod:`random`, and, when NumPy is loaded, resets its error handling,
 print options and global generator. Modules a run imported stay loaded (NumPy
-is slow to load); their state is reset only where it existed before the run.
+is slow to load); their state is reset only where it existed before the run. An
+entry a run put in ``sys.modules`` that is no module imported under that name
+(an object planted there) is removed, so a later import finds the real one.
 
 What it cannot see (a change inside an object no module names, memory written
 through ``js``...) is why the page replaces the sandbox after any run whose code
@@ -27,6 +30,11 @@ was not plain (``workbook.build_plain``).
 ...     math.extra = 1
 >>> math.cos(0.0), hasattr(math, "extra")
 (1.0, False)
+>>> with Restore():
+...     sys.modules["json.planted"] = types.ModuleType("json.planted")
+...     sys.settrace(lambda *a: None)
+>>> "json.planted" in sys.modules, sys.gettrace() is None
+(False, True)
 """
 
 from __future__ import annotations
@@ -88,6 +96,8 @@ class Restore:
         functions = {id(fn): fn for space in holders for value in list(space.values()) for fn in _functions_of(value)}
         self.functions = [(fn, _function_state(fn)) for fn in functions.values()]
         self.recursion = sys.getrecursionlimit()
+        self.hooks = sys.gettrace(), sys.getprofile()
+        self.imports = [(lst, list(lst)) for lst in (sys.meta_path, sys.path, sys.path_hooks)]
         self.numpy = _numpy_state()
         return self
 
@@ -95,9 +105,17 @@ class Restore:
         for space, saved in self.first:
             space.clear()
             space.update(saved)
+        sys.settrace(self.hooks[0])
+        sys.setprofile(self.hooks[1])
         for name, mod in self.table.items():
             if sys.modules.get(name, _MISSING) is not mod:
                 sys.modules[name] = mod
+        for name in [name for name in list(sys.modules) if name not in self.table]:
+            if not _imported_as(sys.modules.get(name), name):
+                sys.modules.pop(name, None)
+        for lst, saved in self.imports:
+            if not _same_items(lst, saved):
+                lst[:] = saved
         for space, saved in self.spaces + self.fields:
             _put_back(space, saved)
         for cls, saved in self.classes:
@@ -118,6 +136,12 @@ class Restore:
         sys.setrecursionlimit(self.recursion)
         random.seed()
         _reset_numpy(self.numpy)
+
+
+def _imported_as(mod: Any, name: str) -> bool:
+    """Whether ``mod`` is a module the import system loaded as ``name`` (not an object planted there)."""
+    spec = getattr(mod, "__spec__", None) if isinstance(mod, types.ModuleType) else None
+    return spec is not None and getattr(spec, "name", None) == name
 
 
 def _copy(container: Any) -> Any:

@@ -39,8 +39,9 @@ def test_a_bug_hunt_solved_by_clicking_shows_the_explanation_and_the_symptom(pag
     expect(symptom).to_be_visible()
     assert symptom.locator("svg title").count() == 1
     assert "What the bug does" in symptom.locator("figcaption").inner_text()
-    assert records(page)[ex.id]["clean"] == [0]
-    assert records(page)[ex.id]["box"] == 1  # Debug joins the review queue; the first answer missed: box 1
+    record = records(page)[ex.id]
+    assert record["done"] == [0] and not record.get("clean")  # found after a wrong line: solved with help
+    assert record["box"] == 1  # Debug joins the review queue; the first answer missed: box 1
 
 
 def test_a_bug_hunt_solved_by_keyboard(page, site_url):
@@ -58,6 +59,26 @@ def test_a_bug_hunt_solved_by_keyboard(page, site_url):
     assert el.locator(role("line", f'[data-line="{ex.bug_line}"]')).get_attribute("aria-selected") == "true"
     assert feedback(el).strip() == ex.bug
     expect(el.locator(role("symptom"))).to_be_visible()
+    assert records(page)[ex.id]["clean"] == [0]  # found at the first try: clean
+
+
+def test_a_bug_hunt_found_by_clicking_every_line_is_not_solved_clean(page, site_url):
+    ex = bank.get("3.11")
+    open_chapter(page, site_url, 3)
+    total = len(bank.chapter(3))
+    el = exercise(page, ex.id)
+    el.scroll_into_view_if_needed()
+    widget_ready(el)
+    for n in range(1, len(ex.lines) + 1):  # one line after another, until the bug is found
+        el.locator(role("line", f'[data-line="{n}"]')).click()
+        el.locator(role("check")).click()
+        if settle(el) == "correct":
+            break
+    assert n == ex.bug_line > 1
+    record = records(page)[ex.id]
+    assert record["done"] == [0] and not record.get("clean") and record["missed"] == [0]
+    bar = page.locator('[data-wb-chapter-progress] [data-wb-bar="solved"]')
+    expect(bar).to_contain_text(f"0 of {total} exercises (+1 with help)")
 
 
 def solved_bar(page) -> str:

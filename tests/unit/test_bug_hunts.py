@@ -59,7 +59,8 @@ def test_each_hunt_is_a_short_debug_program_with_one_marked_line(exercise_id):
     assert ex.check(ex.bug_line).status == "correct" and ex.check(ex.bug_line).message == ex.bug
     for n in ex.notes:
         verdict = ex.check(n)
-        assert verdict.status == "incorrect" and ex.notes[n].rstrip(".") in verdict.message
+        note = ex.notes[n].rstrip(".").removeprefix("correct: ")
+        assert verdict.status == "incorrect" and note in verdict.message
     for args in ex.cases:
         assert close(fixed(*args), ex.reference(*args))  # the fix agrees with the reference
     assert "Fix:" in ex.bug and ex.fixed_line.strip()[:12] in ex.bug
@@ -130,6 +131,55 @@ def test_the_sign_error_calls_the_sweeping_arm_still():
     straight = (1.0, 1.0, 0.0, 0.0, 1.0, 0.0)
     assert buggy(*straight)[1] == 0.0
     assert math.isclose(fixed(*straight)[1], 2.0)  # (L1 + L2)·ω1
+
+
+@pytest.mark.parametrize("exercise_id", HUNTS)
+def test_a_fine_line_s_note_reads_as_a_sentence(exercise_id):
+    ex = bank.get(exercise_id)
+    for n in range(1, len(ex.lines) + 1):
+        if n == ex.bug_line:
+            continue
+        message = ex.check(n).message
+        assert message.startswith(f"Line {n} is ") and message.endswith(" The bug is on another line.")
+        assert "fine: correct" not in message and ": correct" not in message and ".." not in message
+        first = message.split(": ", 1)[1] if " is fine: " in message else ""
+        assert not first.startswith(("takes ", "returns ", "imports ", "unpacks ", "clamps ", "adds ", "computes ")), message
+
+
+def _as_8_8(lines: list[str]) -> str:
+    """8.9's program as 8.8's function: limits [u_min, u_max] where 8.9 has ±u_max, and dt = 0 as 8.8 asks."""
+    code = "\n".join(lines).replace("pid_step_limited(e, e_prev, integral, Kp, Ki, Kd, dt, u_max)",
+                                    "pid_step_clamped(e, e_prev, integral, Kp, Ki, Kd, dt, u_min, u_max)")
+    code = code.replace("(e - e_prev) / dt", "((e - e_prev) / dt if dt > 0 else 0.0)")
+    return code.replace("u < -u_max", "u < u_min").replace("max(-u_max,", "max(u_min,") + "\n"
+
+
+def test_8_8_and_8_9_teach_one_anti_windup_rule():
+    """Chapter 8 teaches one anti-windup rule, conditional integration. 8.9's fixed program, written as
+    8.8's function, passes 8.8; 8.8's model solution, asked 8.9's question, agrees with 8.9's reference
+    everywhere; 8.9's buggy program and the rule 'hold whenever saturated' fail 8.8, as the chapter says."""
+    import random
+
+    ex88, ex89 = bank.get("8.8"), bank.get("8.9")
+    _, buggy, fixed = programs("8.9")
+    fixed_lines = [*ex89.lines[: ex89.bug_line - 1], ex89.fixed_line, *ex89.lines[ex89.bug_line:]]
+    assert ex88.check(_as_8_8(fixed_lines)).status == "correct"
+    assert ex88.check(_as_8_8(ex89.lines)).status == "incorrect"
+    frozen = [*ex89.lines[: ex89.bug_line - 1], "    integral = integral if u != max(-u_max, min(u_max, u)) else candidate",
+              *ex89.lines[ex89.bug_line:]]
+    verdict = ex88.check(_as_8_8(frozen))
+    assert verdict.status == "incorrect" and not verdict.data["tests"][-1]["passed"]
+    model: dict = {}
+    exec(ex88.solution, model)
+    rng = random.Random(89)
+    for _ in range(3000):
+        args = (rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-20, 20), rng.uniform(0, 5),
+                rng.uniform(0, 2), rng.uniform(0, 2), rng.uniform(0.01, 1))
+        u_max = rng.uniform(0.5, 10)
+        want = ex89.reference(*args, u_max)
+        assert close(model["pid_step_clamped"](*args, -u_max, u_max), want)
+        assert close(fixed(*args, u_max), want)
+    assert "8.8" in ex89.bug and "conditional integration" in ex89.bug
 
 
 def test_windup_overshoots_more_than_the_fixed_controller():

@@ -5,6 +5,7 @@ that names the failing case, what was expected and what came back."""
 from __future__ import annotations
 
 import json
+import math
 from pathlib import Path
 
 import pytest
@@ -209,3 +210,113 @@ def test_the_capstone_statement_gives_the_steering_law_of_the_reference():
     text = (Path(__file__).resolve().parents[2] / "docs" / "chapters" / "09-capstone.md").read_text()
     assert f"$v = {SPEED:g}$ m/s and $\\omega = {HEADING_GAIN:g}\\,e_\\theta$" in text
     assert f"clamped to $[-{MAX_TURN:g}, {MAX_TURN:g}]$ rad/s" in text
+
+
+# ---- Every edge case a statement names is in every run -------------------------------------------
+SEEDS = (0, 1, 17, 4321, 99_999)
+HALF_TURNS = {"1.7": ("[2]",), "3.10": ("[0][2]",), "6.7": ("[0]", "[1]"), "9.9": ("[*][2]",)}
+
+
+def _model(ex):
+    namespace: dict = {}
+    exec(ex.solution, namespace)
+    return namespace[ex.function]
+
+
+def _half_turn_cases(ex):
+    """The hidden cases (through JSON, as the sandbox gets them) where the page's own solution gives −π and
+    the reference π: the same half-turn, told apart by sign only."""
+    drive = harness.driver(ex.harness)
+    model = _model(ex)
+    out = []
+    for args in ex.arguments()[len(ex.examples):]:
+        want, got = drive(ex.reference, *json.loads(json.dumps(args))), drive(model, *json.loads(json.dumps(args)))
+        flat_w = json.dumps(want)
+        if "3.141592653589793" in flat_w and "-3.141592653589793" in json.dumps(got):
+            out.append(args)
+    return out
+
+
+@pytest.mark.parametrize("ex_id", sorted(HALF_TURNS))
+@pytest.mark.parametrize("seed", SEEDS)
+def test_every_run_holds_a_half_turn_and_either_sign_is_accepted(ex_id, seed):
+    """The statement promises [−π, π] and accepts π or −π at an exact half-turn: every run has a case where
+    the page's own solution gives −π and the reference π, and the solution passes."""
+    ex = bank.get(ex_id).variant(seed)
+    assert _half_turn_cases(ex), f"{ex_id}: no hidden half-turn"
+    assert ex.angles == HALF_TURNS[ex_id]
+    assert ex.check(ex.solution).status == "correct"
+
+
+def test_an_angle_out_of_range_is_still_wrong_and_the_half_turn_is_judged_as_one():
+    from workbook.build_judge import first_difference
+
+    assert first_difference([1.0, -math.pi], [1.0, math.pi], 1e-6, 1e-9, angles=("[1]",)) is None
+    assert first_difference([1.0, 3 * math.pi], [1.0, math.pi], 1e-6, 1e-9, angles=("[1]",)) is not None
+    assert first_difference([1.0, math.pi + 0.1], [1.0, -math.pi + 0.1], 1e-6, 1e-9, angles=("[1]",)) is not None
+    assert first_difference([-math.pi, 0.0], [math.pi, 0.0], 1e-6, 1e-9, angles=("[1]",)) is not None  # not an angle
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_6_7_every_run_asks_for_a_reachable_target_where_acos_would_raise(seed):
+    ex = bank.get("6.7").variant(seed)
+    edges = []
+    for L1, L2, x, y, up in ex.arguments()[len(ex.examples):]:
+        c2 = (x * x + y * y - L1 * L1 - L2 * L2) / (2 * L1 * L2)
+        if abs(c2) > 1 and ex.reference(L1, L2, x, y, up) is not None:
+            edges.append(c2)
+    assert any(c > 1 for c in edges) and any(c < -1 for c in edges)
+
+
+def test_6_7_one_reachability_tolerance_in_statement_solution_and_reference():
+    import random
+
+    from workbook.reference.arm import is_reachable
+
+    ex = bank.get("6.7")
+    model = _model(ex)
+    text = (Path(__file__).resolve().parents[2] / "docs" / "chapters" / "06-arm-kinematics.md").read_text()
+    assert "up to $10^{-9}$ m past the edge" in text
+    assert is_reachable.__defaults__ == (1e-9,) and "r > L1 + L2 + 1e-9 or r < abs(L1 - L2) - 1e-9" in ex.solution
+    rng = random.Random(67)
+    for _ in range(2000):
+        L1, L2, a = rng.uniform(0.05, 3), rng.uniform(0.05, 3), rng.uniform(-math.pi, math.pi)
+        for r in (L1 + L2 + 5e-10, L1 + L2 + 3e-9, abs(L1 - L2) - 5e-10, abs(L1 - L2) - 3e-9):
+            x, y = r * math.cos(a), r * math.sin(a)
+            assert (model(L1, L2, x, y, True) is None) == (ex.reference(L1, L2, x, y, True) is None), (L1, L2, r)
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_8_8_every_run_tries_the_anti_windup_boundary(seed):
+    """The old integral keeps u inside the limits, the new one would take it past one with the error pushing
+    that way: both sides, in every run."""
+    ex = bank.get("8.8").variant(seed)
+    sides = set()
+    for e, e_prev, integral, Kp, Ki, Kd, dt, u_min, u_max in ex.hidden_cases():
+        d = Kd * (e - e_prev) / dt if dt > 0 else 0.0
+        old, new = Kp * e + Ki * integral + d, Kp * e + Ki * (integral + e * dt) + d
+        if u_min <= old <= u_max and new > u_max and e > 0:
+            sides.add("high")
+        if u_min <= old <= u_max and new < u_min and e < 0:
+            sides.add("low")
+    assert sides == {"high", "low"}
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_9_9_every_run_loses_the_landmark_and_sees_it_again(seed):
+    ex = bank.get("9.9").variant(seed)
+    patterns = []
+    for args in ex.arguments()[len(ex.examples):]:
+        seen = []
+        harness.nav_loop(lambda *a: seen.append(a[3] is not None) or ex.reference(*a), *args)
+        patterns.append("".join("1" if s else "0" for s in seen).strip("0"))
+    assert any("10" in p and p.endswith("1") for p in patterns)
+
+
+def test_a_returned_false_is_shown_as_false():
+    ex = bank.get("7.8")
+    wrong = ex.solution.replace("abs(det) < 1e-9", "False")
+    verdict = ex.check(wrong)
+    row = verdict.data["tests"][-1]
+    assert not row["passed"] and row["actual"].endswith("), False)")
+    assert row["expected"].endswith(", True)")

@@ -52,3 +52,40 @@ def test_random_is_reseeded_after_a_run_that_seeds_it():
     first = random.random()
     random.seed(0)
     assert first != random.random()
+
+
+TRACER = '''import sys, math
+
+
+def hook(frame, event, arg):
+    math.isclose = lambda *a, **k: True  # would make every later comparison agree
+    return None
+
+
+sys.settrace(hook)
+sys.setprofile(lambda frame, event, arg: None)
+'''
+
+PLANTER = '''import sys, types
+sys.modules["workbook.planted_probe"] = types.ModuleType("workbook.planted_probe")
+sys.modules["json.planted_probe"] = object()
+sys.meta_path.insert(0, object())
+sys.path.insert(0, "/nowhere")
+'''
+
+
+@pytest.mark.parametrize("attack", ["trace", "plant"])
+def test_a_run_s_hooks_and_planted_modules_do_not_outlive_it(attack):
+    """Natively, as in the page's fresh sandbox: a trace or profile hook, a planted module and the import
+    machinery's lists are put back, so a later correct run, wrong run and unrelated grade behave as fresh."""
+    import sys
+
+    hooks, path, meta = (sys.gettrace(), sys.getprofile()), list(sys.path), list(sys.meta_path)
+    EX.check((TRACER if attack == "trace" else PLANTER) + GOOD)
+    assert (sys.gettrace(), sys.getprofile()) == hooks
+    assert "workbook.planted_probe" not in sys.modules and "json.planted_probe" not in sys.modules
+    assert sys.path == path and sys.meta_path == meta
+    assert EX.check(IDENTITY).status == "incorrect"
+    assert EX.check(GOOD).status == "correct"
+    assert math.isclose(1.0, 2.0) is False
+    assert bank.get("4.1").check("5").status in ("correct", "incorrect")

@@ -203,3 +203,28 @@ def test_every_closed_loop_is_drawn_as_far_as_it_got(exercise_id):
     assert steps > 0, frame["readout"]
     assert "half way" in frame["readout"] and "half way" in frame["svg"]
     assert re.search(r": error 0\b", frame["readout"]), frame["readout"]
+
+
+def test_6_7_draws_the_angles_given_where_none_was_due_and_opens_on_the_headline_s_case():
+    """A function that never refuses: its angles on an unreachable target are still drawn (with the distance
+    of the tip from the target, in metres), and the figure opens on the case its readout names first."""
+    ex = bank.get("6.7")
+    verdict = ex.check("def ik_2link(L1, L2, x, y, elbow_up):\n    return (0.32, 0.0)\n")
+    fig = figure_of(verdict)
+    well_formed(fig)
+    refused = [f for f in fig["frames"] if "out of reach, and the reference returns None" in f["description"]]
+    assert refused
+    for frame in refused:
+        assert "gave no angles" not in frame["description"]
+        assert "your angles, θ1 = 18.3346°, θ2 = 0°, put the tip " in frame["description"]
+        assert re.search(r"put the tip [\d.]+ m from the target", frame["description"])
+        assert 'class="wb-fig-a' in frame["svg"]
+    named = re.match(r"Largest error [\d.]+ rad at (test \d+|hidden case \d+)", fig["readout"]).group(1)
+    assert fig["frames"][fig["start"]]["label"] == named
+
+
+@pytest.mark.parametrize("exercise_id", [i for i in IDS if bank.get(i).angles])
+def test_a_half_turn_given_as_minus_pi_measures_no_error(exercise_id):
+    ex = bank.get(exercise_id)
+    fig = figure_of(ex.check(ex.solution))
+    assert all(": error 0" in frame["readout"] for frame in fig["frames"])

@@ -22,7 +22,7 @@ function recordAttempt(ctx, reply, extra = {}) {
   if (status !== STATE.correct && status !== STATE.incorrect) return;
   const before = progress.get(id);
   const variant = ctx.variant ?? 0;
-  const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed, tag: reply.value.tag }) };
+  const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed, tag: reply.value.tag, guessable: ctx.guessable }) };
   const slip = reply.value.data?.slip; // a named slip (CONTRACT.md): counted for the class page
   if (status === STATE.incorrect && slip) patch.slips = countSlip(before.slips, slip);
   if (status === STATE.correct && !before.solved) {
@@ -101,6 +101,7 @@ export function initExercise(el, shared) {
   // tests (a review on the Practise page starts a fresh seed), and what a review's answers count for.
   const ctx = { ...shared, el, id: el.getAttribute(ATTR.exercise), variant: shared.start ?? 0 };
   ctx.reviewed = REVIEW_KINDS.includes(kind); // Derive, Build and Debug join the review queue
+  ctx.guessable = kind === "debug"; // a bug found after wrong lines is solved, not clean (review.js)
   ctx.submit = (op, payload, options) => submit(ctx, op, { ...payload, variant: ctx.variant }, options);
   const saved = ctx.progress.get(ctx.id);
   const onScreen = shared.start ?? saved.variant ?? 0;

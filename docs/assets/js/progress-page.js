@@ -18,7 +18,7 @@ function countCell(value, max, text) {
 }
 
 function row(header, count, tag = "td") {
-  const solvedText = `${count.solved} of ${count.total}${count.afterReveal ? ` (+${count.afterReveal} after opening the solution)` : ""}`;
+  const solvedText = `${count.solved} of ${count.total}${count.afterReveal ? ` (+${count.afterReveal} with help)` : ""}`;
   const review = el("td", { className: "wb-review-cell", textContent: count.reviewable ? reviewText(count) : "—" });
   if (count.due) review.classList.add("is-due");
   const tr = el("tr", {},

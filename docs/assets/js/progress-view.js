@@ -83,7 +83,7 @@ export function bar(label, value, max, text, kind) {
 
 /** The bars for a count: solved, and (where any can be) mastered. */
 export function countBars(count) {
-  const extra = count.afterReveal ? ` (+${count.afterReveal} after opening the solution)` : "";
+  const extra = count.afterReveal ? ` (+${count.afterReveal} with help)` : "";
   const out = [bar("Solved", count.solved + count.afterReveal, count.total, `${count.solved} of ${plural(count.total, "exercise")}${extra}`, "solved")];
   if (count.masterable) {
     out.push(bar("Mastered", count.mastered, count.masterable, `${count.mastered} of ${count.masterable} that draw new numbers`, "mastered"));

@@ -9,7 +9,9 @@
 // `carried` (an answer right only given the learner's own wrong earlier value,
 // from an earlier exercise or an earlier step), `stepped` (worked with checked
 // steps) and `steppedDone` (answered correctly after working with steps, the
-// derivation not revealed: solved, but not clean).
+// derivation not revealed: solved, but not clean). A bug hunt (Debug) whose
+// first line picked in a variant was wrong is not clean either when solved: each
+// wrong line says so, and trying the lines one by one finds any bug.
 // Solved: one clean variant, or one solved with steps. Mastered: MASTERED
 // different clean variants (steps do not count towards it).
 //
@@ -41,9 +43,10 @@ const first = (record, v) => !has(record.done, v) && !has(record.missed, v);
  * The progress patch for a graded answer ("correct" or "incorrect") to variant `v`.
  * An answer carried forward (tag "carried": right given the learner's own wrong
  * value from an earlier exercise) is neither a solve nor a miss: it is kept in
- * `carried` and moves nothing in the review queue.
+ * `carried` and moves nothing in the review queue. `guessable` (a Debug exercise):
+ * a correct answer after a wrong one in the variant is done, not clean.
  */
-export function afterGrade(record, v, status, { schedule = true, now = Date.now(), tag = "" } = {}) {
+export function afterGrade(record, v, status, { schedule = true, now = Date.now(), tag = "", guessable = false } = {}) {
   if (status === "incorrect" && BACK_TO_EARLIER.includes(tag)) return { carried: add(record.carried, v) };
   const patch = {};
   if (status === "correct") {
@@ -52,7 +55,7 @@ export function afterGrade(record, v, status, { schedule = true, now = Date.now(
     if (schedule && first(record, v)) Object.assign(patch, move(helped ? box : Math.min(TOP_BOX, box + 1), now));
     patch.done = add(record.done, v);
     if (helped) patch.steppedDone = add(record.steppedDone, v);
-    else if (!has(record.revealedIn, v)) patch.clean = add(record.clean, v);
+    else if (!has(record.revealedIn, v) && !(guessable && has(record.missed, v))) patch.clean = add(record.clean, v);
   } else if (status === "incorrect" && first(record, v)) {
     patch.missed = add(record.missed, v);
     if (schedule) Object.assign(patch, move(1, now));

@@ -17,7 +17,7 @@ def relative_pose(a, b):
     # T_A^-1 T_B: undo A's translation, then A's rotation (R transposed).
     x = c * dx + s * dy
     y = -s * dx + c * dy
-    theta = math.atan2(math.sin(tb - ta), math.cos(tb - ta))  # into (-pi, pi]
+    theta = math.atan2(math.sin(tb - ta), math.cos(tb - ta))  # into [-pi, pi]
     return (x, y, theta)
 '''
 
@@ -52,7 +52,10 @@ EXERCISES = (
             ((1.5, -2, 0.7), (1.5, -2, 0.7)),  # the same pose: the identity
             ((0, 0, -3.0), (1, 1, 3.0)),  # the heading difference is past π
             ((3, 4, 2.5), (-1, 0, -2.5)),  # and past −π the other way
+            ((1, 2, math.pi), (3, 1, 0.0)),  # exactly a half-turn apart: π or −π
+            ((-2, 1, -math.pi / 2), (0, -1, math.pi / 2)),  # and the other way round
         ),
+        angles=("[2]",),
         random_args=lambda rng: (_pose(rng), _pose(rng)),
     ),
 )

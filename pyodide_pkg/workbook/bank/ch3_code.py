@@ -19,7 +19,7 @@ def ekf_predict(x, P, v, omega, dt, Q):
     FP = [[sum(F[i][k] * P[k][j] for k in range(3)) for j in range(3)] for i in range(3)]
     P_new = [[sum(FP[i][k] * F[j][k] for k in range(3)) + Q[i][j] for j in range(3)] for i in range(3)]
     heading = theta + omega * dt
-    heading = math.atan2(math.sin(heading), math.cos(heading))  # into (-pi, pi]
+    heading = math.atan2(math.sin(heading), math.cos(heading))  # into [-pi, pi]
     return ((px + v * c * dt, py + v * s * dt, heading), P_new)
 '''
 
@@ -63,7 +63,9 @@ EXERCISES = (
             ((0, 0, 3.0), _P34, 1, 1, 0.5, _Q34),  # the heading passes π and wraps
             ((0, 0, -3.0), _P34, 1, -1, 0.5, _Q34),  # and −π the other way
             ((2, -1, 1.0), _P34, 0, 0.8, 1, _Q34),  # v = 0: the robot turns on the spot
+            ((1, 1, -math.pi), _P34, 1, 0, 0.5, _Q34),  # heading west, exactly a half-turn: π or −π
         ),
+        angles=("[0][2]",),
         random_args=lambda rng: ((rng.uniform(-5, 5), rng.uniform(-5, 5), rng.uniform(-math.pi, math.pi)),
                                  _covariance(rng, 1), rng.uniform(-2, 2), rng.uniform(-1, 1),
                                  rng.uniform(0.01, 1), _diagonal(rng)),

@@ -10,15 +10,16 @@ _SOLUTION = '''import math
 
 def ik_2link(L1, L2, x, y, elbow_up):
     """Joint angles (theta1, theta2) putting the tip at (x, y); None when out of reach."""
-    c2 = (x * x + y * y - L1 * L1 - L2 * L2) / (2 * L1 * L2)
-    if c2 > 1 + 1e-9 or c2 < -1 - 1e-9:
+    r = math.hypot(x, y)
+    if r > L1 + L2 + 1e-9 or r < abs(L1 - L2) - 1e-9:
         return None  # farther than L1 + L2, or nearer than |L1 - L2|
-    c2 = max(-1.0, min(1.0, c2))  # round-off at the edge of the workspace
+    c2 = (x * x + y * y - L1 * L1 - L2 * L2) / (2 * L1 * L2)
+    c2 = max(-1.0, min(1.0, c2))  # round-off at the edge can put c2 a hair past 1 or -1
     theta2 = math.acos(c2)
     if elbow_up:
         theta2 = -theta2
     theta1 = math.atan2(y, x) - math.atan2(L2 * math.sin(theta2), L1 + L2 * math.cos(theta2))
-    theta1 = math.atan2(math.sin(theta1), math.cos(theta1))  # into (-pi, pi]
+    theta1 = math.atan2(math.sin(theta1), math.cos(theta1))  # into [-pi, pi]
     return (theta1, theta2)
 '''
 
@@ -65,7 +66,11 @@ EXERCISES = (
             (1, 1, -1.5, -0.3, False),  # theta1 past −π before it is wrapped
             (2, 1, 0.5, 0, True),  # inside the hole of the workspace: None
             (1, 1, 0, 2.5, False),  # too far: None
+            (0.3, 0.7, 0.6, 0.8, False),  # on the outer edge, where c2 comes out 1 + 2e-16 in floats: reachable
+            (1.3, 0.3, -1, 0, True),  # on the inner edge behind the base: c2 = -1 - 2e-16, theta1 a half-turn
+            (1, 1, -2, -0.0, True),  # stretched straight back: theta1 a half-turn, π or −π
         ),
+        angles=("[0]", "[1]"),
         random_args=_target,
     ),
 )

@@ -46,6 +46,7 @@ EXERCISES = (
             (1.5, 0.5, 1.0, -math.pi),
             (1, 2, -2.0, 2 * math.pi),  # a whole turn of the elbow: stretched out again
             (1, 1, 3.0, 1e-12),  # all but stretched
+            (1, 1, 0.5, 1e-7),  # near a singularity, |det J| = 1e-7: not singular by the 1e-9 test
         ),
         random_args=lambda rng: (rng.uniform(0.1, 3), rng.uniform(0.1, 3),
                                  rng.uniform(-math.pi, math.pi), rng.uniform(-math.pi, math.pi)),

@@ -12,22 +12,22 @@ def pid_step_limited(e, e_prev, integral, Kp, Ki, Kd, dt, u_max):
     derivative = (e - e_prev) / dt
     candidate = integral + e * dt
     u = Kp * e + Ki * candidate + Kd * derivative
-    u_out = max(-u_max, min(u_max, u))
-    saturated = u_out != u
+    winding = (u > u_max and e > 0) or (u < -u_max and e < 0)
     integral = candidate
-    return (u_out, integral)
+    u = Kp * e + Ki * integral + Kd * derivative
+    return (max(-u_max, min(u_max, u)), integral)
 """
 
 
 def _bug() -> str:
     f = windup_facts()
     o = f["overshoot"]
-    return (f"The integral keeps growing while the actuator is already at its limit (saturated is computed and "
-            f"never used). The motor cannot push harder, so the extra integral does nothing until the error "
+    return (f"The integral keeps growing while the actuator is already at its limit and the error pushes it "
+            f"further (winding is computed and never used). The motor cannot push harder, so the extra integral does nothing until the error "
             f"changes sign, and then it has to be unwound by pushing past the target. With Kp, Ki, Kd = "
             f"{', '.join(fmt(g) for g in f['gains'])} and the push limited to {fmt(f['u_max'])}, the step response "
             f"overshoots by {fixed(o['bug'], 1)} % instead of {fixed(o['fixed'], 1)} %. "
-            f"Fix: integral = integral if saturated else candidate.")
+            f"Fix: integral = integral if winding else candidate, the conditional integration of exercise 8.8.")
 
 
 def _reference(e, e_prev, integral, Kp, Ki, Kd, dt, u_max):
@@ -39,17 +39,17 @@ EXERCISES = (
         id="8.9",
         title="Find the windup",
         code=_PID,
-        bug_line=7,
-        fixed_line="    integral = integral if saturated else candidate",
+        bug_line=6,
+        fixed_line="    integral = integral if winding else candidate",
         bug=_bug(),
         notes={
             1: "takes the error, the last error, the integral so far, the gains, the step and the actuator's limit",
             2: "correct: the derivative of the error",
             3: "correct: what the integral would be after this step",
             4: "correct: the PID law with that integral",
-            5: "correct: the actuator saturates at ±u_max",
-            6: "correct: notes whether the output was clipped",
-            8: "returns the command and the integral to carry to the next step",
+            5: "correct: whether integrating would wind the output further past a limit (exercise 8.8's rule)",
+            7: "correct: the PID law with the integral kept",
+            8: "returns the command, clipped to ±u_max, and the integral to carry to the next step",
         },
         function="pid_step_limited",
         reference=_reference,

@@ -40,6 +40,8 @@ EXERCISES = (
             (-4, -1, -3, 2, 1, 0.5, 0.1, -5, 5),  # saturated low with the error pushing lower
             (-1, -1, 20, 1, 1, 0, 0.5, -5, 5),  # saturated high, but the error pulls back: integrate
             (0, 0, 2, 1, 1, 1, 0.2, -1, 1),  # no error, the old integral alone saturates
+            (1, 1, 4, 0, 1, 0, 2, -5, 5),  # the old integral inside the limits, the new one past u_max: hold it
+            (-1, -1, -4, 0, 1, 0, 2, -5, 5),  # and past u_min
         ),
         random_args=lambda rng: (rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-20, 20),
                                  rng.uniform(0, 5), rng.uniform(0, 2), rng.uniform(0, 2), rng.uniform(0.01, 1),

@@ -143,7 +143,7 @@ def _windup_draw(f: dict) -> str:
     ts, ys = f["runs"]["bug"]
     k = max(range(len(ys)), key=ys.__getitem__)
     c.text((ts[k], ys[k]), "integral winds up", "wb-fig-label wb-fig-small wb-fig-bad", dx=14, dy=-4, anchor="start")
-    c.text((WINDUP_TIME / 2, 0.75), "integral held while saturated", "wb-fig-label wb-fig-small wb-fig-c", anchor="start")
+    c.text((WINDUP_TIME / 2, 0.75), "integral held while it would wind up", "wb-fig-label wb-fig-small wb-fig-c", anchor="start")
     return c.svg(_windup_text(f))
 
 

@@ -69,6 +69,7 @@ class Build(Exercise):
     time_limit: float = 5.0
     harness: str = "call"
     run_figure: str = ""
+    angles: tuple[str, ...] = ()  # index paths of outputs compared as angles (π and −π agree): "[2]", "[*][2]"
     seed: int = 0  # which hidden cases: 0 the exercise's own, any other a fresh draw (a review, new cases)
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
@@ -205,7 +206,7 @@ def _verdict(ex: Build, report: Report, cases: list[Case]) -> Verdict:
         return verdict("incorrect", f"Your code {what} while loading.", TAG.exception, _error_data(load))
     if report.missing:
         return verdict("incorrect", f"Define a function named {ex.signature}.", TAG.missing)
-    rows = compare(report, cases, ex.rel_tol, ex.abs_tol)
+    rows = compare(report, cases, ex.rel_tol, ex.abs_tol, ex.angles)
     shown = len(ex.examples)
     rows = rows[:shown] + [hidden_summary(rows[shown:])]
     passed = sum(1 for r in rows if r["passed"])

@@ -44,9 +44,7 @@ class Debug(Exercise):
             return Verdict("invalid", f"Pick a line between 1 and {count}.")
         if n == self.bug_line:
             return Verdict("correct", self.bug, data={"line": n})
-        note = self.notes.get(n, "This line does what it should.").rstrip()
-        note = note if note.endswith((".", "!", "?")) else note + "."
-        return Verdict("incorrect", f"Line {n} is fine: {note} The bug is on another line.", data={"line": n})
+        return Verdict("incorrect", f"{_fine(n, self.notes.get(n, ''))} The bug is on another line.", data={"line": n})
 
     def widget(self, base: str, page: Page) -> str:
         rows = "".join(
@@ -72,6 +70,30 @@ class Debug(Exercise):
         return (f'<figure class="wb-symptom" {role_attr(ROLE.symptom)} id="{base}-symptom" hidden>'
                 f'<div class="wb-fig-canvas">{svg}</div>'
                 f'<figcaption>What the bug does: {escape(text)}</figcaption></figure>')
+
+
+_VERBS = ("takes", "returns", "imports", "unpacks", "clamps", "computes", "notes", "adds", "keeps")
+
+
+def _fine(n: int, note: str) -> str:
+    """The sentence on a line without the bug, from its note ("correct: the derivative of the error",
+    "correct once …: …", "takes the error …", or a noun phrase), read as a sentence.
+
+    >>> _fine(2, "correct: the derivative of the error")
+    'Line 2 is fine: the derivative of the error.'
+    >>> _fine(4, "correct once the angle is in radians: y by r·sin")
+    'Line 4 is correct once the angle is in radians: y by r·sin.'
+    >>> _fine(1, "takes the pose"), _fine(7, "correct: adds Q"), _fine(3, "")
+    ('Line 1 is fine: it takes the pose.', 'Line 7 is fine: it adds Q.', 'Line 3 is fine: it does what it should.')
+    """
+    note = note.strip().rstrip(".").removeprefix("correct: ") or "it does what it should"
+    if note.startswith("correct "):
+        text = f"Line {n} is {note}"
+    elif note.split(" ", 1)[0] in _VERBS:
+        text = f"Line {n} is fine: it {note}"
+    else:
+        text = f"Line {n} is fine: {note}"
+    return text if text.endswith(("!", "?")) else text + "."
 
 
 EXERCISE = Debug

@@ -74,23 +74,27 @@ def pid_step_saturated(e: float, e_prev: float, integral: float, Kp: float, Ki: 
     """One PID step whose output saturates at ±``u_max``, without integral windup.
 
     Returns ``(u, new_integral)``: u clipped into [−u_max, u_max]; the integral
-    grows by e·dt only when the output with that growth is not saturated
-    (conditional integration). A saturated actuator cannot act on a larger
-    integral, so one that kept growing (``anti_windup=False``: the bug of
+    grows by e·dt unless the output with that growth would lie past a limit with
+    the error pushing further that way (conditional integration, the rule of
+    :func:`pid_step_clamped` with u_min = −u_max). A saturated actuator cannot act on
+    a larger integral, so one that kept growing (``anti_windup=False``: the bug of
     exercise 8.9) would only have to be unwound later, by overshooting.
 
     >>> pid_step_saturated(1, 1, 0, 2, 1, 0, 0.1, 5)
     (2.1, 0.1)
     >>> pid_step_saturated(4, 4, 0.5, 2, 1, 0, 0.1, 5)
     (5, 0.5)
+    >>> [round(v, 6) for v in pid_step_saturated(-4, -4, 6, 2, 1, 0, 0.1, 5)]  # the error pulls back: integrate
+    [-2.4, 5.6]
     >>> pid_step_saturated(4, 4, 0.5, 2, 1, 0, 0.1, 5, anti_windup=False)
     (5, 0.9)
     """
     _check_dt(dt)
+    if anti_windup:
+        return pid_step_clamped(e, e_prev, integral, Kp, Ki, Kd, dt, -u_max, u_max)
     candidate = integral + e * dt
     u = Kp * e + Ki * candidate + Kd * (e - e_prev) / dt
-    u_out = max(-u_max, min(u_max, u))
-    return u_out, (integral if anti_windup and u_out != u else candidate)
+    return max(-u_max, min(u_max, u)), candidate
 
 
 def simulate_saturated(step, Kp: float, Ki: float, Kd: float, u_max: float, dt: float = 0.01,

@@ -31,7 +31,7 @@ from typing import Any, Callable
 
 from workbook_sandbox import harness
 
-from ...build_judge import Mismatch, numbers
+from ...build_judge import Mismatch, angle_at, numbers
 from ...number_format import compact
 from ...registry import RUN_FIGURES
 
@@ -57,6 +57,7 @@ class Drawn:
     got: Any = None  # shaped as ``want`` (a trajectory: the learner's samples, maybe fewer)
     message: str = ""  # what went wrong, for people ("" when the numbers are all there)
     error: float | None = None  # the largest difference from the reference (None: nothing to compare)
+    raw: list[float] | None = None  # the learner's plain numbers when they do not have the reference's shape
 
 
 @dataclass(frozen=True)
@@ -159,7 +160,17 @@ def _failure(outcome: dict[str, Any]) -> str:
     return f"raised {error['type']}" + (f": {error['message']}" if error["message"] else "")
 
 
-def _call_case(label: str, args: tuple, want: Any, outcome: dict[str, Any], points: bool) -> Drawn:
+def _plain(value: dict[str, Any]) -> list[float] | None:
+    """The numbers of a flat sequence of numbers (a pair where the reference refuses), else None."""
+    items = value.get("items")
+    if items is None or value.get("length") != len(items):
+        return None
+    out = [item.get("number") for item in items]
+    return out if all(isinstance(x, float) and math.isfinite(x) for x in out) else None
+
+
+def _call_case(label: str, args: tuple, want: Any, outcome: dict[str, Any], points: bool,
+               angles: tuple[str, ...] = ()) -> Drawn:
     drawn = Drawn(label, args, want)
     if "error" in outcome:
         drawn.message = f"Your function {_failure(outcome)}."
@@ -170,15 +181,33 @@ def _call_case(label: str, args: tuple, want: Any, outcome: dict[str, Any], poin
             drawn.got = numbers(outcome["value"], want)
         except Mismatch as err:
             drawn.message = f"Your function returned something else: {err}."
+            drawn.raw = _plain(outcome["value"])
         else:
-            drawn.error = (distance if points else largest_gap)(drawn.got, want)
+            drawn.error = (distance if points else largest_gap)(as_angles(drawn.got, want, angles), want)
             if not math.isfinite(drawn.error):
                 drawn.message = "Your function returned a number that is not finite (NaN or infinity)."
                 drawn.error = None
     return drawn
 
 
-def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], width: int, start: int) -> Drawn:
+def as_angles(got: Any, want: Any, angles: tuple[str, ...], at: str = "") -> Any:
+    """``got`` with each angle entry (``Build.angles``) in [−π, π] written as the turn nearest ``want``'s
+    (−π for π: the same half-turn, which the tests accept), for measuring errors.
+
+    >>> as_angles([1.0, -math.pi], [1.0, math.pi], ("[1]",))
+    [1.0, 3.141592653589793]
+    """
+    if not angles or got is None or want is None:
+        return got
+    if isinstance(got, (list, tuple)) and isinstance(want, (list, tuple)):
+        return [as_angles(g, w, angles, f"{at}[{i}]") for i, (g, w) in enumerate(zip(got, want))] + list(got[len(want):])
+    if isinstance(got, float) and math.isfinite(got) and abs(got) <= math.pi + 1e-9 and angle_at(at, angles):
+        return want + math.remainder(got - want, 2 * math.pi)
+    return got
+
+
+def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], width: int, start: int,
+                angles: tuple[str, ...] = ()) -> Drawn:
     drawn = Drawn(label, args, want, got=[])
     value = outcome.get("value", outcome.get("partial"))
     if value is not None:
@@ -191,7 +220,7 @@ def _trace_case(label: str, args: tuple, want: list, outcome: dict[str, Any], wi
         drawn.message = "The run stopped before this case."
     if len(drawn.got) > start:  # a start alone compares nothing
         common = min(len(drawn.got), len(want))
-        drawn.error = largest_gap(drawn.got[:common], want[:common])
+        drawn.error = largest_gap(as_angles(drawn.got[:common], want[:common], angles), want[:common])
     return drawn
 
 
@@ -221,8 +250,8 @@ def _items(fig: RunFigure, ex: Any, report: Any, cases: list, arguments: list[li
     shown = len(ex.examples)
     def one(label: str, args: tuple, want: Any, outcome: dict[str, Any]) -> Drawn:
         if fig.width is None:
-            return _call_case(label, args, want, outcome, fig.points)
-        return _trace_case(label, args, want, outcome, fig.width, int(fig.with_start))
+            return _call_case(label, args, want, outcome, fig.points, getattr(ex, "angles", ()))
+        return _trace_case(label, args, want, outcome, fig.width, int(fig.with_start), getattr(ex, "angles", ()))
     items = [one(f"test {k + 1}" if k < shown else f"hidden case {k - shown + 1}", tuple(args), case.want, outcome)
              for k, (args, case, outcome) in enumerate(zip(arguments, cases, outcomes))]
     hidden = items[shown:]
@@ -269,9 +298,20 @@ def draw_run(ex: Any, report: Any, cases: list, arguments: list[list]) -> dict[s
     fig = get(ex.run_figure)
     drawn, every = _items(fig, ex, report, cases, arguments)
     frames = [_frame(fig, d) for d in drawn]
+    return {"name": fig.name, "title": fig.title, "readout": _readout(fig, every), "frames": frames,
+            "start": _start(drawn, every)}
+
+
+def _start(drawn: list[Drawn], every: list[Drawn]) -> int:
+    """The frame to open on: the case the readout names first (the largest error, when it is not 0),
+    else the first that went wrong, else the worst."""
+    errors = [d for d in every if d.error is not None]
+    worst = max(errors, key=lambda d: d.error) if errors else None
+    at = next((k for k, d in enumerate(drawn) if d is worst), None)
+    if worst is not None and compact(worst.error) != "0" and at is not None:
+        return at
     badness = [math.inf if d.message else (d.error or 0.0) for d in drawn]
-    start = badness.index(max(badness)) if badness else 0
-    return {"name": fig.name, "title": fig.title, "readout": _readout(fig, every), "frames": frames, "start": start}
+    return badness.index(max(badness)) if badness else 0
 
 
 def trace_job(ex: Any) -> dict[str, Any] | None:

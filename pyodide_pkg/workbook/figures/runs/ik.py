@@ -33,19 +33,19 @@ def frame(d: Drawn) -> tuple[str, str]:
         truth = f"the reference reaches it with {_angles(d.want)}"
     else:
         truth = "the target is out of reach, and the reference returns None"
-    got = d.got
-    if got is not None and finite(*got):
+    got = d.got if d.got is not None else d.raw  # angles where the reference refuses are still drawn
+    if got is not None and len(got) == 2 and finite(*got):
         elbow, tip = _joints(L1, L2, got)
         draw_arm(c, elbow, tip, YOURS)
         miss = math.hypot(tip[0] - x, tip[1] - y)
-        yours = f"your angles, {_angles(got)}, put the tip {compact(miss)} from the target"
+        yours = f"your angles, {_angles(got)}, put the tip {compact(miss)} m from the target"
     elif got is None and d.want is None and not said:
         yours = "your function returns None too"
     else:
         yours = "your function gave no angles to draw"
     below = message(c, said)
     which = "elbow-up" if elbow_up else "elbow-down"
-    description = with_message(f"{d.label}: links {compact(L1)} and {compact(L2)}, target ({compact(x)}, "
+    description = with_message(f"{d.label}: links {compact(L1)} m and {compact(L2)} m, target ({compact(x)}, "
                                f"{compact(y)}), {which}; {truth}; {yours}.", said)
     return c.svg(f"ik_2link, {d.label}: the arm at your angles and at the reference's", extra_height=below), description
 
