@@ -107,8 +107,9 @@ def _exercise(state: BuildState, block: ExerciseBlock, path: str) -> tuple[str, 
     except VariantError as err:
         raise PluginError(f"{path}: exercise {block.id}: {err}") from None
     templates = text.as_dict() if getattr(ex, "vary", None) is not None else None
-    if templates is None and text.names():
-        raise PluginError(f"{path}: exercise {block.id} has placeholders {text.names()} but no generator (vary=...)")
+    unfilled = [name for name in text.names() if name not in values]
+    if templates is None and unfilled:
+        raise PluginError(f"{path}: exercise {block.id} has placeholders {unfilled} but no generator (vary=...) or values")
     widget = exercise_html(ex, shown.prompt, shown.hint, shown.solution, PageTools(inline=state.inline), templates)
     state.titles[block.id] = title
     slot = SLOT.format(id=block.id)

@@ -3,6 +3,7 @@
 // module only places it.
 
 import { ATTR, ROLE, STATE, findRole, ownRole } from "./contract.js";
+import { fillMath, renderMath } from "./math.js";
 
 export function setPending(el) {
   el.setAttribute(ATTR.state, STATE.pending);
@@ -17,16 +18,20 @@ export function showReply(el, reply) {
   const tag = verdict ? verdict.tag : reply.error.kind;
   if (tag) el.setAttribute(ATTR.tag, tag);
   else el.removeAttribute(ATTR.tag);
-  showMessage(el, verdict ? verdict.message : reply.error.message);
+  showMessage(el, verdict ? verdict.message : reply.error.message, verdict?.data?.math);
 }
 
 /** Where `el`'s messages go: an exercise's own feedback, or a checked step's (work-step-feedback). */
 export const feedbackOf = (el) => ownRole(el, ROLE.feedback) ?? ownRole(el, ROLE.workStepFeedback);
 
-export function showMessage(el, text) {
+/** Show one message; `math` (a verdict's data.math) is the same text with its formulas
+ *  marked, which are typeset with KaTeX as the page's own are. */
+export function showMessage(el, text, math = null) {
   const p = document.createElement("p");
-  p.textContent = text;
+  if (Array.isArray(math) && math.length) fillMath(p, math);
+  else p.textContent = text;
   feedbackOf(el).replaceChildren(p);
+  if (Array.isArray(math) && math.length) renderMath(p);
 }
 
 function testRow(row) {

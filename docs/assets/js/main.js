@@ -17,6 +17,7 @@ import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
 import { strayVariantLinks } from "./variants.js";
 import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
 import { findApi } from "./lms/api.js";
+import { renderMath } from "./math.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
@@ -63,34 +64,6 @@ const shared = {
   progress,
   renderMath,
 };
-
-// KaTeX typesets the page in slices of about 25 ms, yielding in between, so a
-// chapter full of formulas never blocks the main thread (no long task).
-const SLICE_MS = 25;
-const nextTask = () => new Promise((resolve) => setTimeout(resolve, 0));
-
-async function renderMath(scope) {
-  const katex = window.katex;
-  if (!katex) return;
-  let sliceStart = performance.now();
-  for (const el of scope.querySelectorAll(".arithmatex")) {
-    if (el.dataset.rendered) continue;
-    if (performance.now() - sliceStart > SLICE_MS) {
-      await nextTask();
-      sliceStart = performance.now();
-      if (el.dataset.rendered || !el.isConnected) continue;
-    }
-    const tex = el.textContent.trim();
-    const display = el.tagName === "DIV";
-    const body = display ? tex.replace(/^\\\[|\\\]$/g, "") : tex.replace(/^\\\(|\\\)$/g, "");
-    try {
-      katex.render(body, el, { displayMode: display, throwOnError: false });
-      el.dataset.rendered = "true";
-    } catch {
-      /* leave the TeX source visible */
-    }
-  }
-}
 
 function initPage() {
   renderMath(document);

@@ -37,7 +37,7 @@ def predicted_covariance(F, P, Q):
 
 
 def _dead_reckon(x, y, theta, v, omega, stamps_ms):
-    """The velocity model stepped from one time stamp (ms) to the next, in seconds."""
+    """The motion model stepped from one time stamp (ms) to the next, in seconds."""
     state = (x, y, theta)
     for earlier, later in zip(stamps_ms, stamps_ms[1:]):
         state = motion_model(state, v, omega, (later - earlier) / 1000)
@@ -72,7 +72,7 @@ def _ms_bug() -> str:
     right = _dead_reckon(x, y, theta, v, omega, list(_STAMPS))
     wrong = x + v * (_STAMPS[-1] - _STAMPS[0])
     step = _STAMPS[1] - _STAMPS[0]
-    return (f"The time stamps are in milliseconds, and the velocity model wants seconds: dt comes out "
+    return (f"The time stamps are in milliseconds, and the motion model wants seconds: dt comes out "
             f"{fmt(step)} where it should be {fmt(step / 1000)}, a thousand times too large. Driving at {fmt(v)} m/s "
             f"for {fmt((_STAMPS[-1] - _STAMPS[0]) / 1000)} s of {fmt(1000 / step)} Hz odometry, the robot "
             f"believes it moved {fmt(wrong)} m instead of {fmt(right[0])} m, and every turn is a thousand times "

@@ -298,7 +298,7 @@ EXERCISES = (
                    "Constant speed is not needed: even with v changing from step to step, ∂x'/∂x stays 1. "
                    "The diagonal comes from the form of the model, not from v."),
             Option("b", "Because each new coordinate is the old one plus a change, e.g. $x' = x + \\Delta x$",
-                   "Right. The velocity model adds a displacement to each coordinate, and the displacement does "
+                   "Right. The motion model adds a displacement to each coordinate, and the displacement does "
                    "not depend on x, y (only on θ), so ∂x'/∂x = ∂y'/∂y = ∂θ'/∂θ = 1 and F = I plus off-diagonal terms."),
             Option("c", "Because F is a rotation matrix, and those have ones on the diagonal",
                    "F is not a rotation, and rotations have cos θ on their diagonal, not 1."),

@@ -1,6 +1,7 @@
 """Chapter 5 · Code the robot: edge errors and one Gauss–Newton step on a line of three poses."""
 
 from ..kinds.build import Build
+from ..number_format import fmt
 from ..reference.pose_graph import gauss_newton_step_1d
 
 _SOLUTION = '''def gauss_newton_step(x, edges):
@@ -25,6 +26,36 @@ _SOLUTION = '''def gauss_newton_step(x, edges):
 '''
 
 _PAIRS = ((0, 1), (1, 2), (0, 2), (2, 1), (1, 0), (2, 0))
+
+# The examples the page shows: a loop of two odometry edges and a loop closure that
+# disagrees by 0.2, the closure weighted like the odometry, then ten times more.
+_EQUAL = ((0, 1, 2), ((0, 1, 1, 1), (1, 2, 1, 1), (0, 2, 2.2, 1)))
+_HEAVY = ((0, 1, 2), ((0, 1, 1, 1), (1, 2, 1, 1), (0, 2, 2.2, 10)))
+
+
+def _left(x, edges):
+    """Each edge's error after one step (the step lands on the optimum: the errors are linear)."""
+    _, after = gauss_newton_step_1d(x, edges)
+    return gauss_newton_step_1d(after, edges)[0]
+
+
+def _shares():
+    """What the solution says about who absorbs the loop's mismatch, from the reference.
+
+    At the optimum every edge of the loop carries the same w·|e|, so a heavier edge keeps
+    less of the mismatch: the shares go as 1/w.
+
+    >>> v = _shares(); v["mismatch"], v["equal"], v["odo"], v["closure"], v["ratio"]
+    ('0.2', '0.06667', '0.09524', '0.009524', '10')
+    """
+    mismatch = gauss_newton_step_1d(*_EQUAL)[0][2]
+    equal = [abs(e) for e in _left(*_EQUAL)]
+    heavy = [abs(e) for e in _left(*_HEAVY)]
+    forces = [w * e for (*_, w), e in zip(_HEAVY[1], heavy)]
+    if len({fmt(e) for e in equal}) != 1 or len({fmt(f) for f in forces}) != 1 or fmt(3 * equal[0]) != fmt(mismatch):
+        raise ValueError("5.8's solution says the edges end alike (a third each); the reference disagrees")
+    return {"mismatch": fmt(mismatch), "equal": fmt(equal[0]), "odo": fmt(heavy[0]), "closure": fmt(heavy[2]),
+            "ratio": fmt(heavy[0] / heavy[2]), "weight": fmt(_HEAVY[1][2][3])}
 
 
 def _graph(rng):
@@ -54,8 +85,8 @@ EXERCISES = (
         reference=gauss_newton_step_1d,
         run_figure="pose-graph",
         examples=(
-            ((0, 1, 2), ((0, 1, 1, 1), (1, 2, 1, 1), (0, 2, 2.2, 1))),
-            ((0, 1, 2), ((0, 1, 1, 1), (1, 2, 1, 1), (0, 2, 2.2, 10))),
+            _EQUAL,
+            _HEAVY,
             ((0, 1.1, 1.9), ((0, 1, 1, 2), (1, 2, 1, 2))),
         ),
         edge_cases=(
@@ -65,5 +96,6 @@ EXERCISES = (
             ((0, 1, 2), ((2, 1, -1.1, 1), (1, 0, -0.9, 2), (0, 2, 2, 1))),  # edges written backwards
         ),
         random_args=_graph,
+        values=_shares(),
     ),
 )

@@ -42,7 +42,7 @@ def _heading(p) -> tuple[int, float]:
 
 
 def _predicted_pose(p):
-    """The predict step (velocity model) from the drawn pose, with its intermediate numbers."""
+    """The predict step (the motion model) from the drawn pose, with its intermediate numbers."""
     deg, th = _heading(p)
     x, y, v, omega, dt = p["x"], p["y"], p["v"], p["omega"], p["dt"]
     pred = motion_model((x, y, th), v, omega, dt)
@@ -69,7 +69,7 @@ def _predicted_pose(p):
 
 def _turned_first(p) -> str:
     """The message for driving along the new heading."""
-    return ("You turned first and then drove. The velocity model moves along the heading at the start "
+    return ("You turned first and then drove. The motion model moves along the heading at the start "
             f"of the step, θ = {pi_frac(_heading(p)[0], tex=False)}; the turn takes effect from the next step.")
 
 
@@ -106,7 +106,7 @@ def _move_slips(p, vdt: float, key, entries):
 
 
 def _new_x(p, given=None):
-    """9.2: x′ after one predict step of the velocity model. Steps: v·dt, then its part in x."""
+    """9.2: x′ after one predict step of the motion model. Steps: v·dt, then its part in x."""
     pred, turned, swapped, values = _predicted_pose(p)
     th = _heading(p)[1]
     vdt, driven = _driven(p, given)
@@ -127,7 +127,7 @@ def _new_x(p, given=None):
 
 
 def _new_state(p, given=None):
-    """9.8: the whole predicted state (x′, y′, θ′) of the velocity model. Steps: v·dt, then the
+    """9.8: the whole predicted state (x′, y′, θ′) of the motion model. Steps: v·dt, then the
     move (Δx, Δy, Δθ) it makes."""
     pred, turned, swapped, values = _predicted_pose(p)
     deg, th = _heading(p)

@@ -1,4 +1,4 @@
-"""Chapter 3: predict steps only. The mean follows the velocity model and the
+"""Chapter 3: predict steps only. The mean follows the motion model and the
 covariance grows, P⁻ = F P Fᵀ + Q, drawn as one 1σ ellipse per step."""
 
 from __future__ import annotations
@@ -81,7 +81,7 @@ def draw(p: dict[str, float]) -> dict:
 FIGURE = Figure(
     name="ekf-predict",
     title="Prediction spreads uncertainty",
-    caption="Each step moves the estimate by the velocity model and pushes the covariance forward with "
+    caption="Each step moves the estimate by the motion model and pushes the covariance forward with "
             "P⁻ = F P Fᵀ + Q. The ellipses (one standard deviation in x and y) only grow; a heading error "
             "stretches them sideways as the robot drives on.",
     controls=(

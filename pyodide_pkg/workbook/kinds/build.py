@@ -26,8 +26,8 @@ import copy
 import json
 import random
 import sys
-from dataclasses import dataclass, replace
-from typing import Any, Callable, ClassVar
+from dataclasses import dataclass, field, replace
+from typing import Any, Callable, ClassVar, Mapping
 
 from workbook_sandbox import harness, runner
 from workbook_sandbox.restore import STDLIB_HOMES, Restore
@@ -52,6 +52,8 @@ class Build(Exercise):
     (``workbook_sandbox.harness``: ``"call"`` calls it once). ``run_figure`` names
     the picture drawn after a run, the learner's function beside the reference
     (``workbook.figures.runs``); its frames go in the verdict's ``data["figure"]``.
+    ``values`` fill the ``{{name}}`` placeholders of its chapter text (numbers its
+    solution prints, computed from the reference when the bank loads).
     """
 
     function: str = ""
@@ -71,6 +73,7 @@ class Build(Exercise):
     run_figure: str = ""
     angles: tuple[str, ...] = ()  # index paths of outputs compared as angles (π and −π agree): "[2]", "[*][2]"
     seed: int = 0  # which hidden cases: 0 the exercise's own, any other a fresh draw (a review, new cases)
+    values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)  # the chapter's {{name}}s (from the reference)
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
     reveal_label: ClassVar[str] = "Show solution"

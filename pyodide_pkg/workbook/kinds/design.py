@@ -5,6 +5,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ..math_text import math_data, pieces
 from ..verdict import Verdict
 from .base import ATTR, ROLE, Exercise, Page, escape, role_attr
 from ..markup import check_button, form
@@ -31,6 +32,11 @@ class Design(Exercise):
             raise ValueError(f"exercise {self.id}: the order first shown is the solved order")
         if sorted(self.shown) != sorted(self.solution):
             raise ValueError(f"exercise {self.id}: the order shown must hold every step once")
+        for step in self.steps:  # every formula closed, so the page can typeset a message that quotes it
+            try:
+                pieces(step.text)
+            except ValueError as err:
+                raise ValueError(f"exercise {self.id}, step {step.key}: {err}") from None
 
     @property
     def solution(self) -> tuple[str, ...]:
@@ -46,11 +52,8 @@ class Design(Exercise):
             return Verdict("correct", "Correct: every step is in place.", data={"in_place": in_place})
         first = next(i for i, (a, b) in enumerate(zip(order, solution)) if a != b)
         text = {s.key: s.text for s in self.steps}[order[first]]
-        return Verdict(
-            "incorrect",
-            f"{in_place} of {len(solution)} steps are in place. The first one out of place is step {first + 1}, “{text}”.",
-            data={"in_place": in_place, "first_wrong": first + 1},
-        )
+        message = f"{in_place} of {len(solution)} steps are in place. The first one out of place is step {first + 1}, “{text}”."
+        return Verdict("incorrect", message, data={"in_place": in_place, "first_wrong": first + 1, **math_data(message)})
 
     def widget(self, base: str, page: Page) -> str:
         text = {s.key: s.text for s in self.steps}

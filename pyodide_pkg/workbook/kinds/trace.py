@@ -6,6 +6,7 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from ..contract import TAG
+from ..math_text import math_data, pieces
 from ..verdict import Verdict
 from .base import ROLE, Exercise, Page, escape, role_attr
 from ..markup import check_button, form
@@ -26,11 +27,19 @@ class Trace(Exercise):
     answer: str = ""
     kind: ClassVar[str] = "trace"
 
+    def __post_init__(self) -> None:
+        for o in self.options:  # every formula closed, so the page can typeset each reason
+            try:
+                pieces(o.text), pieces(o.why)
+            except ValueError as err:
+                raise ValueError(f"exercise {self.id}, option {o.key}: {err}") from None
+
     def check(self, choice: object) -> Verdict:
         options = {o.key: o for o in self.options}
         if not isinstance(choice, str) or choice not in options:  # a list would not even hash
             return Verdict("invalid", "Choose one of the options first.")
-        return Verdict("correct" if choice == self.answer else "incorrect", options[choice].why, tag=TAG.why)
+        why = options[choice].why
+        return Verdict("correct" if choice == self.answer else "incorrect", why, tag=TAG.why, data=math_data(why))
 
     def widget(self, base: str, page: Page) -> str:
         items = "".join(

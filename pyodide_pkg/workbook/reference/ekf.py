@@ -1,5 +1,5 @@
-"""The extended Kalman filter for a planar robot: predict with the velocity
-model, update with a range-and-bearing landmark sighting.
+"""The extended Kalman filter for a planar robot: predict with the motion
+model (one Euler step of the unicycle), update with a range-and-bearing landmark sighting.
 
 The state is the pose ``(x, y, theta)``; matrices are lists of rows.
 """
@@ -33,8 +33,29 @@ def motion_model(state, v: float, omega: float, dt: float) -> tuple[float, float
             theta + omega * dt)
 
 
+def motion_model_arc(state, v: float, omega: float, dt: float) -> tuple[float, float, float]:
+    """The exact motion for constant ``v`` and ``omega``: a circular arc of radius v/ω
+    (Probabilistic Robotics' velocity motion model), a straight line when ω = 0.
+
+    :func:`motion_model` is its first-order (Euler) step: they agree to first order in
+    ``dt``, the Euler end lying about v·ω·dt²/2 to the outside of the turn.
+
+    >>> motion_model_arc((0, 0, 0), 1, 0, 1) == motion_model((0, 0, 0), 1, 0, 1)
+    True
+    >>> [round(s, 4) for s in motion_model_arc((0, 0, 0), 1, math.pi / 2, 1)]  # a quarter circle of radius 2/π
+    [0.6366, 0.6366, 1.5708]
+    """
+    x, y, theta = state
+    if omega == 0:
+        return motion_model(state, v, omega, dt)
+    r, turned = v / omega, theta + omega * dt
+    return (x + r * (math.sin(turned) - math.sin(theta)),
+            y - r * (math.cos(turned) - math.cos(theta)),
+            turned)
+
+
 def motion_jacobian(state, v: float, omega: float, dt: float) -> Matrix:
-    """F = ∂f/∂x of the velocity model at ``state``.
+    """F = ∂f/∂x of the motion model at ``state``.
 
     Only the heading column differs from the identity.
 

@@ -28,7 +28,7 @@ def pose_graph_variables(n_poses: int, pose_dof: int = 3) -> int:
 
 
 def gauss_newton_size(n_poses: int, pose_dof: int, n_landmarks: int = 0, landmark_dof: int = 0) -> int:
-    """The side of the square matrix H in the Gauss–Newton step H Δx = b.
+    """The side of the square matrix H in the Gauss–Newton step H Δx = −b.
 
     H has one row (and one column) per unknown, poses and landmarks alike.
 
@@ -284,7 +284,7 @@ def gauss_newton_step_1d(x: Sequence[float], edges: Sequence[tuple[int, int, flo
     """Exercise 5.8: one Gauss–Newton step on three poses along a line, pose 0 held fixed.
 
     ``edges`` are ``(i, j, z, w)``: pose j measured ``z`` ahead of pose i, with weight (information) w.
-    Each edge's error is e = z − (x_j − x_i); the step solves H Δ = −b over poses 1 and 2, with
+    Each edge's error is e = z − (x_j − x_i); the step solves H Δx = −b over poses 1 and 2, with
     H = Σ w JᵀJ and b = Σ w Jᵀe (J = ∂e/∂x: +1 at i, −1 at j). Returns ``(errors before the step,
     poses after it)``, or None when H is singular (a pose no edge ties to the anchor).
 

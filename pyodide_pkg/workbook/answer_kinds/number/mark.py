@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING
 
 from ...contract import TAG
 from ...expr import Reading
+from ...number_format import fmt, is_exact
 from ...tolerance import FIGURES, agrees, clean, is_close_miss, is_sign_slip
 from ...verdict import Verdict
 
@@ -46,6 +47,16 @@ def close_message(reading: Reading) -> str:
             "(4 is safer), and carry more digits through the intermediate steps.")
 
 
+def _converted(value: float, other: float, unit: str, other_unit: str) -> str:
+    """The learner's angle in the other unit, "is" only when both numbers print exactly.
+
+    >>> _converted(0.5, 28.64788975654116, " rad", "°"), _converted(90, math.pi / 2, "°", " rad")
+    ('0.5 rad is about 28.6479°', '90° is about 1.5708 rad')
+    """
+    verb = "is" if is_exact(value) and is_exact(other) else "is about"
+    return f"{fmt(value)}{unit} {verb} {fmt(other)}{other_unit}"
+
+
 def mark(ans: "NumberAnswer", reading: Reading) -> Verdict:
     value, half = reading.value, _half(reading)
     key = clean(ans.key)
@@ -63,11 +74,13 @@ def mark(ans: "NumberAnswer", reading: Reading) -> Verdict:
                else "your angle was taken as radians although you meant degrees")
         return Verdict("incorrect", TRIG_DEGREES.format(how=how), tag=TAG.degrees)
     if reading.bare and ans.angle == "deg" and agrees_with(ans, math.degrees(value), key):
-        return Verdict("incorrect", "That looks like radians. This answer is in degrees: multiply by 180/π, "
-                       "or type the unit, e.g. 0.9273 rad.", tag=TAG.radians)
+        return Verdict("incorrect", f"That looks like radians: {_converted(value, math.degrees(value), ' rad', '°')}. "
+                       f"This answer is in degrees: multiply by 180/π, or type the unit, {fmt(value)} rad.",
+                       tag=TAG.radians)
     if reading.bare and ans.angle == "rad" and agrees_with(ans, math.radians(value), key):
-        return Verdict("incorrect", "That looks like degrees. This answer is in radians: multiply by π/180, "
-                       "or type the unit, e.g. 90°.", tag=TAG.degrees)
+        return Verdict("incorrect", f"That looks like degrees: {_converted(value, math.radians(value), '°', ' rad')}. "
+                       f"This answer is in radians: multiply by π/180, or type the unit, {fmt(value)}°.",
+                       tag=TAG.degrees)
     if is_sign_slip(value, key, rel=ans.rel_tol) or (half and key and agrees(-value, key, half_unit=half)):
         return Verdict("incorrect", "The size is right but the sign is wrong. Check which way the quantity points.",
                        tag=TAG.sign)
