@@ -35,8 +35,9 @@ import builtins
 import random
 import sys
 import types
+from collections.abc import Iterable
 from operator import is_
-from typing import Any, Iterable
+from typing import Any
 
 _FIRST = (vars(builtins), globals())  # what the restore itself looks names up in
 # Packages whose classes, containers and functions are watched besides every module's names.
@@ -71,7 +72,7 @@ class Restore:
         self.homes = tuple(homes)
         self.objects = list(objects)
 
-    def __enter__(self) -> "Restore":
+    def __enter__(self) -> Restore:
         self.first = [(space, dict(space)) for space in _FIRST]
         self.table = dict(sys.modules)
         self.spaces = [(mod.__dict__, _snapshot(mod.__dict__)) for mod in self.table.values()

@@ -13,8 +13,24 @@ from workbook.contract import ATTR, ROLE, STATE
 
 from . import first_visit, pagejs
 from .browser import BenchError, Browsers
-from .config import (BUILD_HEAVY_ID, BUILD_ID, BUILD_NEW_ID, BUILD_LOOP, BUILD_NUMPY, BUILD_PLAIN, CH0, CH1, CH3, CH9, DERIVE_INPUT, GRADE_TIMEOUT_MS,
-                     GRADED, NUMPY_TIMEOUT_MS, READY_TIMEOUT_MS, Profile)
+from .config import (
+    BUILD_HEAVY_ID,
+    BUILD_ID,
+    BUILD_LOOP,
+    BUILD_NEW_ID,
+    BUILD_NUMPY,
+    BUILD_PLAIN,
+    CH0,
+    CH1,
+    CH3,
+    CH9,
+    DERIVE_INPUT,
+    GRADE_TIMEOUT_MS,
+    GRADED,
+    NUMPY_TIMEOUT_MS,
+    READY_TIMEOUT_MS,
+    Profile,
+)
 from .pagejs import exercise, role
 from .records import percentile
 

@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pytest
 
+from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
 from workbook import bank
 from workbook.answer_kinds.expression.mark import equivalent
 from workbook.contract import BUILD_FUNCTIONS, KINDS
@@ -28,10 +29,8 @@ from workbook.kinds.design import Design
 from workbook.kinds.trace import Trace
 from workbook.variants import fill
 
-from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
-
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "golden"))
-from transcript import SLIP_TEXTS  # noqa: E402  (each formula slip typed as a learner would)
+from transcript import SLIP_TEXTS
 
 
 def check(ex, answer):
