@@ -30,8 +30,9 @@ the page links back to 9.2 with that text.
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping
+from typing import Any
 
 from .contract import TAG
 from .number_format import prose

@@ -47,11 +47,12 @@ to look at first), or the first step when none were tried.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, Mapping
+from typing import Any
 
-from .answer_kinds.base import AnswerKind, AnswerSpec
 from . import chains
+from .answer_kinds.base import AnswerKind, AnswerSpec
 from .chains import value_of
 from .contract import TAG
 from .verdict import GradingError, Verdict, quote

@@ -23,9 +23,10 @@ from __future__ import annotations
 import math
 import random
 import re
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from html import escape
-from typing import Any, Callable, Iterator, Mapping
+from typing import Any
 
 PLACEHOLDER = re.compile(r"\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}")
 MAX_SEED = 999_999
@@ -77,7 +78,7 @@ class Param:
     avoid: tuple[float, ...] = ()
 
     def grid(self) -> list[float]:
-        n = int(round((self.hi - self.lo) / self.step))
+        n = round((self.hi - self.lo) / self.step)
         values = [_trim(self.lo + k * self.step) for k in range(n + 1)]
         return [v for v in values if not any(math.isclose(v, a, abs_tol=1e-9) for a in self.avoid)]
 

@@ -36,7 +36,8 @@ from __future__ import annotations
 
 import math
 import random
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 # The plant of the PID loop: a mass on a spring and damper, m·ÿ + c·ẏ + k·y = u
 # (the plant of chapter 8's figure), started at rest, asked to reach TARGET.

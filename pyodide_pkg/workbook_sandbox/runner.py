@@ -45,7 +45,8 @@ import copy
 import io
 import json
 import traceback
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 from . import harness
 from .restore import STDLIB_HOMES, Restore

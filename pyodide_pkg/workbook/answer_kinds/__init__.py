@@ -28,7 +28,7 @@ def classes() -> dict[str, type]:
     """Each registered answer kind's class, by name."""
     out = {}
     for name in ANSWER_KINDS:
-        cls = getattr(importlib.import_module(module_name(name)), "ANSWER")
+        cls = importlib.import_module(module_name(name)).ANSWER
         if cls.kind != name:
             raise TypeError(f"{module_name(name)} defines answers of kind {cls.kind!r}, not {name!r}")
         out[name] = cls

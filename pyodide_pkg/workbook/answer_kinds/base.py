@@ -21,9 +21,10 @@ ValueError: exercise 0.1: an answer of kind '' has no option 'periodic' (its opt
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Mapping
 from dataclasses import dataclass
 from types import ModuleType
-from typing import Any, ClassVar, Mapping
+from typing import Any, ClassVar
 
 from ..verdict import GradingError, Verdict
 

@@ -2,10 +2,10 @@
 
 import math
 
-from ..kinds.build import Build
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..kinds.build import Build
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, relation, shown

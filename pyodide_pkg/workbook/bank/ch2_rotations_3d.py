@@ -3,8 +3,8 @@
 import math
 
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, relation, relation_all, shown

@@ -2,20 +2,20 @@
 
 import math
 
-from ..kinds.debug import Debug
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
-from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..kinds.debug import Debug
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import bmatrix, fmt, pi_frac, relation
-from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
+from ..reference.ekf import motion_jacobian, motion_model
 from ..reference.linalg import add, matmul, transpose
+from ..steps import Step
 from ..tolerance import clean
 from ..variants import Choice, Param, Vary
-from .. import chains
-from ..steps import Step
 from . import grid
 from .checks import apart, slips_apart
 from .heading_column import heading_column_formula

@@ -3,19 +3,28 @@ P⁻ = F P Fᵀ + Q built from it (3.8), which can be worked in checked steps (F
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
 from ..answer_kinds.matrix import matrix
+from ..chains import Uses
 from ..kinds.derive import Derive
 from ..number_format import bmatrix, fmt
-from ..reference.ekf import ekf_predict, motion_jacobian
-from ..reference.linalg import add, matmul, sub, identity, transpose
+from ..reference.ekf import motion_jacobian
+from ..reference.linalg import add, identity, matmul, sub, transpose
 from ..variants import Param, Vary
-from .. import chains
-from ..chains import Uses
 from . import grid
-from .checks import slips_apart
 from .ch3_ekf_predict import (  # the chapter's shared numbers, and the steps F P, F P Fᵀ (3.4's too)
-    _EAST, _NORTH, _P, _Q, PUSH_STEPS, _heading_gain, _metres, _pushed_forward, push_steps)
+    _EAST,
+    _NORTH,
+    _P,
+    _Q,
+    PUSH_STEPS,
+    _heading_gain,
+    _metres,
+    _pushed_forward,
+    push_steps,
+)
+from .checks import slips_apart
 
 _PRINTED_37 = (2, 0.5)  # (v, dt) as the workbook prints 3.7 (variant 0); 3.8's variant 0 carries its F
 

@@ -2,18 +2,18 @@
 
 import math
 
-from ..kinds.build import Build
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..chains import Uses
+from ..kinds.build import Build
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fixed, fmt, paren, relation, shown
-from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
-from ..variants import Param, Vary
-from .. import chains
-from ..chains import Uses
+from ..reference.ekf import ekf_update, innovation, range_bearing
 from ..steps import Step
+from ..variants import Param, Vary
 from . import column
 from .checks import apart
 

@@ -4,15 +4,24 @@ and q, as 4.1 and 4.3 are) and one entry of its position columns as a formula (4
 import math
 
 from ..answer_kinds.base import Slip
-from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
+from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..number_format import fmt, relation
 from ..reference.ekf import measurement_jacobian
 from ..variants import Choice, Vary
 from . import grid
 from .ch4_ekf_update import (  # the chapter's sighting and its steps
-    OFFSET, SQUARED, _LANDMARK, _SIGHTING, _ahead, _jacobian_of, _offset, _sighting, _squared)
+    _LANDMARK,
+    _SIGHTING,
+    OFFSET,
+    SQUARED,
+    _ahead,
+    _jacobian_of,
+    _offset,
+    _sighting,
+    _squared,
+)
 
 
 def _whole_jacobian(p, given=None):

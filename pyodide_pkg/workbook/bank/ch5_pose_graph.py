@@ -2,12 +2,13 @@
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import bmatrix, fmt, paren, relation, relation_all
+from ..number_format import fmt, paren, relation, relation_all
 from ..reference.linalg import det2
 from ..reference.pose_graph import (
     edge_error,
@@ -18,9 +19,8 @@ from ..reference.pose_graph import (
     pose_graph_variables,
     relative_pose,
 )
-from ..variants import Param, Vary
-from .. import chains
 from ..steps import Step
+from ..variants import Param, Vary
 from . import column, grid
 from .checks import apart
 
@@ -28,9 +28,8 @@ _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
 # Exercise 5.6: pose 1 sits at (2, 1) facing north; the prose turns the motion with R(90°).
 _XI = (2.0, 1.0, math.pi / 2)
-_WORDS = ("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen "
-          "sixteen seventeen eighteen nineteen").split()
-_TENS = "twenty thirty forty fifty sixty seventy eighty ninety".split()
+_WORDS = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
+_TENS = ["twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
 
 
 def _times(r: float) -> str:

@@ -6,10 +6,11 @@ The arm's first step, the direction of link 2 (LINK2_DIRECTION with its slips), 
 
 import math
 
-from ..kinds.build import Build
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.expression import formula
+from ..answer_kinds.number import number
+from ..kinds.build import Build
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import approx, fmt, paren, prose, relation, shown, signed
@@ -19,9 +20,8 @@ from ..reference.arm import (
     inverse_kinematics_2link,
     is_reachable,
 )
-from ..variants import Choice, Param, Vary
-from .. import chains
 from ..steps import Step
+from ..variants import Choice, Param, Vary
 from .checks import apart, kept_slips, slips_apart
 
 _T1, _T2 = math.radians(30), math.radians(45)

@@ -2,11 +2,13 @@
 
 import math
 
-from ..kinds.debug import Debug
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
-from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..chains import Uses
+from ..kinds.debug import Debug
 from ..kinds.derive import Derive
 from ..number_format import approx, bmatrix, fmt, paren, prose, relation, shown, signed
 from ..reference.arm import (
@@ -17,15 +19,12 @@ from ..reference.arm import (
     most_manipulable_theta2,
     velocity_ratio,
 )
-from ..variants import Choice, Param, Vary
-from .. import chains
-from ..chains import Uses
 from ..reference.linalg import add
 from ..steps import Step
+from ..variants import Choice, Param, Vary
 from . import column, grid
-from .checks import apart
 from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
-from .checks import kept_slips
+from .checks import apart, kept_slips
 
 _BUGGY = """\
 import math

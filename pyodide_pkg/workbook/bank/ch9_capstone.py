@@ -32,22 +32,21 @@ The values carried in are the answers printed before them (variant 0):
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..chains import Uses
 from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
 from ..number_format import fmt, paren, relation, shown, signed
 from ..reference.ekf import ekf_update, kalman_gain, range_bearing
 from ..reference.pid import p_term
-from ..variants import Param, Vary
-from .. import chains
-from ..chains import Uses
 from ..steps import Step as WorkStep
+from ..variants import Param, Vary
 from . import column
-from .checks import slips_apart
-from .checks import kept_slips
 from .ch9_predict import PRED_FULL  # where the capstone's chain starts: 9.2's predicted pose
+from .checks import kept_slips, slips_apart
 
 _PRED_FULL = PRED_FULL                                 # 9.2's answer, printed (5.8660, 3.5, 0.6236)
 _PRED = tuple(shown(v) for v in _PRED_FULL)            # ... and carried as printed into 9.3 and 9.4

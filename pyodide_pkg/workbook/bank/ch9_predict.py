@@ -14,18 +14,17 @@ the heading at the start of the step (its x part for 9.2; Δx, Δy and the turn
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
 from ..kinds.derive import Derive
 from ..number_format import approx, fmt, pi_frac, relation, shown
 from ..reference.ekf import motion_jacobian, motion_model
-from ..variants import Choice, Param, Vary
-from .. import chains
 from ..steps import Step
+from ..variants import Choice, Param, Vary
 from . import column
-from .checks import slips_apart
-from .checks import kept_slips
+from .checks import kept_slips, slips_apart
 
 START = (5.0, 3.0, math.pi / 6)
 V, OMEGA, DT = 1.0, 0.1, 1.0
@@ -130,7 +129,7 @@ def _new_state(p, given=None):
     """9.8: the whole predicted state (x′, y′, θ′) of the velocity model. Steps: v·dt, then the
     move (Δx, Δy, Δθ) it makes."""
     pred, turned, swapped, values = _predicted_pose(p)
-    deg, th = _heading(p)
+    _deg, th = _heading(p)
     vdt, driven = _driven(p, given)
     along = motion_model((0.0, 0.0, th), vdt, 0.0, 1.0)  # (v·dt·cos θ, v·dt·sin θ)
     turn = motion_model((0.0, 0.0, 0.0), 0.0, p["omega"], p["dt"])[2]  # ω·dt

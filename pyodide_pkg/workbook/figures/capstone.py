@@ -12,8 +12,14 @@ import random
 from functools import lru_cache
 from typing import NamedTuple
 
-from ..reference.ekf import covariance_ellipse, ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
-from ..reference.ekf import motion_model
+from ..reference.ekf import (
+    covariance_ellipse,
+    ekf_predict,
+    ekf_update_matrix,
+    measurement_jacobian,
+    motion_model,
+    range_bearing,
+)
 from ..reference.pose_graph import wrap_angle
 from . import Control, Figure, Readout
 from .svg import Canvas, num

@@ -5,8 +5,7 @@ from __future__ import annotations
 
 import math
 
-from ..reference.ekf import (covariance_ellipse, ekf_update_matrix, kalman_gain, measurement_jacobian,
-                             range_bearing)
+from ..reference.ekf import covariance_ellipse, ekf_update_matrix, kalman_gain, measurement_jacobian, range_bearing
 from ..reference.pose_graph import wrap_angle
 from . import Control, Figure, Readout
 from .svg import Canvas, matrix, num

@@ -8,8 +8,13 @@ from __future__ import annotations
 
 import math
 
-from ..reference.arm import (end_effector_velocity, forward_kinematics_2link, jacobian_2link, jacobian_det,
-                             manipulability)
+from ..reference.arm import (
+    end_effector_velocity,
+    forward_kinematics_2link,
+    jacobian_2link,
+    jacobian_det,
+    manipulability,
+)
 from . import Control, Figure, Readout
 from .svg import Canvas, matrix, num
 

@@ -7,8 +7,8 @@ workbook.css``, section "Figures"), which follow the light and dark palettes.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable, Sequence
 from html import escape
-from typing import Iterable, Sequence
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]  # left, top, right, bottom (viewBox units)

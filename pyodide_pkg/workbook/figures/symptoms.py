@@ -17,8 +17,8 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from functools import cache
-from typing import Callable
 
 from ..number_format import fixed, fmt, prose
 from ..reference.arm import forward_kinematics_2link, inverse_kinematics_2link

@@ -25,7 +25,7 @@ def classes() -> dict[str, type[Exercise]]:
     out = {}
     for name in KINDS:
         module = importlib.import_module(f"{__name__}.{name}")
-        cls = getattr(module, "EXERCISE")
+        cls = module.EXERCISE
         if cls.kind != name:
             raise TypeError(f"kinds/{name}.py defines an exercise of kind {cls.kind!r}")
         out[name] = cls

@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from html import escape
-from typing import Any, Callable, ClassVar, Protocol
+from typing import Any, ClassVar, Protocol
 
 from ..contract import ATTR, ROLE, role_attr
 from ..verdict import Verdict
@@ -62,4 +63,4 @@ def form(kind: str, inner: str) -> str:
     return f'<form class="wb-form wb-{kind}" novalidate>{inner}</form>'
 
 
-__all__ = ["ATTR", "Callable", "Exercise", "Page", "PlainPage", "ROLE", "check_button", "escape", "form", "role_attr"]
+__all__ = ["ATTR", "ROLE", "Callable", "Exercise", "Page", "PlainPage", "check_button", "escape", "form", "role_attr"]

@@ -26,8 +26,9 @@ import copy
 import json
 import random
 import sys
+from collections.abc import Callable
 from dataclasses import dataclass, replace
-from typing import Any, Callable, ClassVar
+from typing import Any, ClassVar
 
 from workbook_sandbox import harness, runner
 from workbook_sandbox.restore import STDLIB_HOMES, Restore
@@ -78,7 +79,7 @@ class Build(Exercise):
     def signature(self) -> str:
         return f"{self.function}({', '.join(self.params)})"
 
-    def variant(self, seed: object) -> "Build":
+    def variant(self, seed: object) -> Build:
         """This exercise with seed ``seed``'s hidden cases (the examples stay): the page's ``variant``."""
         seed = check_seed(seed)
         return self if seed == self.seed else replace(self, seed=seed)

@@ -2,8 +2,9 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable, ClassVar, Mapping
+from typing import Any, ClassVar
 
 from ..verdict import Verdict
 from .base import ATTR, ROLE, Exercise, Page, check_button, escape, form, role_attr

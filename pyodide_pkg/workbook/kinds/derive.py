@@ -13,13 +13,14 @@ neither the exercise nor its answer kind has fails the build with the id.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, ClassVar, Mapping
+from typing import Any, ClassVar
 
-from ..answer_kinds.base import AnswerKind, AnswerSpec
-from ..contract import ATTR
 from .. import steps as stepwise
+from ..answer_kinds.base import AnswerKind, AnswerSpec
 from ..chains import Uses
+from ..contract import ATTR
 from ..number_format import fmt
 from ..variants import VariantError, Vary, check_seed
 from ..verdict import Verdict
@@ -97,7 +98,7 @@ class Derive(Exercise):
                 return f"step {name}: {problem}"
         return None
 
-    def variant(self, seed: object) -> "Derive":
+    def variant(self, seed: object) -> Derive:
         """This exercise with variant ``seed``'s numbers (0: the workbook's own)."""
         seed = check_seed(seed)
         if self.vary is None or seed == self.seed:

@@ -7,7 +7,7 @@ measured motion ``z`` expressed in the frame of pose i.
 from __future__ import annotations
 
 import math
-from typing import Iterable, Sequence
+from collections.abc import Iterable, Sequence
 
 from .linalg import Matrix, Vector, inverse, matmul, matvec, transpose
 

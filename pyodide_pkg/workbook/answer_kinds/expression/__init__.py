@@ -21,8 +21,9 @@ input was understood.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable, ClassVar, Mapping
+from typing import Any, ClassVar
 
 from ..base import AnswerKind, AnswerSpec
 from . import mark, read, show

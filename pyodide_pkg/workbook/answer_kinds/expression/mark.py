@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import math
 import random
-from typing import TYPE_CHECKING, Callable, Mapping
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING
 
 from ...contract import TAG
 from ...expr import Formula, parse_formula
@@ -67,7 +68,7 @@ def equivalent(formula: Formula, reference: Callable[..., float], domain: Mappin
     return True if defined >= max(3, points // 2) else None
 
 
-def counterexample(ans: "FormulaAnswer", formula: Formula) -> str:
+def counterexample(ans: FormulaAnswer, formula: Formula) -> str:
     """Where the formula and the key differ, in words."""
     rng = random.Random(1)
     for _ in range(40):
@@ -82,7 +83,7 @@ def counterexample(ans: "FormulaAnswer", formula: Formula) -> str:
     return "Not the same formula. Check each term against the derivation."
 
 
-def mark(ans: "FormulaAnswer", formula: Formula) -> Verdict:
+def mark(ans: FormulaAnswer, formula: Formula) -> Verdict:
     data = {"latex": formula.latex}
     same = equivalent(formula, ans.key, ans.domain)
     if same is None:
@@ -99,7 +100,7 @@ def mark(ans: "FormulaAnswer", formula: Formula) -> Verdict:
     return Verdict("incorrect", counterexample(ans, formula), data=data)
 
 
-def degenerate(ans: "FormulaAnswer") -> str | None:
+def degenerate(ans: FormulaAnswer) -> str | None:
     """The worked formula must be accepted, and no slip may agree with the key."""
     verdict = ans.check(ans.answer_text)
     if verdict.status != "correct":

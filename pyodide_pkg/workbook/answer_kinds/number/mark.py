@@ -28,7 +28,7 @@ def _half(reading: Reading) -> float | None:
     return reading.half_unit if reading.figures is not None and reading.figures >= FIGURES else None
 
 
-def agrees_with(ans: "NumberAnswer", value: float, target: float, half_unit: float | None = None) -> bool:
+def agrees_with(ans: NumberAnswer, value: float, target: float, half_unit: float | None = None) -> bool:
     """``value`` counts as ``target`` for this answer (its tolerance, exactness and turns)."""
     target = clean(target)
     if ans.periodic and ans.angle:
@@ -46,7 +46,7 @@ def close_message(reading: Reading) -> str:
             "(4 is safer), and carry more digits through the intermediate steps.")
 
 
-def mark(ans: "NumberAnswer", reading: Reading) -> Verdict:
+def mark(ans: NumberAnswer, reading: Reading) -> Verdict:
     value, half = reading.value, _half(reading)
     key = clean(ans.key)
     if agrees_with(ans, value, key, half):

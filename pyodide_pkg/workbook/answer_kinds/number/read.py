@@ -11,7 +11,7 @@ if TYPE_CHECKING:
     from . import NumberAnswer
 
 
-def read(ans: "NumberAnswer", answer: object) -> Reading | Verdict:
+def read(ans: NumberAnswer, answer: object) -> Reading | Verdict:
     """The value read in the unit asked, or an ``invalid`` verdict saying why it could not be read."""
     try:
         return read_quantity(answer, ans.expect)

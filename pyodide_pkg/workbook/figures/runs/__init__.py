@@ -27,8 +27,9 @@ from __future__ import annotations
 import copy
 import importlib
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 from workbook_sandbox import harness
 
