@@ -10,9 +10,9 @@ tests and scripts that need the texts without a whole MkDocs build.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Callable
 
 from blocks import ExerciseBlock, parse
 from workbook.variants import fill, placeholders
@@ -35,7 +35,7 @@ class ExerciseText:
     def parts(self) -> tuple[str, str, str]:
         return self.prompt, self.hint, self.solution
 
-    def filled(self, values: dict[str, str]) -> "ExerciseText":
+    def filled(self, values: dict[str, str]) -> ExerciseText:
         return ExerciseText(**{k: fill(v, values) for k, v in asdict(self).items()})
 
     def as_dict(self) -> dict[str, str]:
