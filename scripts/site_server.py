@@ -33,6 +33,7 @@ import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from typing import ClassVar
 from urllib.parse import urlsplit
 
 SUBPATH = "/workbook/"
@@ -108,12 +109,12 @@ class _Writer:
 
 
 class _Handler(http.server.SimpleHTTPRequestHandler):
-    extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",
+    extensions_map: ClassVar[dict[str, str]] = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",
                       ".js": "text/javascript", ".mjs": "text/javascript", ".json": "application/json",
                       ".whl": "application/octet-stream", ".zip": "application/zip", ".svg": "image/svg+xml",
                       ".xml": "application/xml"}
 
-    def __init__(self, *args, server_state: "SiteServer", **kwargs):
+    def __init__(self, *args, server_state: SiteServer, **kwargs):
         self.server_state = server_state
         super().__init__(*args, **kwargs)
 
@@ -250,7 +251,7 @@ class SiteServer:
         self.origin = f"http://127.0.0.1:{self.httpd.server_address[1]}"
         self.url = self.origin + SUBPATH
 
-    def __enter__(self) -> "SiteServer":
+    def __enter__(self) -> SiteServer:
         return self
 
     def __exit__(self, *exc) -> None:

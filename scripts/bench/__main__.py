@@ -177,7 +177,7 @@ def main(argv=None) -> int:
         print("site/ is not built: run `make site` (make bench does)", file=sys.stderr)
         return 2
     start_watchdog(args.budget + 1200)  # a phase begun before the budget ran out may take long
-    started = dt.datetime.now(dt.timezone.utc)
+    started = dt.datetime.now(dt.UTC)
     t0 = time.monotonic()
     machine = machine_info()
     work = Path(tempfile.mkdtemp(prefix="wb-bench-"))

@@ -65,7 +65,7 @@ class Browsers:
 
         def watch(request):
             url = request.url
-            if not (url.startswith(origin) or url.startswith(("data:", "blob:", "about:", "chrome"))):
+            if not url.startswith((origin, "data:", "blob:", "about:", "chrome")):
                 self.external.append(url)
 
         ctx.on("request", watch)
