@@ -52,7 +52,7 @@ def close(a, b, tol=1e-9) -> bool:
 
 @pytest.mark.parametrize("exercise_id", HUNTS)
 def test_each_hunt_is_a_short_debug_program_with_one_marked_line(exercise_id):
-    ex, buggy, fixed = programs(exercise_id)
+    ex, _buggy, fixed = programs(exercise_id)
     assert ex.kind == "debug"
     assert 6 <= len(ex.lines) <= 14
     assert all(line.strip() for line in ex.lines), "a blank line would need a note of its own"
@@ -126,14 +126,14 @@ def test_milliseconds_make_the_robot_drive_a_thousand_times_too_far():
 
 
 def test_the_sign_error_calls_the_sweeping_arm_still():
-    ex, buggy, fixed = programs("7.9")
+    _ex, buggy, fixed = programs("7.9")
     straight = (1.0, 1.0, 0.0, 0.0, 1.0, 0.0)
     assert buggy(*straight)[1] == 0.0
     assert math.isclose(fixed(*straight)[1], 2.0)  # (L1 + L2)·ω1
 
 
 def test_windup_overshoots_more_than_the_fixed_controller():
-    ex, buggy, fixed = programs("8.9")
+    _ex, buggy, fixed = programs("8.9")
     gains, limit = symptoms.WINDUP_GAINS, symptoms.WINDUP_LIMIT
     peaks = {name: max(simulate_saturated(step, *gains, limit)[1]) for name, step in (("bug", buggy), ("fixed", fixed))}
     assert peaks["bug"] - 1 > 0.3 and peaks["fixed"] - 1 < 0.05

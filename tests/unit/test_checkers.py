@@ -18,7 +18,7 @@ def grade(ex_id, answer):
 
 
 def test_policy_tolerance():
-    ex = bank.get("0.4")  # key 0 -> absolute tolerance 1e-3
+    bank.get("0.4")  # key 0 -> absolute tolerance 1e-3
     assert grade("0.4", "0.0009").status == "correct"
     assert grade("0.4", "0.0011").status == "incorrect"
     big = Derive(id="x.1", title="", answer=number(key=7500.0))
