@@ -173,7 +173,7 @@ def nav_loop(fn: Callable[..., Any], start: list, P: list, landmark: list, waypo
     """
     rng = random.Random(seed)
     true = [float(a) for a in start]
-    x, u, goal, path = list(true), [0.0, 0.0], 0, []
+    x, u, goal, path = list(true), [0.0, 0.0], 0, list[list[float]]()
     for k in range(int(steps)):
         v, omega = u
         turn = omega + TURN_BIAS if v else omega

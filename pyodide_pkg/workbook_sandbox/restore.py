@@ -99,8 +99,8 @@ class Restore:
         for name, mod in self.table.items():
             if sys.modules.get(name, _MISSING) is not mod:
                 sys.modules[name] = mod
-        for space, saved in self.spaces + self.fields:
-            _put_back(space, saved)
+        for names, kept in self.spaces + self.fields:
+            _put_back(names, kept)
         for cls, saved in self.classes:
             for name in set(vars(cls)) - set(saved):
                 _quietly(delattr, cls, name)

@@ -180,9 +180,10 @@ class Run:
             try:
                 fn = self.load()
                 for args in self.cases if fn is not None else ():
-                    cases.append(self.case(fn, args))
+                    cases.append(self.case(fn, args))  # type: ignore[arg-type]  # (fn is not None: the loop runs only then)
                 if fn is not None and self.figure_cases:
-                    self.report["figure"] = figure = []
+                    figure: list[Any] = []
+                    self.report["figure"] = figure
                     cases = figure  # a stop from here on is the figure's runs' to report
                     for args in self.figure_cases:
                         figure.append(self.case(fn, args, self.figure_drive))

@@ -57,6 +57,7 @@ def _turn_and_shift(p):
     wx, wy = apply(transform2d(tx, ty, math.pi / 2), d, 0)
     turned = apply(transform2d(0, 0, math.pi / 2), d, 0)
     shifted = apply(transform2d(tx, ty, 0), d, 0)
+    left_out: tuple[Slip, ...]
     if not apart(turned[1], shifted[1]):
         left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives y = {fmt(turned[1])}, "
                                     f"and shifting it by ({fmt(tx)}, {fmt(ty)}) without turning also gives "

@@ -20,8 +20,8 @@ from . import grid
 from .checks import apart, slips_apart
 from .heading_column import heading_column_formula
 
-_P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
-_Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
+_P: list[list[float]] = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
+_Q: list[list[float]] = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
 _EAST, _NORTH = 0.0, math.pi / 2
 
 

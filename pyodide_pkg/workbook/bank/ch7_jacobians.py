@@ -164,7 +164,7 @@ def _link2_direction(deg: float) -> str:
     ('at 210° from the x-axis, counter-clockwise', 'straight up', 'at 55° from the x-axis, counter-clockwise')
     """
     d = deg % 360
-    words = {90: "straight up", 270: "straight down", 0: "straight along the positive x-axis",
+    words: dict[float, str] = {90: "straight up", 270: "straight down", 0: "straight along the positive x-axis",
              180: "straight along the negative x-axis"}
     return words.get(d, f"at {fmt(d)}° from the x-axis, counter-clockwise")
 

@@ -279,8 +279,9 @@ class Canvas:
                         best = (cost, box)
                     if cost == 0:
                         break
-                if best[0] == 0:
+                if best is not None and best[0] == 0:
                     break
+            assert best is not None  # (LABEL_GAPS and LABEL_TURNS are not empty)
             box = best[1]
             # the baseline sits DESCENT_EM above the box's bottom
             self._text_at((box[0] + box[2]) / 2, box[3] - DESCENT_EM * size, content, cls, "middle")

@@ -87,7 +87,7 @@ class Build(Exercise):
     def hidden_cases(self) -> list[tuple]:
         """The edge cases, then random ones: the same for the same seed (the seed 0 ones are the exercise's own)."""
         rng = random.Random(f"hidden:{self.id}" + (f":{self.seed}" if self.seed else ""))
-        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]
+        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]  # type: ignore[misc]  # (all 12 Builds give random_args)
 
     def arguments(self) -> list[list]:
         """Every case's arguments, examples first, as the sandbox receives them (through JSON)."""
@@ -95,7 +95,7 @@ class Build(Exercise):
 
     def job(self) -> str:
         """What the sandbox needs to run the learner's code (JSON): the function's name, the driver, the cases."""
-        job = {"function": self.function, "harness": self.harness, "cases": self.arguments()}
+        job: dict[str, Any] = {"function": self.function, "harness": self.harness, "cases": self.arguments()}
         figure = runs.trace_job(self)
         if figure is not None:
             job["figure"] = figure

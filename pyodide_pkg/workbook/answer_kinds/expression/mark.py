@@ -10,7 +10,7 @@ from __future__ import annotations
 import math
 import random
 from collections.abc import Callable, Mapping
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, cast
 
 from ...contract import TAG
 from ...expr import Formula, parse_formula
@@ -74,7 +74,7 @@ def counterexample(ans: FormulaAnswer, formula: Formula) -> str:
     for _ in range(40):
         env = {name: rng.uniform(lo, hi) for name, (lo, hi) in ans.domain.items()}
         try:
-            want, got = float(ans.key(**env)), formula.evaluate(env)
+            want, got = float(cast("Callable[..., float]", ans.key)(**env)), formula.evaluate(env)
         except (ValueError, ArithmeticError, TypeError):
             continue
         if math.isfinite(want) and math.isfinite(got) and not agrees(got, clean(want)):
@@ -85,7 +85,7 @@ def counterexample(ans: FormulaAnswer, formula: Formula) -> str:
 
 def mark(ans: FormulaAnswer, formula: Formula) -> Verdict:
     data = {"latex": formula.latex}
-    same = equivalent(formula, ans.key, ans.domain)
+    same = equivalent(formula, cast("Callable[..., float]", ans.key), ans.domain)
     if same is None:
         return Verdict("invalid", "Your formula cannot be evaluated at most points of the question's range "
                        "(a square root or logarithm of a negative number?).", data=data)
@@ -95,7 +95,7 @@ def mark(ans: FormulaAnswer, formula: Formula) -> Verdict:
         if equivalent(formula, slip.value, ans.domain):
             return Verdict("incorrect", slip.message, tag=TAG.slip, data=data)
     in_degrees = formula.with_degree_arguments()
-    if in_degrees is not None and equivalent(in_degrees, ans.key, ans.domain):
+    if in_degrees is not None and equivalent(in_degrees, cast("Callable[..., float]", ans.key), ans.domain):
         return Verdict("incorrect", DEGREES, tag=TAG.degrees, data=data)
     return Verdict("incorrect", counterexample(ans, formula), data=data)
 
