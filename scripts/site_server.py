@@ -33,7 +33,6 @@ import threading
 import time
 from dataclasses import dataclass
 from pathlib import Path
-from typing import ClassVar
 from urllib.parse import urlsplit
 
 SUBPATH = "/workbook/"
@@ -109,7 +108,7 @@ class _Writer:
 
 
 class _Handler(http.server.SimpleHTTPRequestHandler):
-    extensions_map: ClassVar[dict[str, str]] = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",
+    extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",  # noqa: RUF012 (typeshed: an instance attribute)
                       ".js": "text/javascript", ".mjs": "text/javascript", ".json": "application/json",
                       ".whl": "application/octet-stream", ".zip": "application/zip", ".svg": "image/svg+xml",
                       ".xml": "application/xml"}
@@ -121,7 +120,7 @@ class _Handler(http.server.SimpleHTTPRequestHandler):
     # -- bookkeeping ----------------------------------------------------------
     def setup(self):
         super().setup()
-        self.wfile = _Writer(self.wfile, self)
+        self.wfile = _Writer(self.wfile, self)  # type: ignore[assignment]  # (writes through, counting)
         self._entry = None
 
     def count(self, n: int) -> None:

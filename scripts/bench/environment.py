@@ -78,7 +78,7 @@ def parser_worst_case(repeats: int = 20) -> dict:
                 pass
             times.append((time.perf_counter() - t) * 1000)
         worst[name] = round(max(times), 3)
-    slowest = max(worst, key=worst.get)
+    slowest = max(worst, key=lambda name: worst[name])
     return {"max_ms": worst[slowest], "slowest_input": slowest, "per_input_max_ms": worst}
 
 
@@ -91,11 +91,12 @@ def run_figure_times(repeats: int = 50) -> dict:
     from workbook import bank
     from workbook.build_judge import read_report
     from workbook.figures import runs
+    from workbook.kinds.build import Build
     from workbook_sandbox import runner
 
     per = {}
     for ex in bank.all_exercises():
-        if ex.kind != "build" or not getattr(ex, "run_figure", ""):
+        if not isinstance(ex, Build) or not getattr(ex, "run_figure", ""):
             continue
         arguments, trace = ex.arguments(), runs.trace_job(ex)
         report = read_report(runner.run(json.loads(ex.job()), ex.starter), len(arguments),
@@ -107,5 +108,5 @@ def run_figure_times(repeats: int = 50) -> dict:
             runs.draw_run(ex, report, cases, arguments)
             times.append((time.perf_counter() - t) * 1000)
         per[ex.id] = round(statistics.median(times), 3)
-    slowest = max(per, key=per.get) if per else None
-    return {"max_p50_ms": per.get(slowest), "slowest": slowest, "per_exercise_p50_ms": per, "repeats": repeats}
+    slowest = max(per, key=lambda name: per[name]) if per else None
+    return {"max_p50_ms": per[slowest] if slowest else None, "slowest": slowest, "per_exercise_p50_ms": per, "repeats": repeats}
