@@ -11,7 +11,7 @@ from ..kinds.debug import Debug
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import bmatrix, fmt, pi_frac, relation
-from ..reference.ekf import motion_jacobian, motion_model
+from ..reference.ekf import ekf_predict, motion_jacobian, motion_model  # noqa: F401 (ekf_predict: the doctests)
 from ..reference.linalg import add, matmul, transpose
 from ..steps import Step
 from ..tolerance import clean

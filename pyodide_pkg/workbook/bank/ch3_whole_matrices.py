@@ -9,7 +9,7 @@ from ..answer_kinds.matrix import matrix
 from ..chains import Uses
 from ..kinds.derive import Derive
 from ..number_format import bmatrix, fmt
-from ..reference.ekf import motion_jacobian
+from ..reference.ekf import ekf_predict, motion_jacobian  # noqa: F401 (ekf_predict: the doctests)
 from ..reference.linalg import add, identity, matmul, sub, transpose
 from ..variants import Param, Vary
 from . import grid
