@@ -108,7 +108,8 @@ class _Writer:
 
 
 class _Handler(http.server.SimpleHTTPRequestHandler):
-    extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",  # noqa: RUF012 (typeshed: an instance attribute)
+    # RUF012 would have it a ClassVar, but typeshed declares extensions_map an instance attribute.
+    extensions_map = {**http.server.SimpleHTTPRequestHandler.extensions_map, ".wasm": "application/wasm",  # noqa: RUF012
                       ".js": "text/javascript", ".mjs": "text/javascript", ".json": "application/json",
                       ".whl": "application/octet-stream", ".zip": "application/zip", ".svg": "image/svg+xml",
                       ".xml": "application/xml"}

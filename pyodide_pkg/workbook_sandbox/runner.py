@@ -180,7 +180,7 @@ class Run:
             try:
                 fn = self.load()
                 for args in self.cases if fn is not None else ():
-                    cases.append(self.case(fn, args))  # type: ignore[arg-type]  # (fn is not None: the loop runs only then)
+                    cases.append(self.case(fn, args))  # type: ignore[arg-type]  # (runs only when fn is not None)
                 if fn is not None and self.figure_cases:
                     figure: list[Any] = []
                     self.report["figure"] = figure

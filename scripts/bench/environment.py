@@ -16,12 +16,14 @@ from . import ROOT
 def machine_info() -> dict:
     cpu = ""
     try:
-        cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines() if line.startswith("model name")), "")
+        cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
+                    if line.startswith("model name")), "")
     except OSError:
         cpu = platform.processor()
     mem = None
     try:
-        mem = int(next(line.split()[1] for line in Path("/proc/meminfo").read_text().splitlines() if line.startswith("MemTotal"))) // 1024
+        mem = int(next(line.split()[1] for line in Path("/proc/meminfo").read_text().splitlines()
+                       if line.startswith("MemTotal"))) // 1024
     except (OSError, StopIteration):
         pass
     return {"nproc": os.cpu_count(), "cpu_model": cpu, "mem_mb": mem, "platform": platform.platform(),

@@ -28,7 +28,8 @@ _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
 # Exercise 5.6: pose 1 sits at (2, 1) facing north; the prose turns the motion with R(90°).
 _XI = (2.0, 1.0, math.pi / 2)
-_WORDS = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve", "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
+_WORDS = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+          "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
 _TENS = ["twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
 
 

@@ -87,7 +87,8 @@ class Build(Exercise):
     def hidden_cases(self) -> list[tuple]:
         """The edge cases, then random ones: the same for the same seed (the seed 0 ones are the exercise's own)."""
         rng = random.Random(f"hidden:{self.id}" + (f":{self.seed}" if self.seed else ""))
-        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]  # type: ignore[misc]  # (all 12 Builds give random_args)
+        # random_args may be None in the dataclass; every Build in the bank (all 12) gives it.
+        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]  # type: ignore[misc]
 
     def arguments(self) -> list[list]:
         """Every case's arguments, examples first, as the sandbox receives them (through JSON)."""
