@@ -5,7 +5,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "golden"))
 
-import transcript as golden
+import transcript as golden  # noqa: E402
 
 
 def test_the_grader_says_what_the_golden_transcript_says():
