@@ -1,6 +1,7 @@
 # Robotics Math Workbook — every step installs what it needs and is idempotent.
 #   make serve    build the site and serve it at http://127.0.0.1:8000
-#   make test     run the whole test suite (unit + browser)
+#   make test     run the whole test suite (lint, then unit + browser)
+#   make lint     ruff and mypy over the Python, ESLint over the page's JavaScript (any finding fails)
 #   make site     build the static site into site/
 #   make browser  find a Chromium for the tests, or install Debian's (says so first)
 #   make bench    measure start-up and grading speed (writes bench-results/)
@@ -35,7 +36,7 @@ OVERRIDES := $(shell find docs/overrides -type f)
 PAGES := $(shell find docs -type f -not -path 'docs/assets/vendor/*' -not -path 'docs/assets/dist/*' \
   -not -path 'docs/assets/js/*' -not -path 'docs/hooks/*' -not -path 'docs/overrides/*' -not -name '*.pyc')
 
-.PHONY: serve site test test-unit test-browser bench deps browser clean dev lock python312 scorm
+.PHONY: serve site lint test test-unit test-browser bench deps browser clean dev lock python312 scorm
 
 # ---- Python 3.12 -------------------------------------------------------------------
 # Where none is found, the first install says so and provides one with uv (`make python312`).
@@ -154,13 +155,20 @@ TEST_JOBS ?= 2
 UNIT := $(BIN)/python -m pytest -n $(TEST_JOBS) tests/unit
 BROWSER := $(BIN)/python -m pytest -n $(TEST_JOBS) --dist loadfile tests/browser
 
+# Linter and type checker (ruff.toml, mypy.ini, eslint.config.mjs): fast, and first in `make test`.
+LINT_PY := pyodide_pkg docs/hooks scripts tests
+lint: $(BIN)/.test node_modules/.installed
+	$(BIN)/ruff check --quiet $(LINT_PY)
+	$(BIN)/mypy
+	node_modules/.bin/eslint --max-warnings 0 docs/assets/js
+
 test-unit: $(BIN)/.test node_modules/.installed
 	$(UNIT)
 
 test-browser: site browser
 	$(BROWSER)
 
-test: site browser
+test: lint site browser
 	$(UNIT)
 	$(BROWSER)
 

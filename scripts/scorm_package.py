@@ -46,7 +46,7 @@ def folder_link(href: str) -> str:
         return href
     cut = min([i for i in (href.find("?"), href.find("#")) if i >= 0], default=len(href))
     path, rest = href[:cut], href[cut:]
-    if not (path.endswith("/") or path in (".", "..") or path.endswith(("/.", "/.."))):
+    if not (path in (".", "..") or path.endswith(("/", "/.", "/.."))):
         return href
     return f"{path.rstrip('/') or '.'}/index.html{rest}"
 

@@ -59,7 +59,7 @@ class FigureBlock:
 
 def _fence_closes(line: str, fence: str) -> bool:
     m = FENCE.match(line)
-    return bool(m) and m["fence"][0] == fence[0] and len(m["fence"]) >= len(fence) and not line[m.end():].strip()
+    return m is not None and m["fence"][0] == fence[0] and len(m["fence"]) >= len(fence) and not line[m.end():].strip()
 
 
 def parse(text: str, where: str = "page") -> list[ExerciseBlock | FigureBlock]:

@@ -10,12 +10,13 @@ tests and scripts that need the texts without a whole MkDocs build.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Callable
 
 from blocks import ExerciseBlock, parse
 from workbook import bank
+from workbook.kinds.build import Build
 from workbook.variants import fill, placeholders
 
 PARTS = ("prompt", "hint", "solution")
@@ -36,7 +37,7 @@ class ExerciseText:
     def parts(self) -> tuple[str, str, str]:
         return self.prompt, self.hint, self.solution
 
-    def filled(self, values: dict[str, str]) -> "ExerciseText":
+    def filled(self, values: dict[str, str]) -> ExerciseText:
         return ExerciseText(**{k: fill(v, values) for k, v in asdict(self).items()})
 
     def as_dict(self) -> dict[str, str]:
@@ -86,5 +87,5 @@ def load_all(root: Path) -> dict[str, ExerciseText]:
         for block in parse(path.read_text(encoding="utf-8"), str(path)):
             if isinstance(block, ExerciseBlock):
                 ex = bank.get(block.id)
-                found[block.id] = text_of(block, block.title, convert, code=ex.solution if ex.kind == "build" else None)
+                found[block.id] = text_of(block, block.title, convert, code=ex.solution if isinstance(ex, Build) else None)
     return found

@@ -32,6 +32,7 @@ from render_exercise import PageTools, chapter_list_html, dom_id, exercise_html,
 from render_figure import figure_html
 from workbook import bank, figures, registry
 from workbook.contract import ANSWER_KINDS, DATA, KINDS, REVIEW_KINDS
+from workbook.kinds.build import Build
 from workbook.variants import VariantError, fill
 
 SLOT = '<div data-wb-slot="{id}"></div>'
@@ -62,6 +63,13 @@ class BuildState:
 
 
 _state: BuildState | None = None
+
+
+def _built() -> BuildState:
+    """The build's state, which on_config makes before MkDocs calls any page hook."""
+    if _state is None:
+        raise PluginError("exercises hook: a page hook ran before on_config")
+    return _state
 
 
 def _check_kinds() -> None:
@@ -97,7 +105,7 @@ def _exercise(state: BuildState, block: ExerciseBlock, path: str) -> tuple[str, 
         raise PluginError(f"{path}: exercise {block.id} is placed twice (also in {state.placed[block.id]})")
     state.placed[block.id] = path
     try:
-        text = text_of(block, block.title, state.convert, code=ex.solution if ex.kind == "build" else None)
+        text = text_of(block, block.title, state.convert, code=ex.solution if isinstance(ex, Build) else None)
     except ValueError as err:
         raise PluginError(f"{path}: {err}") from None
     values = getattr(ex, "values", {})
@@ -127,7 +135,7 @@ def _figure(block: FigureBlock, path: str, seen: set[str]) -> tuple[str, str]:
 
 
 def on_page_markdown(text, page, config, files, **kwargs):
-    state, path = _state, page.file.src_uri
+    state, path = _built(), page.file.src_uri
     try:
         found = parse(text, path)
     except BlockError as err:
@@ -150,11 +158,11 @@ def on_page_markdown(text, page, config, files, **kwargs):
 
 
 def on_page_content(html, page, config, files, **kwargs):
-    for slot, widget in _state.slots.get(page.file.src_uri, {}).items():
+    for slot, widget in _built().slots.get(page.file.src_uri, {}).items():
         if slot not in html:
             raise PluginError(f"{page.file.src_uri}: the slot {slot} was lost in rendering")
         html = html.replace(slot, widget)
-    ids = _state.ids.get(page.file.src_uri)
+    ids = _built().ids.get(page.file.src_uri)
     for i in ids or []:
         # The exercise is a region named by its title: the heading's text without its permalink's "¶".
         heading = re.compile(rf'(<h\d id="{dom_id(i)}-title">)(.*?)(<a class="headerlink"|</h\d>)', re.S)
@@ -163,34 +171,34 @@ def on_page_content(html, page, config, files, **kwargs):
             raise PluginError(f"{page.file.src_uri}: exercise {i} has no heading to name it")
     if ids:
         # The page's exercises listed under its title: the target of the "Skip to exercises" link (a11y.py).
-        index = exercise_index_html([(i, _state.titles[i]) for i in ids])
+        index = exercise_index_html([(i, _built().titles[i]) for i in ids])
         html = html.replace("</h1>", "</h1>" + index, 1) if "</h1>" in html else index + html
     return html
 
 
 def on_nav(nav, config, files, **kwargs):
-    _state.nav[:] = [page.file.src_uri for page in nav.pages]
+    _built().nav[:] = [page.file.src_uri for page in nav.pages]
     return nav
 
 
 def on_page_context(context, page, config, nav, **kwargs):
-    _state.pages[page.file.src_uri] = (page.url, page.title or "")
+    _built().pages[page.file.src_uri] = (page.url, page.title or "")
     if page.content and CHAPTER_LIST in page.content:
         # Every page has been read by now: the chapters' own titles (their H1s) are known.
-        chapters = [(get_relative_url(p.url, page.url), p.title) for p in nav.pages if _state.ids.get(p.file.src_uri)]
+        chapters = [(get_relative_url(p.url, page.url), p.title) for p in nav.pages if _built().ids.get(p.file.src_uri)]
         page.content = page.content.replace(CHAPTER_LIST, chapter_list_html(chapters))
     return context
 
 
 def on_post_build(config, **kwargs):
-    missing = [ex.id for ex in bank.all_exercises() if ex.id not in _state.placed]
+    missing = [ex.id for ex in bank.all_exercises() if ex.id not in _built().placed]
     if missing:
         raise PluginError(f"exercises with no page: {', '.join(missing)} (place each with '::: exercise ID')")
-    order = {src: i for i, src in enumerate(_state.nav)}
+    order = {src: i for i, src in enumerate(_built().nav)}
     chapters = [
-        {"url": _state.pages[src][0], "title": _state.pages[src][1], "ids": ids}
-        for src, ids in sorted(_state.ids.items(), key=lambda item: (order.get(item[0], len(order)), item[0]))
-        if ids and src in _state.pages
+        {"url": _built().pages[src][0], "title": _built().pages[src][1], "ids": ids}
+        for src, ids in sorted(_built().ids.items(), key=lambda item: (order.get(item[0], len(order)), item[0]))
+        if ids and src in _built().pages
     ]
     out = Path(config.site_dir) / MANIFEST
     out.parent.mkdir(parents=True, exist_ok=True)

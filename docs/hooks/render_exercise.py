@@ -11,13 +11,13 @@ from __future__ import annotations
 
 import base64
 import json
+from collections.abc import Callable
 from dataclasses import dataclass
 from html import escape
-from typing import Callable
 
+from render_steps import steps_html
 from workbook.contract import ATTR, ROLE, STATE, role_attr
 from workbook.kinds.base import Exercise
-from render_steps import steps_html
 
 KIND_LABEL = {"derive": "Derive", "trace": "Trace", "build": "Build", "debug": "Debug", "design": "Design"}
 

@@ -123,7 +123,7 @@ def read_report(raw: Any, count: int, figure_count: int = 0) -> Report:
         raise GradingError("bad-request", UNREADABLE)
     load = raw.get("load")
     cases = [_case(case) for case in raw.get("cases", [])[:count]]
-    figure = raw.get("figure") if isinstance(raw.get("figure"), list) else []
+    figure = drawn if isinstance(drawn := raw.get("figure"), list) else []
     stdout = _text(raw.get("stdout"), STDOUT_CAP)
     if raw.get("cut") is True or len(raw.get("stdout") or "") > STDOUT_CAP:
         stdout += "\n… (output cut)"

@@ -31,8 +31,9 @@ is wrong, the grader asks whether it follows from what the learner wrote before:
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping, Protocol
+from typing import Any, Protocol
 
 from .answer_kinds.base import AnswerKind
 from .chains import Uses, value_of
@@ -47,12 +48,20 @@ from .verdict import Verdict
 class Worked(Protocol):
     """What error carried forward needs of a Derive exercise (a variant of it)."""
 
-    id: str
-    seed: int
-    uses: tuple[Uses, ...]
-    steps: tuple[Step, ...]
-    step_answers: Mapping[str, AnswerKind]
-    params: Mapping[str, Any]
+    @property
+    def id(self) -> str: ...
+
+    @property
+    def uses(self) -> tuple[Uses, ...]: ...
+
+    @property
+    def steps(self) -> tuple[Step, ...]: ...
+
+    @property
+    def step_answers(self) -> Mapping[str, AnswerKind]: ...
+
+    @property
+    def params(self) -> Mapping[str, Any]: ...
 
     @property
     def answer(self) -> AnswerKind: ...
@@ -92,7 +101,7 @@ class Value:
     place: Place
     right: Any = None
 
-    def corrected(self, values: list["Value"]) -> list["Value"]:
+    def corrected(self, values: list[Value]) -> list[Value]:
         """``values`` with this one made right: a step's key in its place, an earlier exercise's
         value left out (the generator then uses the printed one)."""
         if self.home.exercise:

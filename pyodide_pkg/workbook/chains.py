@@ -25,8 +25,9 @@ the page links back to 9.2 with that text.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
-from typing import Any, Callable, Mapping
+from typing import Any
 
 from .contract import LIMIT
 

@@ -19,7 +19,7 @@ from __future__ import annotations
 import importlib.machinery
 import sys
 import zipfile
-from typing import Callable
+from collections.abc import Callable
 
 INDEX = "stdlib-rest.txt"  # in the core zip: one module name per line
 REST = "/lib/python_stdlib.rest.zip"

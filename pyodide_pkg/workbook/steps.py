@@ -46,8 +46,9 @@ checked with steps says in ``data.steps.first`` which step to look at first.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
-from typing import Any, Mapping
+from typing import Any
 
 from .answer_kinds.base import AnswerKind, AnswerSpec
 from .contract import LIMIT

@@ -23,9 +23,10 @@ from __future__ import annotations
 import math
 import random
 import re
+from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
 from html import escape
-from typing import Any, Callable, Iterator, Mapping
+from typing import Any
 
 from .contract import LIMIT
 
@@ -79,7 +80,7 @@ class Param:
     avoid: tuple[float, ...] = ()
 
     def grid(self) -> list[float]:
-        n = int(round((self.hi - self.lo) / self.step))
+        n = round((self.hi - self.lo) / self.step)
         values = [_trim(self.lo + k * self.step) for k in range(n + 1)]
         return [v for v in values if not any(math.isclose(v, a, abs_tol=1e-9) for a in self.avoid)]
 
@@ -118,7 +119,7 @@ class Vary:
     variant 0's parameters are never used for ``n > 0``.
     """
 
-    def __init__(self, make: Callable[[dict[str, Any]], dict[str, Any]], *params: Param | Choice,
+    def __init__(self, make: Callable[..., dict[str, Any]], *params: Param | Choice,
                  valid: Callable[[dict[str, Any]], bool] | None = None) -> None:
         self.make, self.params = make, tuple(params)
         self.valid = valid or (lambda p: True)

@@ -36,7 +36,8 @@ from __future__ import annotations
 
 import math
 import random
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 # The plant of the PID loop: a mass on a spring and damper, m·ÿ + c·ẏ + k·y = u
 # (the plant of chapter 8's figure), started at rest, asked to reach TARGET.
@@ -172,7 +173,7 @@ def nav_loop(fn: Callable[..., Any], start: list, P: list, landmark: list, waypo
     """
     rng = random.Random(seed)
     true = [float(a) for a in start]
-    x, u, goal, path = list(true), [0.0, 0.0], 0, []
+    x, u, goal, path = list(true), [0.0, 0.0], 0, list[list[float]]()
     for k in range(int(steps)):
         v, omega = u
         turn = omega + TURN_BIAS if v else omega

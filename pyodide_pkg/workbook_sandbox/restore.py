@@ -43,8 +43,9 @@ import builtins
 import random
 import sys
 import types
+from collections.abc import Iterable
 from operator import is_
-from typing import Any, Iterable
+from typing import Any, cast
 
 _FIRST = (vars(builtins), globals())  # what the restore itself looks names up in
 # Packages whose classes, containers and functions are watched besides every module's names.
@@ -79,7 +80,7 @@ class Restore:
         self.homes = tuple(homes)
         self.objects = list(objects)
 
-    def __enter__(self) -> "Restore":
+    def __enter__(self) -> Restore:
         self.first = [(space, dict(space)) for space in _FIRST]
         self.table = dict(sys.modules)
         self.spaces = [(mod.__dict__, _snapshot(mod.__dict__)) for mod in self.table.values()
@@ -97,7 +98,8 @@ class Restore:
         self.functions = [(fn, _function_state(fn)) for fn in functions.values()]
         self.recursion = sys.getrecursionlimit()
         self.hooks = sys.gettrace(), sys.getprofile()
-        self.imports = [(lst, list(lst)) for lst in (sys.meta_path, sys.path, sys.path_hooks)]
+        self.imports: list[tuple[list[Any], list[Any]]] = [
+            (lst, list(lst)) for lst in (cast(list, sys.meta_path), cast(list, sys.path), cast(list, sys.path_hooks))]
         self.numpy = _numpy_state()
         return self
 
@@ -113,11 +115,11 @@ class Restore:
         for name in [name for name in list(sys.modules) if name not in self.table]:
             if not _imported_as(sys.modules.get(name), name):
                 sys.modules.pop(name, None)
-        for lst, saved in self.imports:
-            if not _same_items(lst, saved):
-                lst[:] = saved
-        for space, saved in self.spaces + self.fields:
-            _put_back(space, saved)
+        for lst, items in self.imports:
+            if not _same_items(lst, items):
+                lst[:] = items
+        for where, kept in self.spaces + self.fields:
+            _put_back(where, kept)
         for cls, saved in self.classes:
             for name in set(vars(cls)) - set(saved):
                 _quietly(delattr, cls, name)

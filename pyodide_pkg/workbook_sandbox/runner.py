@@ -45,7 +45,8 @@ import copy
 import io
 import json
 import traceback
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
 from . import harness
 from .restore import STDLIB_HOMES, Restore
@@ -179,9 +180,10 @@ class Run:
             try:
                 fn = self.load()
                 for args in self.cases if fn is not None else ():
-                    cases.append(self.case(fn, args))
+                    cases.append(self.case(fn, args))  # type: ignore[arg-type]  # (runs only when fn is not None)
                 if fn is not None and self.figure_cases:
-                    self.report["figure"] = figure = []
+                    figure: list[Any] = []
+                    self.report["figure"] = figure
                     cases = figure  # a stop from here on is the figure's runs' to report
                     for args in self.figure_cases:
                         figure.append(self.case(fn, args, self.figure_drive))

@@ -94,7 +94,7 @@ def encode(value: Any, depth: int = 0) -> dict[str, Any]:
     """What a learner's function returned, as plain JSON (see the module's docstring)."""
     kind = clip(type(value).__name__, 40)
     if isinstance(value, (bool, int)):
-        number = int(value) if value.bit_length() <= BIG_INT_BITS else None
+        number: float | None = int(value) if value.bit_length() <= BIG_INT_BITS else None
         return {"type": kind, "number": number, "text": show(value)}
     if isinstance(value, float):
         return {"type": kind, "number": float(value), "text": show(value)}

@@ -65,7 +65,7 @@ def parse_profiles(ap, text: str, runs: int) -> dict[str, int]:
             ap.error(f"unknown profile {name!r}: choose from {', '.join(PROFILES)}")
         if count and not (count.isdigit() and int(count) >= 1):
             ap.error(f"profile {item!r}: the run count must be a whole number >= 1")
-        default = min(runs, PROFILES[name].runs) if PROFILES[name].runs else runs
+        default = min(runs, cap) if (cap := PROFILES[name].runs) else runs
         out[name] = int(count) if count else default
     if not out:
         ap.error("--profiles: name at least one profile")
@@ -177,7 +177,7 @@ def main(argv=None) -> int:
         print("site/ is not built: run `make site` (make bench does)", file=sys.stderr)
         return 2
     start_watchdog(args.budget + 1200)  # a phase begun before the budget ran out may take long
-    started = dt.datetime.now(dt.timezone.utc)
+    started = dt.datetime.now(dt.UTC)
     t0 = time.monotonic()
     machine = machine_info()
     work = Path(tempfile.mkdtemp(prefix="wb-bench-"))

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import shutil
 import tempfile
+from typing import Any
 
 from find_browser import find_browser
 from workbook.contract import ATTR
@@ -65,7 +66,7 @@ class Browsers:
 
         def watch(request):
             url = request.url
-            if not (url.startswith(origin) or url.startswith(("data:", "blob:", "about:", "chrome"))):
+            if not url.startswith((origin, "data:", "blob:", "about:", "chrome")):
                 self.external.append(url)
 
         ctx.on("request", watch)
@@ -94,7 +95,7 @@ class Browsers:
             raise BenchError(f"the runtime failed to start at {page.url}")
 
     def visit(self, ctx, url: str, baseline: bool = False, timeout_ms: int = READY_TIMEOUT_MS,
-              settle: bool = True) -> tuple[object, dict]:
+              settle: bool = True) -> tuple[Any, dict]:
         """Open `url` in a new page of `ctx`; wait until graded-ready (or the baseline's
         loaded); return the page and a record of time, bytes and long tasks.
         With `settle`, wait a little for late fetches and long tasks first."""

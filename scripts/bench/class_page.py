@@ -15,6 +15,7 @@ import time
 
 from workbook import bank
 from workbook.assignment import assigned_variant
+from workbook.kinds.derive import Derive
 
 CODE = "BENCH"
 LEARNERS = 200
@@ -29,7 +30,9 @@ def hand_in(student: str, ids: list[str], now: int) -> bytes:
     records = {}
     for ex_id in ids:
         v = assigned_variant(CODE, student, ex_id)
-        answer = bank.variant(ex_id, v).answer
+        ex = bank.variant(ex_id, v)
+        assert isinstance(ex, Derive), ex_id
+        answer = ex.answer
         wrong = answer.slips[0].value if answer.slips else None
         first = answer.typed(wrong) if wrong is not None else "123456"
         attempts = [{"answer": first, "status": "incorrect", "at": now},

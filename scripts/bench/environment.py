@@ -16,12 +16,14 @@ from . import ROOT
 def machine_info() -> dict:
     cpu = ""
     try:
-        cpu = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")), "")
+        cpu = next((line.split(":", 1)[1].strip() for line in Path("/proc/cpuinfo").read_text().splitlines()
+                    if line.startswith("model name")), "")
     except OSError:
         cpu = platform.processor()
     mem = None
     try:
-        mem = int(next(line.split()[1] for line in open("/proc/meminfo") if line.startswith("MemTotal"))) // 1024
+        mem = int(next(line.split()[1] for line in Path("/proc/meminfo").read_text().splitlines()
+                       if line.startswith("MemTotal"))) // 1024
     except (OSError, StopIteration):
         pass
     return {"nproc": os.cpu_count(), "cpu_model": cpu, "mem_mb": mem, "platform": platform.platform(),
@@ -78,7 +80,7 @@ def parser_worst_case(repeats: int = 20) -> dict:
                 pass
             times.append((time.perf_counter() - t) * 1000)
         worst[name] = round(max(times), 3)
-    slowest = max(worst, key=worst.get)
+    slowest = max(worst, key=lambda name: worst[name])
     return {"max_ms": worst[slowest], "slowest_input": slowest, "per_input_max_ms": worst}
 
 
@@ -91,11 +93,12 @@ def run_figure_times(repeats: int = 50) -> dict:
     from workbook import bank
     from workbook.build_judge import read_report
     from workbook.figures import runs
+    from workbook.kinds.build import Build
     from workbook_sandbox import runner
 
     per = {}
     for ex in bank.all_exercises():
-        if ex.kind != "build" or not getattr(ex, "run_figure", ""):
+        if not isinstance(ex, Build) or not getattr(ex, "run_figure", ""):
             continue
         arguments, trace = ex.arguments(), runs.trace_job(ex)
         report = read_report(runner.run(json.loads(ex.job()), ex.starter), len(arguments),
@@ -107,5 +110,5 @@ def run_figure_times(repeats: int = 50) -> dict:
             runs.draw_run(ex, report, cases, arguments)
             times.append((time.perf_counter() - t) * 1000)
         per[ex.id] = round(statistics.median(times), 3)
-    slowest = max(per, key=per.get) if per else None
-    return {"max_p50_ms": per.get(slowest), "slowest": slowest, "per_exercise_p50_ms": per, "repeats": repeats}
+    slowest = max(per, key=lambda name: per[name]) if per else None
+    return {"max_p50_ms": per[slowest] if slowest else None, "slowest": slowest, "per_exercise_p50_ms": per, "repeats": repeats}

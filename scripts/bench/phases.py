@@ -7,18 +7,50 @@ import statistics
 import sys
 import time
 import traceback
+from typing import Any
 
 from workbook import bank
 from workbook.contract import ATTR, ROLE, STATE
+from workbook.kinds.build import Build
+from workbook.kinds.derive import Derive
 
 from . import class_page, first_visit, pagejs
 from .browser import BenchError, Browsers
-from .config import (BUILD_HEAVY_ID, BUILD_ID, BUILD_NEW_ID, BUILD_LOOP, BUILD_NUMPY, BUILD_PLAIN, CH0, CH1, CH3, CH9, DERIVE_INPUT, GRADE_TIMEOUT_MS,
-                     GRADED, NUMPY_TIMEOUT_MS, READY_TIMEOUT_MS, Profile)
+from .config import (
+    BUILD_HEAVY_ID,
+    BUILD_ID,
+    BUILD_LOOP,
+    BUILD_NEW_ID,
+    BUILD_NUMPY,
+    BUILD_PLAIN,
+    CH0,
+    CH1,
+    CH3,
+    CH9,
+    DERIVE_INPUT,
+    GRADE_TIMEOUT_MS,
+    GRADED,
+    NUMPY_TIMEOUT_MS,
+    READY_TIMEOUT_MS,
+    Profile,
+)
 from .pagejs import exercise, role
 from .records import percentile
 
 GRADED_STATES = (STATE.correct, STATE.incorrect)
+
+
+def _build(ex_id: str) -> Build:
+    ex = bank.get(ex_id)
+    assert isinstance(ex, Build), ex_id
+    return ex
+
+
+def _answer(ex_id: str) -> Any:
+    """A Derive exercise's answer: the AnswerKind its variant built (``key``, ``answer_text``)."""
+    ex = bank.get(ex_id)
+    assert isinstance(ex, Derive), ex_id
+    return ex.answer
 
 
 LOCAL_PHASES = ("startup", "first_feedback", "baseline", "ready", "class_page")
@@ -60,11 +92,11 @@ class Phases:
                 page, _ = b.visit(ctx, b.site + chapter)
                 self.grade_kinds(page, chapter, grading)
                 if chapter == CH1:
-                    run["build_new"] = self.build_series(page, BUILD_NEW_ID, bank.get(BUILD_NEW_ID).solution,
+                    run["build_new"] = self.build_series(page, BUILD_NEW_ID, _build(BUILD_NEW_ID).solution,
                                                          READY_TIMEOUT_MS)
                 page.close()
             page, _ = b.visit(ctx, b.site + CH9)
-            run["build_heavy"] = self.build_series(page, BUILD_HEAVY_ID, bank.get(BUILD_HEAVY_ID).solution, READY_TIMEOUT_MS)
+            run["build_heavy"] = self.build_series(page, BUILD_HEAVY_ID, _build(BUILD_HEAVY_ID).solution, READY_TIMEOUT_MS)
             page.close()
             run["grading"] = grading
         finally:
@@ -82,13 +114,13 @@ class Phases:
             elif kind == "debug":
                 ex.locator(f'{role(ROLE.line)}[{ATTR.line}="1"]').click()
             elif kind == "matrix":  # the key's entries, one of them off: the whole diagnosis runs
-                rows = [[f"{v:.6g}" for v in row] for row in bank.get(ex_id).answer.key]
+                rows = [[f"{v:.6g}" for v in row] for row in _answer(ex_id).key]
                 rows[0][0] = "sqrt(2)/2"
                 for i, row in enumerate(rows, 1):
                     for j, text in enumerate(row, 1):
                         ex.locator(f'{role(ROLE.entry)}[{ATTR.row}="{i}"][{ATTR.col}="{j}"]').fill(text)
             elif kind == "formula":
-                ex.locator(role(ROLE.answer)).fill(bank.get(ex_id).answer.answer_text)
+                ex.locator(role(ROLE.answer)).fill(_answer(ex_id).answer_text)
             res = pagejs.run(page, "grade_loop", {"id": ex_id, "n": self.args.checks, "timeoutMs": GRADE_TIMEOUT_MS})
             bad = [s for s in res["states"] if s not in GRADED_STATES]
             if bad:

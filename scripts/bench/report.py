@@ -14,9 +14,9 @@ from .records import fmt, summary
 
 def collect(runs: list[dict]) -> dict:
     def pick(*path):
-        vals = []
+        vals: list[float] = []
         for r in runs:
-            v = r
+            v: object = r
             for key in path:
                 v = v.get(key) if isinstance(v, dict) else None
             if isinstance(v, (int, float)):
@@ -181,7 +181,7 @@ TABLE = [
 
 
 def render_table(metrics: dict, runs: int) -> str:
-    rows = [("Measurement", f"median (n<={runs})", "min", "max")]
+    rows: list[tuple[str, ...]] = [("Measurement", f"median (n<={runs})", "min", "max")]
     for label, key, unit in TABLE:
         s = metrics.get(key)
         rows.append((label, *(fmt(s[k], unit) if s else "-" for k in ("median", "min", "max"))))

@@ -19,7 +19,7 @@ ROOT = Path(__file__).resolve().parents[2]
 SITE = ROOT / "site"
 sys.path.insert(0, str(ROOT / "scripts"))
 
-from find_browser import find_browser
+from find_browser import find_browser  # noqa: E402  (from scripts/, on the path above)
 from helpers import keep_to_origin, record_leaving  # noqa: E402
 from site_server import SUBPATH, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 

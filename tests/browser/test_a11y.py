@@ -10,10 +10,10 @@ never ships it."""
 from __future__ import annotations
 
 import pytest
-from conftest import ROOT
-from helpers import role, CHAPTERS, exercise, open_chapter, settle, wait_runtime
 from playwright.sync_api import Page, expect
 
+from conftest import ROOT
+from helpers import CHAPTERS, exercise, open_chapter, role, settle, wait_runtime
 from workbook import bank
 
 AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
@@ -34,7 +34,7 @@ SLOW = 120_000  # ms: generous, for a test machine busy with other work (a page'
 def settle_page(page: Page) -> None:
     """Wait until the page's script has drawn everything it draws (editors built now)."""
     page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)", timeout=SLOW)
-    page.evaluate(("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor()))"))
+    page.evaluate("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor()))")
     page.wait_for_function("""() => {
       const exercises = [...document.querySelectorAll('[data-exercise-id]')];
       const builds = exercises.filter(e => e.dataset.kind === 'build');
@@ -57,7 +57,7 @@ def wait_practise_card(page: Page) -> None:
 
 def open_all_help(page: Page) -> None:
     """Open every hint, derivation and "Work it in steps" panel."""
-    for button in page.locator((role("hint") + ', ' + role("reveal") + ', ' + role("work-steps-open"))).all():
+    for button in page.locator(role("hint") + ', ' + role("reveal") + ', ' + role("work-steps-open")).all():
         button.click()
     for panel in ("solution-panel", "work-steps"):
         page.wait_for_function("sel => [...document.querySelectorAll(sel)].every(s => !s.hidden)", arg=role(panel))
@@ -180,7 +180,7 @@ def test_every_exercise_kind_works_from_the_keyboard(page, site_url):
             order = design.locator(role("step")).evaluate_all("els => els.map(e => e.dataset.step)")
             if order.index(key) == target:
                 break
-            design.locator((f'[data-step="{key}"] ' + role("move-up"))).focus()
+            design.locator(f'[data-step="{key}"] ' + role("move-up")).focus()
             assert has_visible_focus(page)
             page.keyboard.press("Enter")
     assert "is now step" in design.locator(role("feedback")).inner_text()

@@ -9,6 +9,8 @@ from __future__ import annotations
 
 import json
 
+from playwright.sync_api import expect
+
 from helpers import (
     check,
     entry,
@@ -23,8 +25,6 @@ from helpers import (
     reveal,
     role,
 )
-from playwright.sync_api import expect
-
 from workbook import bank
 from workbook.contract import ATTR, ROLE, STATE, TAG
 from workbook.number_format import fmt

@@ -9,9 +9,9 @@
 
 from __future__ import annotations
 
-from helpers import exercise, feedback, open_chapter, role, run_build, settle, wait_runtime, widget_ready
 from playwright.sync_api import expect
 
+from helpers import exercise, feedback, open_chapter, role, run_build, settle, wait_runtime, widget_ready
 from workbook import bank
 
 

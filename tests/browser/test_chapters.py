@@ -5,8 +5,8 @@ package (the same source of truth the page grades against)."""
 from __future__ import annotations
 
 import pytest
-from helpers import open_chapter, solve
 
+from helpers import open_chapter, solve
 from workbook import bank
 
 

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import pytest
 
-from workbook import bank
 from helpers import exercise, open_chapter, role, run_build, set_editor
+from workbook import bank
 
 # Per exercise: a slip that gives wrong values (old -> new in the model solution), and one that raises,
 # with the text of the line it raises on.
@@ -69,7 +69,7 @@ def test_code_the_robot_in_the_page(page, site_url, ex_id):
     failing = ex.locator(role("test-result", '[data-passed="false"]'))
     assert failing.first.locator("td").first.inner_text().startswith(ex_data.function)
     assert "raised" in failing.first.locator("td").nth(2).inner_text()
-    number = code.split("\n").index(next(l for l in code.split("\n") if l.strip() == line_text.strip())) + 1
+    number = code.split("\n").index(next(s for s in code.split("\n") if s.strip() == line_text.strip())) + 1
     assert f"line {number}" in ex.locator(role("tests")).inner_text()
     marked = ex.locator(".cm-line.wb-error-line")
     assert marked.count() == 1 and line_text.strip() in marked.inner_text()

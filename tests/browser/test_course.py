@@ -10,12 +10,13 @@ import csv
 import io
 import json
 import time
+from pathlib import Path
 
 import pytest
-from helpers import role, wait_runtime
 from playwright.sync_api import Page
-from test_a11y import OVERFLOW, audit
 
+from helpers import role, wait_runtime
+from test_a11y import OVERFLOW, audit
 from workbook import bank
 from workbook.assignment import assigned_variant
 
@@ -100,7 +101,7 @@ def test_same_id_same_numbers_in_two_browsers_and_the_class_page_recomputes_them
         assert a.locator("td[data-wb-exercise='0.1']").get_attribute("data-wb-cell") == "verified"
         with a.expect_download() as got:
             a.locator("[data-wb-action='csv']").click()
-        rows = list(csv.DictReader(io.StringIO(open(got.value.path(), encoding="utf-8").read())))
+        rows = list(csv.DictReader(io.StringIO(Path(got.value.path()).read_text(encoding="utf-8"))))
         assert {r["exercise"]: int(r["variant"]) for r in rows if r["exercise"] in want} == want
     finally:
         for context in (first, second, other):
@@ -179,7 +180,7 @@ def test_class_page_regrades_three_learners(page, site_url):
     assert page.locator("tbody tr[data-wb-student]").first.get_attribute("data-wb-student") == "ana"
     with page.expect_download() as got:
         page.locator("[data-wb-action='csv']").click()
-    rows = list(csv.DictReader(io.StringIO(open(got.value.path(), encoding="utf-8").read())))
+    rows = list(csv.DictReader(io.StringIO(Path(got.value.path()).read_text(encoding="utf-8"))))
     by = {(r["student"], r["exercise"]): r for r in rows}
     assert by[("cai", "0.1")]["solved (claimed)"] == "yes" and by[("cai", "0.1")]["verified"] == "no"
     assert by[("ana", "0.1")]["verified"] == "yes" and by[("ana", "0.1")]["attempts"] == "2"

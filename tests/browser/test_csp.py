@@ -13,11 +13,22 @@ import re
 from urllib.parse import urlsplit
 
 import pytest
-from conftest import SITE
-from helpers import (CHAPTERS, answer_debug, answer_derive, answer_trace, check, exercise, feedback, role, run_build,
-                     set_editor, wait_runtime)
 from playwright.sync_api import expect
 
+from conftest import SITE
+from helpers import (
+    CHAPTERS,
+    answer_debug,
+    answer_derive,
+    answer_trace,
+    check,
+    exercise,
+    feedback,
+    role,
+    run_build,
+    set_editor,
+    wait_runtime,
+)
 from workbook import bank
 from workbook.contract import ATTR
 

@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import re
 
+from helpers import answer_derive, editor_code, exercise, feedback, open_chapter, role, run_build, set_editor
 from workbook import bank
-from helpers import role, answer_derive, editor_code, exercise, feedback, open_chapter, run_build, set_editor
 
 
 def test_derive_messages(page, site_url):

@@ -4,10 +4,10 @@ tests/unit/test_message_math.py)."""
 
 from __future__ import annotations
 
+from helpers import answer_trace, arrange_design, check, exercise, open_chapter, role
 from workbook import bank
 from workbook.kinds.design import Design
 from workbook.kinds.trace import Trace
-from helpers import answer_trace, arrange_design, check, exercise, open_chapter, role
 
 
 def typeset(ex) -> dict:

@@ -9,7 +9,7 @@ import re
 
 import pytest
 
-from helpers import role, CHAPTERS, open_chapter, wait_runtime
+from helpers import CHAPTERS, open_chapter, role, wait_runtime
 from workbook.figures import arm_2link, capstone, ekf_update, jacobian
 from workbook.reference.arm import inverse_kinematics_2link, jacobian_det
 from workbook.reference.ekf import ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
@@ -71,7 +71,7 @@ def test_ch0_rotation(page, site_url):
     text = press(page, "theta", "ArrowRight", "image")
     assert slider_value(page, "theta") == 31
     assert_close(text, rotate_2d(1.5, 0.5, rad(31)))
-    assert figure(page).locator(('output' + role("control-value"))).first.inner_text() == "31°"
+    assert figure(page).locator('output' + role("control-value")).first.inner_text() == "31°"
 
 
 def test_ch0_controls_queue_until_the_runtime_is_ready(page, site_url):

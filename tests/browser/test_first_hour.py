@@ -14,8 +14,17 @@ import pytest
 from playwright.sync_api import Page, expect
 
 from conftest import SITE
-from helpers import (CHAPTERS, answer_derive, answer_trace, exercise, open_chapter, role, run_build, set_editor,
-                     wait_runtime)
+from helpers import (
+    CHAPTERS,
+    answer_derive,
+    answer_trace,
+    exercise,
+    open_chapter,
+    role,
+    run_build,
+    set_editor,
+    wait_runtime,
+)
 from test_a11y import PAGES, open_all_help
 from workbook import bank
 from workbook.contract import ATTR, ROLE

@@ -11,8 +11,8 @@ from __future__ import annotations
 
 from playwright.sync_api import expect
 
-from workbook.contract import ATTR
 from helpers import network_is_off
+from workbook.contract import ATTR
 
 LONG = 120_000
 DEEP = "chapters/no-such-chapter/no-such-page/"

@@ -7,7 +7,6 @@ Expected values come from the grading package (the bank and its keys).
 from __future__ import annotations
 
 from helpers import answer_derive, check, entry, entry_values, exercise, fill_matrix, open_chapter, paste, role
-
 from workbook import bank
 from workbook.contract import ATTR, STATE, TAG
 from workbook.number_format import fmt

@@ -18,10 +18,22 @@ import time
 from pathlib import Path
 
 import pytest
-from conftest import SITE
-from site_server import SiteServer
-from helpers import keep_to_origin, network_is_off, role, answer_derive, exercise, feedback, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page, expect
+
+from conftest import SITE
+from helpers import (
+    answer_derive,
+    exercise,
+    feedback,
+    keep_to_origin,
+    network_is_off,
+    open_chapter,
+    role,
+    run_build,
+    set_editor,
+    wait_runtime,
+)
+from site_server import SiteServer
 
 pytestmark = pytest.mark.uncached  # the offline copy must not lean on the HTTP cache
 

@@ -19,10 +19,10 @@ import time
 from urllib.parse import urlsplit
 
 import pytest
-from conftest import ROOT, SITE
-from helpers import keep_to_origin
 from playwright.sync_api import expect
 
+from conftest import ROOT, SITE
+from helpers import keep_to_origin
 from workbook.contract import ATTR, DATA
 
 pytestmark = pytest.mark.uncached  # the offline copy must not lean on the HTTP cache

@@ -17,11 +17,11 @@ import re
 import time
 
 import pytest
-from conftest import SITE
-from helpers import CHAPTERS, exercise, network_is_off, solve, wait_runtime
 from playwright.sync_api import expect
-from site_server import SiteServer
 
+from conftest import SITE
+from helpers import CHAPTERS, network_is_off, solve, wait_runtime
+from site_server import SiteServer
 from workbook import bank
 from workbook.contract import ATTR
 

@@ -182,7 +182,7 @@ def test_listings_keep_their_columns_at_360_px(page, site_url):
     seen = {"debug": 0, "plain": 0, "editor": 0}
     long = {"debug": 0, "plain": 0, "editor": 0}
     wide = {}
-    for n, path in CHAPTERS.items():
+    for _n, path in CHAPTERS.items():
         page.goto(site_url + path)
         builds = page.locator(f"[{ATTR.exercise}]" + kind("build"))
         for which in ("debug", "plain"):

@@ -7,12 +7,22 @@ from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
-from helpers import (role, solve, answer_debug, answer_derive, answer_trace, editor_code, exercise, open_chapter,
-                     set_editor,
-                     wait_runtime)
 from playwright.sync_api import Page, expect
 
+from helpers import (
+    answer_debug,
+    answer_derive,
+    answer_trace,
+    editor_code,
+    exercise,
+    open_chapter,
+    role,
+    set_editor,
+    solve,
+    wait_runtime,
+)
 from workbook import bank
 
 SOLVED_BAR = '[data-wb-chapter-progress] [data-wb-bar="solved"]'
@@ -146,7 +156,7 @@ def test_export_reset_import_restores_exactly(page, site_url):
 
     with page.expect_download() as download:
         page.get_by_role("button", name="Export progress").click()
-    exported = json.loads(open(download.value.path(), encoding="utf-8").read())
+    exported = json.loads(Path(download.value.path()).read_text(encoding="utf-8"))
     assert download.value.suggested_filename.endswith(".json")
     assert exported["format"] == "robotics-math-workbook-progress" and exported["version"] == 5
     assert exported["exercises"] == before

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 import json
 import time
+from pathlib import Path
 
 from playwright.sync_api import Page, expect
 
 from helpers import CHAPTERS, answer_derive, editor_code, exercise, set_editor, wait_runtime
 from test_progress import import_file, open_progress_page, records, stored
-
 from workbook import bank
 
 ONE_OF_CHAPTER_0 = f"1 of {len(bank.chapter(0))}"  # solved, of all chapter 0's exercises
@@ -182,7 +182,7 @@ def test_storage_full_at_load_shows_what_is_saved_and_says_so(page, site_url):
     assert stored(page) == before  # ...and nothing half-written
     with page.expect_download() as download:
         notice.locator('[data-wb-action="notice-export"]').click()
-    exported = json.loads(open(download.value.path(), encoding="utf-8").read())["exercises"]
+    exported = json.loads(Path(download.value.path()).read_text(encoding="utf-8"))["exercises"]
     assert {"0.1", "0.6"} <= set(exported)
     # Space freed: the next answer saves everything, and the notice goes.
     page.evaluate(FREE)
@@ -203,7 +203,7 @@ def test_an_unreadable_record_with_no_room_for_a_copy_is_never_overwritten(page,
     expect(notice).to_contain_text("nothing will be saved")
     with page.expect_download() as download:
         notice.locator('[data-wb-action="notice-download"]').click()
-    assert open(download.value.path(), encoding="utf-8").read() == '{"version": 9, "exercises": {"0.1": {"future": 1}}}'
+    assert Path(download.value.path()).read_text(encoding="utf-8") == '{"version": 9, "exercises": {"0.1": {"future": 1}}}'
     page.evaluate(FREE)  # even with room now: the copy is made first, then the record written
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     page.wait_for_function("k => Object.keys(localStorage).some(n => n.startsWith(k + ':backup:'))", arg=key)
@@ -222,7 +222,7 @@ def test_a_200000_character_build_answer_survives_export_and_import(page, site_u
     open_progress_page(page, site_url)
     with page.expect_download() as download:
         page.get_by_role("button", name="Export progress").click()
-    text = open(download.value.path(), encoding="utf-8").read()
+    text = Path(download.value.path()).read_text(encoding="utf-8")
     page.evaluate("workbook.progress.reset()")
     assert "added" in import_file(page, text)
     assert records(page)["0.5"]["code"] == code

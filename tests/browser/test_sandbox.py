@@ -12,11 +12,21 @@ from pathlib import Path
 import pytest
 from playwright.sync_api import Page
 
-from helpers import CHAPTERS, answer_derive, exercise, feedback, keep_to_origin, open_chapter, role, run_build, set_editor
+from helpers import (
+    CHAPTERS,
+    answer_derive,
+    exercise,
+    feedback,
+    keep_to_origin,
+    open_chapter,
+    role,
+    run_build,
+    set_editor,
+)
 from workbook import bank
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "unit"))
-from test_attacks import ATTACKS as NATIVE  # noqa: E402  (the same programs, run natively there)
+from test_attacks import ATTACKS as NATIVE
 
 EX = bank.get("0.5")
 GOOD = EX.solution
@@ -139,7 +149,7 @@ def test_an_attack_in_the_page_bends_no_verdict(lab, name):
         assert feedback(ex) == MESSAGES[name]
     if name == "every way out of the sandbox":
         outcome = printed(ex)
-        assert {k: v.split(":")[0] for k, v in outcome.items()} == {k: "blocked" for k in ESCAPES}, outcome
+        assert {k: v.split(":")[0] for k, v in outcome.items()} == dict.fromkeys(ESCAPES, "blocked"), outcome
         made = requests[seen:]
         assert not [url for url in made if "planted" in url or "robotics_workbook" in url or "example.com" in url], made
     grades_as_before(page)

@@ -7,10 +7,24 @@ from __future__ import annotations
 import re
 from pathlib import Path
 
-from helpers import (role, answer_debug, answer_derive, answer_trace, arrange_design, check, editor_code, exercise, feedback,
-                     open_chapter, run_build, set_editor, settle, wait_runtime)
 from playwright.sync_api import expect
 
+from helpers import (
+    answer_debug,
+    answer_derive,
+    answer_trace,
+    arrange_design,
+    check,
+    editor_code,
+    exercise,
+    feedback,
+    open_chapter,
+    role,
+    run_build,
+    set_editor,
+    settle,
+    wait_runtime,
+)
 from workbook import bank
 
 SITE = Path(__file__).resolve().parents[2] / "site"
@@ -21,7 +35,7 @@ def test_html_contract_before_python_is_ready(page, site_url):
     page.goto(site_url + "chapters/00-rotations-2d/")
     # Rendered at build time: visible before the runtime is ready.
     assert page.locator("[data-exercise-id]").count() == len(bank.chapter(0))
-    assert page.locator(('[data-exercise-id="0.3"] ' + role("choice"))).count() >= 3
+    assert page.locator('[data-exercise-id="0.3"] ' + role("choice")).count() >= 3
     assert exercise(page, "0.1").get_attribute("data-kind") == "derive"
     assert exercise(page, "0.1").get_attribute("data-state") == "unanswered"
     assert page.evaluate("document.documentElement.dataset.workbookRuntime") in ("loading", "ready")
@@ -125,7 +139,7 @@ def test_run_works_before_the_editor_is_built(page, site_url):
     open_chapter(page, site_url, 0)
     ex = exercise(page, "0.5")
     assert ex.locator(".cm-editor").count() == 0
-    ex.evaluate(("el => el.querySelector('" + role("run") + "').click()"))  # no scrolling: the editor is not built yet
+    ex.evaluate("el => el.querySelector('" + role("run") + "').click()")  # no scrolling: the editor is not built yet
     assert settle(ex) == "incorrect"  # the starter code, graded
     assert ex.locator(role("test-result")).count() >= 1
     assert ex.locator(".cm-editor").count() == 1

@@ -15,11 +15,11 @@ import json
 import re
 
 import pytest
+from playwright.sync_api import expect
+
 from conftest import SITE
 from helpers import exercise, role, wait_runtime
-from playwright.sync_api import expect
 from site_server import Link, SiteServer
-
 from workbook.contract import ATTR, DATA
 
 LONG = 180_000

@@ -14,10 +14,9 @@ import json
 import random
 from collections import Counter
 
+from moved import moved
 from workbook import bank
 from workbook.api import handle
-
-from moved import moved
 
 DRAWS = 200
 

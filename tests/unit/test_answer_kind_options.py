@@ -27,27 +27,27 @@ def test_every_registered_kind_is_a_package_with_its_parts():
 ])
 def test_an_option_a_kind_does_not_have_fails_with_the_exercise_id(spec, option):
     with pytest.raises(ValueError, match=rf"exercise 9\.99: .*no option '{option}'"):
-        Derive(id="9.99", title="t", answer=spec)
+        Derive(id="9.99", title="t", spec=spec)
 
 
 def test_a_name_make_returns_that_nothing_takes_fails_with_the_exercise_id():
     misspelt = Vary(lambda p: {"key": p["x"], "slip": ()}, Param("x", 1, 1, 5, 1))
     with pytest.raises(ValueError, match=r"exercise 9\.98: .*no option 'slip'"):
-        Derive(id="9.98", title="t", answer=number(), vary=misspelt)
+        Derive(id="9.98", title="t", spec=number(), vary=misspelt)
 
 
 def test_the_worked_placeholder_belongs_to_the_answer_kind():
     takes_it = Vary(lambda p: {"key": p["x"], "values": {"worked": "7"}}, Param("x", 1, 1, 5, 1))
     with pytest.raises(VariantError, match="worked"):
-        Derive(id="9.97", title="t", answer=number(), vary=takes_it)
-    ex = Derive(id="9.96", title="t", answer=number(), vary=Vary(lambda p: {"key": p["x"] / 3}, Param("x", 1, 1, 5, 1)))
+        Derive(id="9.97", title="t", spec=number(), vary=takes_it)
+    ex = Derive(id="9.96", title="t", spec=number(), vary=Vary(lambda p: {"key": p["x"] / 3}, Param("x", 1, 1, 5, 1)))
     assert ex.values["worked"] == ex.worked_text() == "0.3333"
 
 
 def test_options_are_checked_for_sense():
     with pytest.raises(ValueError, match="periodic needs angle"):
-        Derive(id="9.95", title="t", answer=number(key=1.0, periodic=True))
+        Derive(id="9.95", title="t", spec=number(key=1.0, periodic=True))
     with pytest.raises(ValueError, match="one unit per entry"):
-        Derive(id="9.94", title="t", answer=matrix(key=((1.0,), (2.0,)), units=("m",)))
+        Derive(id="9.94", title="t", spec=matrix(key=((1.0,), (2.0,)), units=("m",)))
     with pytest.raises(ValueError, match="names are for a vector"):
-        Derive(id="9.93", title="t", answer=matrix(key=((1.0, 2.0), (3.0, 4.0)), names=("a", "b", "c", "d")))
+        Derive(id="9.93", title="t", spec=matrix(key=((1.0, 2.0), (3.0, 4.0)), names=("a", "b", "c", "d")))

@@ -18,6 +18,8 @@ from pathlib import Path
 
 import pytest
 
+from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
+from exercise_text import source_of  # docs/hooks/exercise_text.py
 from workbook import bank
 from workbook.answer_kinds.expression.mark import equivalent
 from workbook.contract import BUILD_FUNCTIONS, KINDS
@@ -28,11 +30,8 @@ from workbook.kinds.design import Design
 from workbook.kinds.trace import Trace
 from workbook.variants import fill
 
-from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
-from exercise_text import source_of  # docs/hooks/exercise_text.py
-
 sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "golden"))
-from transcript import SLIP_TEXTS  # noqa: E402  (each formula slip typed as a learner would)
+from transcript import SLIP_TEXTS
 
 
 def check(ex, answer):
@@ -124,7 +123,7 @@ NUMBER = re.compile(r"[-−]?\d+(?:\.\d+)?")
 
 
 def printed_answer(ex: Derive) -> str:
-    lines = [l for l in BLOCKS[ex.id]["solution"].splitlines() if l.strip().startswith("**Answer:**")]
+    lines = [line for line in BLOCKS[ex.id]["solution"].splitlines() if line.strip().startswith("**Answer:**")]
     assert len(lines) == 1, f"{ex.id}: the derivation needs exactly one '**Answer:**' line"
     numbers = NUMBER.findall(lines[0].replace("^\\circ", "°"))
     assert numbers, f"{ex.id}: no number in {lines[0]!r}"
@@ -162,7 +161,7 @@ BMATRIX = re.compile(r"\\begin\{bmatrix\}(.*?)\\end\{bmatrix\}", re.S)
 
 def printed_matrix(ex: Derive) -> list[list[str]]:
     """The entries of the last bmatrix on the ``**Answer:**`` line, as printed, row by row."""
-    lines = [l for l in BLOCKS[ex.id]["solution"].splitlines() if l.strip().startswith("**Answer:**")]
+    lines = [line for line in BLOCKS[ex.id]["solution"].splitlines() if line.strip().startswith("**Answer:**")]
     assert len(lines) == 1, f"{ex.id}: the derivation needs exactly one '**Answer:**' line"
     found = BMATRIX.findall(lines[0])
     assert found, f"{ex.id}: the answer line has no bmatrix: {lines[0]!r}"
@@ -235,7 +234,7 @@ def test_every_formula_exercise_has_a_hand_written_equivalent():
 
 @pytest.mark.parametrize("ex", BY_ANSWER["expression"], ids=lambda e: e.id)
 def test_formula_answer_and_equivalent_are_right(ex: Derive):
-    lines = [l for l in BLOCKS[ex.id]["solution"].splitlines() if l.strip().startswith("**Answer:**")]
+    lines = [line for line in BLOCKS[ex.id]["solution"].splitlines() if line.strip().startswith("**Answer:**")]
     assert len(lines) == 1, f"{ex.id}: the derivation needs exactly one '**Answer:**' line"
     assert ex.worked_text() == ex.answer.answer_text
     for text in (ex.answer.answer_text, EQUIVALENT_FORMS[ex.id]):
@@ -297,7 +296,7 @@ def load_function(code: str, name: str):
 
 def agrees(fn, ex: Debug, args) -> bool:
     got, want = fn(*args), ex.reference(*args)
-    flat = lambda v: [float(x) for x in (sum((list(r) for r in v), []) if hasattr(v[0], "__len__") else v)]  # noqa: E731
+    flat = lambda v: [float(x) for x in ([y for r in v for y in r] if hasattr(v[0], "__len__") else v)]  # noqa: E731
     return all(math.isclose(a, b, rel_tol=1e-9, abs_tol=1e-9) for a, b in zip(flat(got), flat(want)))
 
 

@@ -52,7 +52,7 @@ def close(a, b, tol=1e-9) -> bool:
 
 @pytest.mark.parametrize("exercise_id", HUNTS)
 def test_each_hunt_is_a_short_debug_program_with_one_marked_line(exercise_id):
-    ex, buggy, fixed = programs(exercise_id)
+    ex, _buggy, fixed = programs(exercise_id)
     assert ex.kind == "debug"
     assert 6 <= len(ex.lines) <= 14
     assert all(line.strip() for line in ex.lines), "a blank line would need a note of its own"
@@ -127,7 +127,7 @@ def test_milliseconds_make_the_robot_drive_a_thousand_times_too_far():
 
 
 def test_the_sign_error_calls_the_sweeping_arm_still():
-    ex, buggy, fixed = programs("7.9")
+    _ex, buggy, fixed = programs("7.9")
     straight = (1.0, 1.0, 0.0, 0.0, 1.0, 0.0)
     assert buggy(*straight)[1] == 0.0
     assert math.isclose(fixed(*straight)[1], 2.0)  # (L1 + L2)·ω1
@@ -161,7 +161,7 @@ def test_8_8_and_8_9_teach_one_anti_windup_rule():
     import random
 
     ex88, ex89 = bank.get("8.8"), bank.get("8.9")
-    _, buggy, fixed = programs("8.9")
+    _, _buggy, fixed = programs("8.9")
     fixed_lines = [*ex89.lines[: ex89.bug_line - 1], ex89.fixed_line, *ex89.lines[ex89.bug_line:]]
     assert ex88.check(_as_8_8(fixed_lines)).status == "correct"
     assert ex88.check(_as_8_8(ex89.lines)).status == "incorrect"
@@ -183,7 +183,7 @@ def test_8_8_and_8_9_teach_one_anti_windup_rule():
 
 
 def test_windup_overshoots_more_than_the_fixed_controller():
-    ex, buggy, fixed = programs("8.9")
+    _ex, buggy, fixed = programs("8.9")
     gains, limit = symptoms.WINDUP_GAINS, symptoms.WINDUP_LIMIT
     peaks = {name: max(simulate_saturated(step, *gains, limit)[1]) for name, step in (("bug", buggy), ("fixed", fixed))}
     assert peaks["bug"] - 1 > 0.3 and peaks["fixed"] - 1 < 0.05

@@ -9,9 +9,8 @@ from __future__ import annotations
 
 import pytest
 
-from workbook import bank
-
 from holdout_programs import RIGHT, WRONG
+from workbook import bank
 
 SEEDS = (0, 17, 4321)
 BUILDS = sorted({ex.id for ex in bank.all_exercises() if ex.kind == "build"}, key=lambda i: tuple(map(int, i.split("."))))

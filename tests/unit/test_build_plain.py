@@ -9,7 +9,7 @@ from workbook import bank
 from workbook.build_plain import plain
 
 sys.path.insert(0, str(Path(__file__).parent))
-from test_attacks import ATTACKS  # noqa: E402
+from test_attacks import ATTACKS
 
 BUILDS = [ex for ex in bank.all_exercises() if ex.kind == "build"]
 
@@ -64,7 +64,7 @@ NOT_PLAIN = {
     "register an ABC": "import collections\ncollections.abc.Sequence.register(int)\n",
     "syntax error": "def f(:\n",
     "a NUL byte": "x = 1\0\n",
-    "full-width getattr": "ｇｅｔａｔｔｒ(1, 'real')\n",
+    "full-width getattr": "ｇｅｔａｔｔｒ(1, 'real')\n",  # noqa: RUF001 (full-width, meant)
 }
 
 

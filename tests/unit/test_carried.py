@@ -10,10 +10,9 @@ import random
 
 import pytest
 
-from workbook import bank
-
 import carried_probe
 from carried_probe import grade, read, variants
+from workbook import bank
 
 
 @pytest.fixture(scope="module")
@@ -70,8 +69,10 @@ def test_a_carried_key_that_cancels_accepts_zero(ex_id):
     for v in variants(ex_id, 40):
         name = v.steps[0].name
         kind = v.step_answers[name]
-        entry = (lambda k: k) if not isinstance(v.answer.key, tuple) else (lambda k: k[0][0])
-        f = lambda t: entry(v.carried_answer({name: t}).key)  # noqa: E731
+        def f(t, v=v, name=name):
+            key = v.carried_answer({name: t}).key
+            return key[0][0] if isinstance(key, tuple) else key
+
         grid = [kind.key + d for d in range(-180, 181, 7)]
         pairs = [(a, b) for a, b in zip(grid, grid[1:]) if (f(a) < 0) != (f(b) < 0)]
         if not pairs:

@@ -12,10 +12,9 @@ import random
 
 import pytest
 
+from moved import moved
 from workbook import bank, chains
 from workbook.api import handle
-
-from moved import moved
 
 DRAWS = 200
 CHAINED = [(ex.id, link) for ex in bank.all_exercises() for link in getattr(ex, "uses", ())]

@@ -19,13 +19,12 @@ from pathlib import Path
 
 import pytest
 
+from exercise_text import load_all  # docs/hooks/exercise_text.py
 from workbook import bank
 from workbook.number_format import fmt
 from workbook.reference import pose_graph
 from workbook.reference.ekf import motion_model, motion_model_arc
 from workbook.reference.pose_graph import gauss_newton_step_1d, graph_cost
-
-from exercise_text import load_all  # docs/hooks/exercise_text.py
 
 ROOT = Path(__file__).resolve().parents[2]
 CHAPTERS = ROOT / "docs" / "chapters"

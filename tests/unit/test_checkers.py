@@ -18,10 +18,10 @@ def grade(ex_id, answer):
 
 
 def test_policy_tolerance():
-    ex = bank.get("0.4")  # key 0 -> absolute tolerance 1e-3
+    bank.get("0.4")  # key 0 -> absolute tolerance 1e-3
     assert grade("0.4", "0.0009").status == "correct"
     assert grade("0.4", "0.0011").status == "incorrect"
-    big = Derive(id="x.1", title="", answer=number(key=7500.0))
+    big = Derive(id="x.1", title="", spec=number(key=7500.0))
     assert check(big, "7507").status == "correct"  # 1e-3 relative
     assert check(big, "7508").tag == "close"
 

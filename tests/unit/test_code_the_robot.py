@@ -307,8 +307,13 @@ def test_9_9_every_run_loses_the_landmark_and_sees_it_again(seed):
     ex = bank.get("9.9").variant(seed)
     patterns = []
     for args in ex.arguments()[len(ex.examples):]:
-        seen = []
-        harness.nav_loop(lambda *a: seen.append(a[3] is not None) or ex.reference(*a), *args)
+        seen: list[bool] = []
+
+        def watched(*a, seen=seen):
+            seen.append(a[3] is not None)
+            return ex.reference(*a)
+
+        harness.nav_loop(watched, *args)
         patterns.append("".join("1" if s else "0" for s in seen).strip("0"))
     assert any("10" in p and p.endswith("1") for p in patterns)
 

@@ -1,8 +1,8 @@
 """Run every docstring example in the grading package: the library teaches and tests at once."""
 
 import doctest
-import inspect
 import importlib
+import inspect
 import pkgutil
 
 import pytest
@@ -29,7 +29,7 @@ def test_reference_functions_carry_examples():
     for info in pkgutil.iter_modules(importlib.import_module("workbook.reference").__path__):
         module = importlib.import_module(f"workbook.reference.{info.name}")
         for name, obj in vars(module).items():
-            if inspect.isfunction(obj) and not name.startswith("_") and getattr(obj, "__module__", "") == module.__name__:
-                if ">>>" not in (obj.__doc__ or ""):
-                    missing.append(f"{module.__name__}.{name}")
+            public = inspect.isfunction(obj) and not name.startswith("_")
+            if public and getattr(obj, "__module__", "") == module.__name__ and ">>>" not in (obj.__doc__ or ""):
+                missing.append(f"{module.__name__}.{name}")
     assert missing == []

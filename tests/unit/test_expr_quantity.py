@@ -214,7 +214,7 @@ DEGREE_SIGNS = st.sampled_from(["°", " °", "º", "˚", "∘", " deg", " degree
 def test_an_angle_in_any_accepted_spelling_parses_to_the_same_value(value, minus, sign, frame):
     number = repr(abs(value))
     typed = (minus if value < 0 else "") + number + sign
-    halves = f"{repr(abs(value) / 2)}{sign} + {repr(abs(value) / 2)}{sign}"
+    halves = f"{abs(value) / 2!r}{sign} + {abs(value) / 2!r}{sign}"
     halves = f"{minus}({halves})" if value < 0 else halves
     for text in (frame.format(typed), frame.format(halves), f"{typed.strip()}"):
         got = parse_quantity(text, "deg")

@@ -13,21 +13,26 @@ from pathlib import Path
 import pytest
 from mkdocs.exceptions import PluginError
 
-from workbook import figures
-from workbook.contract import ATTR, ROLE
-from workbook.api import handle
-from workbook.figures import FigureError
-from render_figure import figure_html  # docs/hooks (build side)
+import exercises as hook  # docs/hooks/exercises.py
 from blocks import FigureBlock
+from render_figure import figure_html  # docs/hooks (build side)
+from workbook import figures
+from workbook.api import handle
+from workbook.contract import ATTR, ROLE
+from workbook.figures import FigureError
 from workbook.reference.arm import forward_kinematics_2link, inverse_kinematics_2link, jacobian_det
-from workbook.reference.ekf import covariance_ellipse, ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
+from workbook.reference.ekf import (
+    covariance_ellipse,
+    ekf_predict,
+    ekf_update_matrix,
+    measurement_jacobian,
+    range_bearing,
+)
 from workbook.reference.pid import simulate_step_response, step_metrics
 from workbook.reference.pose_graph import gauss_newton
 from workbook.reference.rotation2d import rot2, rotate_2d
 from workbook.reference.rotation3d import euler_zyx, quat_from_matrix
 from workbook.reference.transform2d import apply, chain, transform2d
-
-import exercises as hook  # docs/hooks/exercises.py
 
 ROOT = Path(__file__).resolve().parents[2]
 SVG = "{http://www.w3.org/2000/svg}"
@@ -62,7 +67,7 @@ def test_every_chapter_has_a_figure():
         names = re.findall(r"^::: figure (\S+)\s*$", text, re.M)
         assert names, f"{page.name} has no figure"
         assert text.index("::: figure") < text.index("## Exercises"), f"{page.name}: the figure belongs before the exercises"
-        placed.update({n: page.name for n in names})
+        placed.update(dict.fromkeys(names, page.name))
     assert sorted(placed) == sorted(NAMES)
 
 
@@ -342,7 +347,7 @@ def test_labels_never_overlap_each_other_or_the_vectors(name):
         boxes, segments = label_boxes(root), vector_segments(root)
         assert len(boxes) >= 2 and segments
         for i, (text, box) in enumerate(boxes):
-            assert 0 <= box[0] and box[2] <= width and 0 <= box[1] and box[3] <= height, \
+            assert box[0] >= 0 and box[2] <= width and box[1] >= 0 and box[3] <= height, \
                 f"{name} at {params}: {text!r} leaves the picture"
             for other, other_box in boxes[i + 1:]:
                 assert not boxes_overlap(box, other_box), f"{name} at {params}: {text!r} overlaps {other!r}"

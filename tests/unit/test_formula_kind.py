@@ -6,9 +6,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from workbook.expr import InvalidAnswer
 from workbook.answer_kinds.expression.mark import equivalent
-from workbook.expr import parse_formula
+from workbook.expr import InvalidAnswer, parse_formula
 
 ARM = ("theta1", "theta2", "L1", "L2")
 ARM_DOMAIN = {"theta1": (-math.pi, math.pi), "theta2": (-math.pi, math.pi), "L1": (0.2, 3.0), "L2": (0.2, 3.0)}

@@ -41,7 +41,7 @@ def rest(tmp_path, monkeypatch):
 def test_an_import_of_the_rest_fetches_it_once(rest):
     finder, calls = rest
     assert not finder.mounted
-    import wbtest_rest_mod  # noqa: F401  (found by the finder)
+    import wbtest_rest_mod
     from wbtest_rest_pkg import sub
 
     assert wbtest_rest_mod.VALUE == 42 and sub.NAME == "sub"
@@ -58,7 +58,7 @@ def test_other_misses_do_not_fetch(rest):
 def test_a_failed_fetch_is_an_import_error_with_a_reason(rest):
     finder, _ = rest
     finder.fetch = lambda url: (_ for _ in ()).throw(OSError("offline"))
-    with pytest.raises(ImportError, match="could not be loaded .*offline"):
+    with pytest.raises(ImportError, match=r"could not be loaded .*offline"):
         import wbtest_rest_mod  # noqa: F401
     assert not finder.mounted
 

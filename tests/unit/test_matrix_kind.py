@@ -6,7 +6,8 @@ import pytest
 
 from workbook.answer_kinds.matrix import matrix
 from workbook.answer_kinds.matrix.slips import whole_matrix_slips
-from workbook.expr import InvalidAnswer, split_matrix as parse_pasted
+from workbook.expr import InvalidAnswer
+from workbook.expr import split_matrix as parse_pasted
 
 
 def parse_entries(grid, shape):

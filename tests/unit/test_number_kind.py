@@ -62,13 +62,15 @@ def test_any_printed_number_is_accepted_at_every_rounding_to_three_figures_or_mo
 @pytest.mark.parametrize("typed", [
     r"\frac{\sqrt{3}}{2}", r"\dfrac{\sqrt3}{2}", r"\cos(\pi/6)", r"\cos 30^\circ", r"\sin\left(\frac{\pi}{3}\right)",
     r"$\frac{\sqrt{3}}{2}$", r"\tfrac12\sqrt{3}", r"\sqrt{3} \cdot 0.5", r"\sqrt{3}\times\frac{1}{2}",
-    "√3/2", "0.866", "０.８６６", "cos(30°)", "cos 30º", "x′ = 0.866", "x' = √3 / 2", r"x' \approx 0.866",
+    "√3/2", "0.866", "０.８６６", "cos(30°)", "cos 30º", "x′ = 0.866", "x' = √3 / 2", r"x' \approx 0.866",  # noqa: RUF001 (meant)
 ])
 def test_the_notations_a_learner_types_or_copies_from_the_page(typed):
     assert answer(math.sqrt(3) / 2).check(typed).status == "correct", typed
 
 
-@pytest.mark.parametrize("typed", ["−0.5", "‐0.5", "–0.5", "－0.5", "-1/2", "−1 ÷ 2", "-2 × 0.25", "-2 · 0.25", "-2∙0.25"])
+@pytest.mark.parametrize("typed", [
+    "−0.5", "‐0.5", "–0.5", "－0.5",  # noqa: RUF001 (the dashes a learner may paste, meant)
+    "-1/2", "−1 ÷ 2", "-2 × 0.25", "-2 · 0.25", "-2∙0.25"])
 def test_the_minus_and_times_families(typed):
     assert answer(-0.5).check(typed).status == "correct", typed
 

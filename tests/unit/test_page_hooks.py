@@ -8,10 +8,11 @@ from __future__ import annotations
 import base64
 import hashlib
 
-import a11y  # docs/hooks/a11y.py
-import csp  # docs/hooks/csp.py
 import pytest
 from mkdocs.exceptions import PluginError
+
+import a11y  # docs/hooks/a11y.py
+import csp  # docs/hooks/csp.py
 
 THEME_HTML = (
     '<div data-md-component="skip"><a href="#x" class="md-skip">Skip to content</a></div>'

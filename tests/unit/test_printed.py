@@ -28,10 +28,9 @@ from pathlib import Path
 
 import pytest
 
-from workbook import bank
-
 from exercise_text import load_all  # docs/hooks/exercise_text.py
-from printed_math import check_formula, computed, math_of, relations, read_side
+from printed_math import check_formula, computed, math_of, read_side, relations
+from workbook import bank
 
 ROOT = Path(__file__).resolve().parents[2]
 SEEDS = range(1000)

@@ -10,8 +10,7 @@ from workbook.reference.arm import cos_elbow, inverse_kinematics_2link
 from workbook.reference.ekf import ekf_update, ekf_update_matrix, kalman_gain, measurement_jacobian
 from workbook.reference.linalg import identity, inverse, matmul, scale
 from workbook.reference.pid import d_term, pid_step, simulate_step_response, step_metrics
-from workbook.reference.rotation3d import (DEFAULT_AXIS, quat_axis_angle, quat_from_axis_angle,
-                                           quat_from_matrix, rx)
+from workbook.reference.rotation3d import DEFAULT_AXIS, quat_axis_angle, quat_from_axis_angle, quat_from_matrix, rx
 
 
 @pytest.mark.parametrize("angle", [1e-7, 1e-8, 1e-10, 1e-15, 1e-300])

@@ -65,7 +65,7 @@ def well_formed(fig: dict) -> None:
 
 def test_every_build_has_a_run_figure():
     assert {"0.5", "4.5", "6.5", "8.4"} <= set(IDS)
-    assert IDS == [ex.id for ex in bank.all_exercises() if ex.kind == "build"]
+    assert [ex.id for ex in bank.all_exercises() if ex.kind == "build"] == IDS
     assert set(runs.names()) >= {ex.run_figure for ex in BUILDS}
 
 

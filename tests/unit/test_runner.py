@@ -1,10 +1,8 @@
 """The Build test runner: what a learner sees for each kind of code."""
 
-import numpy as np  # noqa: F401  (available natively; the worker loads it on demand)
-
 import json
 
-import pytest
+import numpy as np  # noqa: F401  (available natively; the worker loads it on demand)
 
 from workbook import bank
 from workbook.api import handle

@@ -21,11 +21,10 @@ from pathlib import Path
 
 import pytest
 
-from workbook import bank, chains, steps
-from workbook.api import handle
-
 from exercise_text import load_all  # docs/hooks/exercise_text.py
 from moved import moved
+from workbook import bank, chains, steps
+from workbook.api import handle
 
 ROOT = Path(__file__).resolve().parents[2]
 DRAWS = 200

@@ -22,12 +22,11 @@ import random
 
 import pytest
 
+from moved import moved
 from workbook import bank, chains, steps
 from workbook.api import handle
 from workbook.bank import ch3_whole_matrices
 from workbook.number_format import bmatrix
-
-from moved import moved
 
 DRAWS = 200
 
@@ -121,10 +120,10 @@ def test_a_wrong_step_is_carried_into_every_later_step_and_the_answer(ex_id):
     ex = bank.get(ex_id)
     rng = random.Random(f"hard steps {ex_id}")
     names = STEPS[ex_id]
-    carried = {name: 0 for name in names}
+    carried = dict.fromkeys(names, 0)
     for seed in range(DRAWS):
         v = ex.variant(seed)
-        printed, _ = EXPECTED[ex_id](v, {})
+        _printed, _ = EXPECTED[ex_id](v, {})
         for i, name in enumerate(names):
             kind = v.step_answers[name]
             wrong = chains.value_of(kind.reader.read(kind, kind.typed(moved(kind.key, rng))))  # as typed, and read back

@@ -16,9 +16,9 @@ import pytest
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[2] / "pyodide_pkg"))
 
-from workbook import bank  # noqa: E402
-from workbook.kinds.derive import Derive  # noqa: E402
-from workbook.number_format import fmt  # noqa: E402
+from workbook import bank
+from workbook.kinds.derive import Derive
+from workbook.number_format import fmt
 
 VARIANTS = range(0, 40, 3)
 

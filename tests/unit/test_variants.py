@@ -18,6 +18,7 @@ from pathlib import Path
 
 import pytest
 
+from exercise_text import load_all  # docs/hooks/exercise_text.py
 from workbook import api, bank
 from workbook.answer_kinds.number.mark import agrees_with
 from workbook.expr import parse_quantity
@@ -25,8 +26,6 @@ from workbook.kinds.derive import Derive
 from workbook.number_format import fmt
 from workbook.tolerance import agrees, clean
 from workbook.variants import Choice, Param, VariantError, check_seed, fill, placeholders
-
-from exercise_text import load_all  # docs/hooks/exercise_text.py
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "golden"))
@@ -121,9 +120,9 @@ def test_a_thousand_draws_are_well_posed(ex: Derive):
                 assert "{{" + q.name + "}}" in TEXTS[ex.id].prompt + TEXTS[ex.id].title or \
                     v.values[q.name] in v.label_html(), f"{ex.id}: the statement does not show {q.name}"
             assert v.values[q.name] in shown, f"{ex.id} seed {seed}: {q.name} = {value} is not in the statement"
-        verdict = v.check(v.answer.typed(v.answer.key) if not v.answer_kind == 'expression' else v.answer.answer_text)
+        verdict = v.check(v.answer.typed(v.answer.key) if v.answer_kind != 'expression' else v.answer.answer_text)
         assert verdict.status == "correct", (ex.id, seed, verdict)
-        assert v.check(v.worked_text() if not v.answer_kind == 'matrix' else v.answer.typed(v.answer.cleaned)).status == "correct"
+        assert v.check(v.worked_text() if v.answer_kind != 'matrix' else v.answer.typed(v.answer.cleaned)).status == "correct"
         _printed_is_key(v)
         _slips_apart(v)
         filled = TEXTS[ex.id].filled(v.values)

@@ -10,6 +10,7 @@ export const MAX_VARIANT = 999_999;
 /** `text` as the hash reads it: NFC, runs of whitespace as one space, trimmed (`fold`: A-Z as a-z). */
 export function tidy(text, { fold = false } = {}) {
   // Python's str.split/\s and JavaScript's \s differ on a few characters: this is the one list both use.
+  // eslint-disable-next-line no-control-regex -- U+001C to U+001F are white space to Python's str.split
   const out = String(text).normalize("NFC").replace(/[\t\n\v\f\r \u001c-\u001f\u0085\u00a0\u1680\u2000-\u200a\u2028\u2029\u202f\u205f\u3000]+/gu, " ").replace(/^ +| +$/g, "");
   return fold ? out.replace(/[A-Z]/g, (c) => c.toLowerCase()) : out;
 }

@@ -22,7 +22,7 @@
 // `instantiateStreaming(fetch(wasm))`; the `stdLibURL` option and where the
 // standard library is mounted; pyodide.asm.js loaded by importScripts.
 // docs/performance.md has the measurements behind each step.
-/* global loadPyodide, importScripts, BOOT_SIZES */
+/* global loadPyodide, BOOT_SIZES */
 import internals from "./pyodide-internals.json";
 
 export const PYODIDE_INTERNALS = Object.freeze(internals.internals.map((entry) => entry.name));

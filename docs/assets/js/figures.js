@@ -5,7 +5,7 @@
 // Before the runtime is ready the static first frame stays on screen and the
 // request waits in the runtime's queue.
 
-import { ATTR, ROLE, byRole, findRole, findRoles } from "./contract.js";
+import { ATTR, ROLE, findRole, findRoles } from "./contract.js";
 
 const LIMIT_MS = 10_000;
 

@@ -5,7 +5,7 @@ An answer kind (``number``, ``matrix``, ``expression``) is a package of its own:
 (text to values, through :mod:`workbook.expr`), ``mark.py`` (values to a
 verdict, slips included) and ``show.py`` (the worked answer, the Answer line's
 TeX, the label and the input's HTML). A Derive exercise holds one
-(``answer=number(label=...)``); the bank writes the kind's factory, and the
+(``spec=number(label=...)``); the bank writes the kind's factory, and the
 exercise builds it, so an option the kind does not have fails the build with
 the exercise's id.
 
@@ -21,9 +21,10 @@ ValueError: exercise 0.1: an answer of kind '' has no option 'periodic' (its opt
 from __future__ import annotations
 
 import dataclasses
+from collections.abc import Mapping
 from dataclasses import dataclass
 from types import ModuleType
-from typing import Any, ClassVar, Mapping
+from typing import Any, ClassVar
 
 from ..verdict import GradingError, Verdict
 

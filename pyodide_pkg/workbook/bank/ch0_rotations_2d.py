@@ -2,10 +2,10 @@
 
 import math
 
-from ..kinds.build import Build
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..kinds.build import Build
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, relation, shown
@@ -105,13 +105,13 @@ EXERCISES = (
     Derive(
         id="0.1",
         title="Rotate a point by 90°",
-        answer=number(label="y-coordinate of the rotated point"),
+        spec=number(label="y-coordinate of the rotated point"),
         vary=Vary(_quarter_turn, Param("x", 3, -5, 5, 1, avoid=(0,)), Param("y", 0, -5, 5, 1)),
     ),
     Derive(
         id="0.2",
         title="Compose two rotations",
-        answer=number(),
+        spec=number(),
         vary=Vary(_composed_entry, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°")),
     ),
     Trace(
@@ -132,7 +132,7 @@ EXERCISES = (
     Derive(
         id="0.4",
         title="Rotate (1, 1) by 45°",
-        answer=number(),
+        spec=number(),
         vary=Vary(_diagonal_point, Param("a", 1, 1, 5, 1), Choice("axis", "x", ("x", "y"))),
     ),
     Build(
@@ -162,13 +162,13 @@ EXERCISES = (
     Derive(
         id="0.6",
         title="The determinant of a rotation",
-        answer=number(),
+        spec=number(),
         vary=Vary(_rotation_det, Param("theta", 37, 5, 355, 5, unit="°", avoid=(90, 180, 270))),
     ),
     Derive(
         id="0.7",
         title="The whole product R(30°)·R(60°)",
-        answer=matrix(),
+        spec=matrix(),
         vary=Vary(_whole_product, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°"),
                   valid=lambda p: p["a"] + p["b"] in TURNS),
     ),

@@ -2,18 +2,18 @@
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
 from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
 from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, relation_all, shown, signed
 from ..reference.linalg import matvec, transpose
-from ..reference.transform2d import apply, chain, inverse_transform, transform2d
+from ..reference.transform2d import apply, chain, transform2d
 from ..steps import Step as WorkStep
 from ..variants import Param, Vary
-from .. import chains
 from . import column, grid
 from .checks import apart, kept_slips
 
@@ -59,6 +59,7 @@ def _turn_and_shift(p):
     wx, wy = apply(transform2d(tx, ty, math.pi / 2), d, 0)
     turned = apply(transform2d(0, 0, math.pi / 2), d, 0)
     shifted = apply(transform2d(tx, ty, 0), d, 0)
+    left_out: tuple[Slip, ...]
     if not apart(turned[1], shifted[1]):
         left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives y = {fmt(turned[1])}, "
                                     f"and shifting it by ({fmt(tx)}, {fmt(ty)}) without turning also gives "
@@ -187,7 +188,7 @@ EXERCISES = (
     Derive(
         id="1.1",
         title="Pure translation",
-        answer=number(label="x-coordinate in the world frame"),
+        spec=number(label="x-coordinate in the world frame"),
         vary=Vary(_pure_translation, Param("tx", 3, -5, 5, 1, avoid=(0,)), Param("ty", 4, -5, 5, 1),
                   Param("px", 1, -5, 5, 1, avoid=(0,)), Param("py", 0, -5, 5, 1),
                   valid=lambda p: p["px"] != p["tx"]),
@@ -195,7 +196,7 @@ EXERCISES = (
     Derive(
         id="1.2",
         title="Rotation plus translation",
-        answer=number(label="y-coordinate in the world frame"),
+        spec=number(label="y-coordinate in the world frame"),
         vary=Vary(_turn_and_shift, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1, avoid=(0,)),
                   Param("d", 1, 0.5, 3, 0.5, unit=" m"),
                   valid=lambda p: p["ty"] != 2 * p["d"]),
@@ -203,7 +204,7 @@ EXERCISES = (
     Derive(
         id="1.3",
         title="Chain two transforms",
-        answer=number(label="x-coordinate in the world frame"),
+        spec=number(label="x-coordinate in the world frame"),
         vary=Vary(_tool_point, Param("bx", 0, -3, 3, 1), Param("by", 1, -3, 3, 1), Param("ux", 2, -3, 3, 1),
                   Param("uy", 0, -3, 3, 1), Param("d", 1, 1, 3, 1), valid=_tool_point_ok),
     ),
@@ -239,7 +240,7 @@ EXERCISES = (
     Derive(
         id="1.6",
         title="The inverse transform, whole",
-        answer=matrix(label="T⁻¹"),
+        spec=matrix(label="T⁻¹"),
         vary=Vary(_inverse_pose, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1),
                   Param("theta", 90, -175, 180, 5, unit="°"), valid=_inverse_pose_ok),
         steps=(WorkStep("RT", "Rᵀ", matrix(label="Rᵀ, the rotation block of T⁻¹")),

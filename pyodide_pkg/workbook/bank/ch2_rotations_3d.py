@@ -3,8 +3,8 @@
 import math
 
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, relation, relation_all, shown
@@ -156,7 +156,7 @@ EXERCISES = (
     Derive(
         id="2.1",
         title="Yaw by 90°",
-        answer=number(),
+        spec=number(),
         vary=Vary(_yaw_x_axis, Param("gamma", 90, 5, 175, 5, unit="°")),
     ),
     Trace(
@@ -182,7 +182,7 @@ EXERCISES = (
     Derive(
         id="2.3",
         title="Quaternion for 90° about z",
-        answer=number(
+        spec=number(
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
             label="w",
         ),
@@ -192,27 +192,27 @@ EXERCISES = (
     Derive(
         id="2.4",
         title="Quaternion for 180° about x",
-        answer=number(label="z"),
+        spec=number(label="z"),
         vary=Vary(_half_turn_component, Choice("axis", "x", ("x", "y", "z")), Choice("comp", "z", ("x", "y", "z")),
                   valid=lambda p: p["comp"] != p["axis"]),
     ),
     Derive(
         id="2.5",
         title="The norm of a quaternion",
-        answer=number(label="‖q‖"),
+        spec=number(label="‖q‖"),
         vary=Vary(_quat_norm, *(Param(c, 0.5, -0.5, 0.5, 1) for c in "wxyz"),
                   valid=lambda p: not math.isclose(sum(p.values()), 1.0)),
     ),
     Derive(
         id="2.6",
         title="Yaw a whole vector",
-        answer=matrix(names=("x", "y", "z")),
+        spec=matrix(names=("x", "y", "z")),
         vary=Vary(_yaw_vector, *(Param(c, d, -5, 5, 1, avoid=(0,)) for c, d in zip("xyz", (2, 1, 3)))),
     ),
     Derive(
         id="2.7",
         title="The whole quaternion for 90° about z",
-        answer=matrix(
+        spec=matrix(
             label="q = (w, x, y, z)ᵀ",
             names=("w", "x", "y", "z"),
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",

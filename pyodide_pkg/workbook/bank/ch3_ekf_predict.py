@@ -2,26 +2,26 @@
 
 import math
 
-from ..kinds.debug import Debug
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
-from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..kinds.debug import Debug
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import bmatrix, fmt, pi_frac, relation
-from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
+from ..reference.ekf import ekf_predict, motion_jacobian, motion_model  # noqa: F401 (ekf_predict: the doctests)
 from ..reference.linalg import add, matmul, transpose
+from ..steps import Step
 from ..tolerance import clean
 from ..variants import Choice, Param, Vary
-from .. import chains
-from ..steps import Step
 from . import grid
 from .checks import apart, slips_apart
 from .heading_column import heading_column_formula
 
-_P = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
-_Q = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
+_P: list[list[float]] = [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]]  # exercise 3.4's P and Q (variant 0), kept by 3.8
+_Q: list[list[float]] = [[0.01, 0, 0], [0, 0.01, 0], [0, 0, 0.001]]
 _EAST, _NORTH = 0.0, math.pi / 2
 
 
@@ -226,7 +226,7 @@ EXERCISES = (
     Derive(
         id="3.1",
         title="Predict the new position",
-        answer=number(label="x", unit="m"),
+        spec=number(label="x", unit="m"),
         vary=Vary(_drive_east, Param("x0", 0, -3, 3, 1, unit=" m"), Param("y0", 0, -3, 3, 1, unit=" m"),
                   Param("v", 1, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
                   valid=_drive_east_ok),
@@ -234,7 +234,7 @@ EXERCISES = (
     Derive(
         id="3.2",
         title="Predict at a heading",
-        answer=number(label="y", unit="m"),
+        spec=number(label="y", unit="m"),
         vary=Vary(_drive_at_heading, Param("theta", 45, -175, 175, 5, unit="°", avoid=(0, 90, -90)),
                   Param("v", 2, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)),
                   valid=_drive_at_heading_ok),
@@ -242,14 +242,14 @@ EXERCISES = (
     Derive(
         id="3.3",
         title="An entry of the Jacobian F",
-        answer=number(label="F(1,3)"),
+        spec=number(label="F(1,3)"),
         vary=Vary(_north_f13, Param("v", 1, 0.5, 3, 0.5, unit=" m/s"),
                   Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_f13_ok),
     ),
     Derive(
         id="3.4",
         title="Predict the covariance",
-        answer=number(),
+        spec=number(),
         vary=Vary(_covariance_entry, Param("v", 1, 0.5, 2, 0.5, unit=" m/s"), Param("dt", 1, 0.2, 2, 0.2, unit=" s"),
                   Param("p11", 1, 0.5, 2, 0.1), Param("p22", 1, 0.5, 2, 0.1), Param("p33", 0.1, 0.01, 0.2, 0.01),
                   Param("q11", 0.01, 0.01, 0.05, 0.01), Param("q22", 0.01, 0.01, 0.05, 0.01),
@@ -310,7 +310,7 @@ EXERCISES = (
     Derive(
         id="3.9",
         title="F(1,3) as a formula",
-        answer=formula(
+        spec=formula(
             variables=("v", "theta", "dt"),
             domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},
         ),

@@ -7,27 +7,36 @@ of 3.7 whose printed F it uses) and takes that set's v and dt, so the chain hold
 """
 
 import math
-from functools import lru_cache
+from functools import cache
 
+from .. import chains
 from ..answer_kinds.base import Slip
 from ..answer_kinds.matrix import matrix
+from ..chains import Uses
 from ..kinds.derive import Derive
 from ..number_format import bmatrix, fmt
-from ..reference.ekf import ekf_predict, motion_jacobian, motion_model
-from ..reference.linalg import add, matmul, sub, identity, transpose
+from ..reference.ekf import motion_jacobian, motion_model
+from ..reference.linalg import add, identity, matmul, sub, transpose
 from ..steps import Step
 from ..variants import Choice, Param, Vary
-from .. import chains
-from ..chains import Uses
 from . import column, grid
-from .checks import kept_slips, slips_apart
 from .ch3_ekf_predict import (  # the chapter's shared numbers, and the steps F P, F P Fᵀ (3.4's too)
-    _EAST, _NORTH, _P, _Q, PUSH_STEPS, _heading_gain, _metres, _pushed_forward, push_steps)
+    _EAST,
+    _NORTH,
+    _P,
+    _Q,
+    PUSH_STEPS,
+    _heading_gain,
+    _metres,
+    _pushed_forward,
+    push_steps,
+)
+from .checks import kept_slips, slips_apart
 
 _SETS_37 = tuple(range(400))  # the sets of numbers (variants) of 3.7 that 3.8 draws from; 0 is the workbook's
 
 
-@lru_cache(maxsize=None)
+@cache
 def _numbers_of_37(n: int) -> tuple[float, float]:
     """(v, dt) of exercise 3.7's variant ``n``: its generator's first well-posed draw for that
     variant (tests/unit/test_steps_bank.py checks it is the draw 3.7 shows, for every set 3.8 uses)."""
@@ -165,7 +174,7 @@ EXERCISES = (
     Derive(
         id="3.7",
         title="The whole Jacobian F facing north",
-        answer=matrix(label="F"),
+        spec=matrix(label="F"),
         vary=_VARY_37,
         steps=(Step("move", "the move (Δx, Δy)", matrix(label="the move (Δx, Δy) = (v cos θ dt, v sin θ dt)", unit="m")),
                Step("col", "F's θ column (F₁₃, F₂₃, F₃₃)", matrix(label="the θ column of F: F(1,3), F(2,3), F(3,3)"))),
@@ -173,7 +182,7 @@ EXERCISES = (
     Derive(
         id="3.8",
         title="The whole predicted covariance",
-        answer=matrix(label="P⁻ = F P Fᵀ + Q"),
+        spec=matrix(label="P⁻ = F P Fᵀ + Q"),
         vary=Vary(_predicted_covariance, Choice("set37", 0, _SETS_37), valid=_predicted_covariance_ok),
         uses=(Uses("3.7", "F", "F", variant=lambda p: p["set37"]),),
         steps=PUSH_STEPS,

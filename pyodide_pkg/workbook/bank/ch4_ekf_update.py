@@ -2,19 +2,19 @@
 
 import math
 
-from ..kinds.build import Build
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..chains import Uses
+from ..kinds.build import Build
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fixed, fmt, paren, relation, shown
 from ..reference.domain import bearing_of
-from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing
-from ..variants import Param, Vary
-from .. import chains
-from ..chains import Uses
+from ..reference.ekf import ekf_update, innovation, range_bearing
 from ..steps import Step
+from ..variants import Param, Vary
 from . import column
 from .checks import apart, kept_slips
 
@@ -224,14 +224,14 @@ EXERCISES = (
     Derive(
         id="4.1",
         title="Predicted range",
-        answer=number(label="r", unit="m"),
+        spec=number(label="r", unit="m"),
         vary=Vary(_predicted_range, *_SIGHTING, valid=_off_both_axes),
         steps=(OFFSET, SQUARED),
     ),
     Derive(
         id="4.2",
         title="Predicted bearing",
-        answer=number(label="φ", unit="°", angle="deg", periodic=True),
+        spec=number(label="φ", unit="°", angle="deg", periodic=True),
         vary=Vary(_predicted_bearing, *_SIGHTING,
                   valid=lambda p: _off_both_axes(p) and p["lx"] - p["x"] != p["ly"] - p["y"]),
         steps=(OFFSET, ANGLE),
@@ -239,7 +239,7 @@ EXERCISES = (
     Derive(
         id="4.3",
         title="An entry of H",
-        answer=number(label="H(1,1)"),
+        spec=number(label="H(1,1)"),
         vary=Vary(_range_slope, *_SIGHTING,
                   valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(p["lx"] - p["x"]) != abs(p["ly"] - p["y"])),
         steps=(OFFSET, SLOPE),
@@ -247,7 +247,7 @@ EXERCISES = (
     Derive(
         id="4.4",
         title="The innovation",
-        answer=number(label="range innovation", unit="m"),
+        spec=number(label="range innovation", unit="m"),
         vary=Vary(_range_innovation,
                   Param("hr", 5, 3, 7, 0.1, unit=" m"), Param("hphi", _H_PRED[1], 0.2273, 1.4273, 0.1, unit=" rad"),
                   Param("zr", 4.8, 2.5, 7.5, 0.1, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),

@@ -4,19 +4,26 @@ its position columns as a formula (4.8)."""
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
+from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..number_format import fmt, relation, relation_all
 from ..reference.ekf import measurement_jacobian
 from ..steps import Step
 from ..variants import Choice, Vary
-from .. import chains
 from . import grid
-from .checks import kept_slips
 from .ch4_ekf_update import (  # the chapter's sighting and its first step
-    OFFSET, _LANDMARK, _SIGHTING, _ahead, _jacobian_of, _offset, _sighting)
+    _LANDMARK,
+    _SIGHTING,
+    OFFSET,
+    _ahead,
+    _jacobian_of,
+    _offset,
+    _sighting,
+)
+from .checks import kept_slips
 
 BEARING_ROW = Step("bearing", "H's bearing row (∂φ/∂x, ∂φ/∂y, ∂φ/∂θ)",
                    matrix(label="the bearing row of H: ∂φ/∂x, ∂φ/∂y, ∂φ/∂θ"))
@@ -173,14 +180,14 @@ EXERCISES = (
     Derive(
         id="4.7",
         title="The whole measurement Jacobian H",
-        answer=matrix(label="H"),
+        spec=matrix(label="H"),
         vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
         steps=(OFFSET, BEARING_ROW),
     ),
     Derive(
         id="4.8",
         title="H(2,1) as a formula",
-        answer=formula(variables=("dx", "dy"), domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)}),
+        spec=formula(variables=("dx", "dy"), domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)}),
         vary=Vary(_jacobian_entry_formula, Choice("entry", "2,1", ("1,1", "1,2", "2,1", "2,2"))),
     ),
 )

@@ -2,12 +2,13 @@
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
-from ..number_format import bmatrix, fmt, paren, relation, relation_all
+from ..number_format import fmt, paren, relation, relation_all
 from ..reference.linalg import det2
 from ..reference.pose_graph import (
     edge_error,
@@ -18,9 +19,8 @@ from ..reference.pose_graph import (
     pose_graph_variables,
     relative_pose,
 )
-from ..variants import Param, Vary
-from .. import chains
 from ..steps import Step
+from ..variants import Param, Vary
 from . import column, grid
 from .checks import apart
 
@@ -28,9 +28,9 @@ _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
 # Exercise 5.6: pose 1 sits at (2, 1) facing north; the prose turns the motion with R(90°).
 _XI = (2.0, 1.0, math.pi / 2)
-_WORDS = ("zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen "
-          "sixteen seventeen eighteen nineteen").split()
-_TENS = "twenty thirty forty fifty sixty seventy eighty ninety".split()
+_WORDS = ["zero", "one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "eleven", "twelve",
+          "thirteen", "fourteen", "fifteen", "sixteen", "seventeen", "eighteen", "nineteen"]
+_TENS = ["twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
 
 
 def _times(r: float) -> str:
@@ -273,13 +273,13 @@ EXERCISES = (
     Derive(
         id="5.1",
         title="Count the unknowns",
-        answer=number(label="number of optimisation variables", unit="variables"),
+        spec=number(label="number of optimisation variables", unit="variables"),
         vary=Vary(_pose_count, Param("n", 100, 10, 500, 10)),
     ),
     Derive(
         id="5.2",
         title="Odometry edge error",
-        answer=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
+        spec=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
         vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
                   Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"), Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
         steps=(Step("d", "x₂ − x₁", matrix(label="x₂ − x₁", names=("dx|x", "dy|y", "dθ|θ"), units=("m", "m", "rad"))),
@@ -289,7 +289,7 @@ EXERCISES = (
     Derive(
         id="5.3",
         title="Information matrix",
-        answer=number(label="Ω(1,1), the (1,1) entry of Σ⁻¹"),
+        spec=number(label="Ω(1,1), the (1,1) entry of Σ⁻¹"),
         vary=Vary(_information_diagonal, Param("s", 0.01, 0.01, 0.05, 0.01, avoid=(0.03,)),
                   Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,))),
     ),
@@ -315,14 +315,14 @@ EXERCISES = (
     Derive(
         id="5.5",
         title="Size of the Gauss–Newton system",
-        answer=number(label="rows (= columns) of H"),
+        spec=number(label="rows (= columns) of H"),
         vary=Vary(_hessian_size, Param("n", 1000, 500, 3000, 100), Param("m", 500, 100, 1000, 100),
                   valid=_distinct_sizes),
     ),
     Derive(
         id="5.6",
         title="Edge error from a turned pose",
-        answer=matrix(label="e₁₂ = (eₓ, e_y, e_θ)ᵀ", names=("e_x|x", "e_y|y", "e_θ|θ"), units=("m", "m", "rad")),
+        spec=matrix(label="e₁₂ = (eₓ, e_y, e_θ)ᵀ", names=("e_x|x", "e_y|y", "e_θ|θ"), units=("m", "m", "rad")),
         vary=Vary(_turned_edge_error, Param("x2", 1.95, 1.9, 2.1, 0.05, unit=" m"),
                   Param("y2", 2.1, 1.7, 2.4, 0.1, unit=" m"), Param("t2", 0.02, 0.01, 0.05, 0.01, unit=" rad")),
         steps=(Step("d", "x₂ − x₁ in world axes", matrix(label="(x₂ − x₁, y₂ − y₁)", names=("dx", "dy"), unit="m")),
@@ -332,7 +332,7 @@ EXERCISES = (
     Derive(
         id="5.7",
         title="Information from a correlated covariance",
-        answer=matrix(label="Ω = Σ⁻¹"),
+        spec=matrix(label="Ω = Σ⁻¹"),
         vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.01, avoid=(0.03,)),
                   Param("b", 0.01, 0.005, 0.045, 0.005), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
                   valid=_two_places_suffice),

@@ -6,10 +6,11 @@ The arm's first step, the direction of link 2 (LINK2_DIRECTION with its slips), 
 
 import math
 
-from ..kinds.build import Build
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.expression import formula
+from ..answer_kinds.number import number
+from ..kinds.build import Build
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import approx, fmt, paren, prose, relation, shown, signed
@@ -20,9 +21,8 @@ from ..reference.arm import (
     is_reachable,
 )
 from ..reference.domain import Undefined
-from ..variants import Choice, Param, Vary
-from .. import chains
 from ..steps import Step
+from ..variants import Choice, Param, Vary
 from .checks import apart, kept_slips, slips_apart
 
 _T1, _T2 = math.radians(30), math.radians(45)
@@ -242,13 +242,13 @@ EXERCISES = (
     Derive(
         id="6.1",
         title="FK of the straight arm",
-        answer=number(label="x-coordinate of the end effector", unit="m"),
+        spec=number(label="x-coordinate of the end effector", unit="m"),
         vary=Vary(_straight_reach, Param("L", 1, 0.5, 2.5, 0.1, unit=" m")),
     ),
     Derive(
         id="6.2",
         title="FK of a bent arm",
-        answer=number(label="x-coordinate of the end effector", unit="m"),
+        spec=number(label="x-coordinate of the end effector", unit="m"),
         vary=Vary(_bent_reach, Param("t1", 30, 5, 85, 5, unit="°"), Param("t2", 45, 5, 120, 5, unit="°"),
                   valid=_bent_reach_well_posed),
         steps=(LINK2_DIRECTION,
@@ -257,7 +257,7 @@ EXERCISES = (
     Derive(
         id="6.3",
         title="IK: the elbow angle",
-        answer=number(label="θ2 (elbow-down, θ2 ≥ 0)", unit="°", angle="deg"),
+        spec=number(label="θ2 (elbow-down, θ2 ≥ 0)", unit="°", angle="deg"),
         vary=Vary(_diagonal_ik, Param("x", 1, -1, 1, 2), Param("y", 1, -1, 1, 2),
                   Choice("asked", "θ2", ("θ2", "θ1")), Choice("branch", "elbow-down", ("elbow-down", "elbow-up")),
                   valid=_elbow_as_defined),
@@ -313,7 +313,7 @@ EXERCISES = (
     Derive(
         id="6.6",
         title="FK as a formula",
-        answer=formula(
+        spec=formula(
             variables=("theta1", "theta2", "L1", "L2"),
             domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
         ),

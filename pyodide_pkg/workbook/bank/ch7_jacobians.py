@@ -2,11 +2,13 @@
 
 import math
 
-from ..kinds.debug import Debug
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
-from ..answer_kinds.matrix import matrix
 from ..answer_kinds.expression import formula
+from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..chains import Uses
+from ..kinds.debug import Debug
 from ..kinds.derive import Derive
 from ..number_format import approx, bmatrix, fmt, paren, prose, relation, shown, signed
 from ..reference.arm import (
@@ -17,16 +19,13 @@ from ..reference.arm import (
     most_manipulable_theta2,
     velocity_ratio,
 )
-from ..variants import Choice, Param, Vary
-from .. import chains
-from ..chains import Uses
 from ..reference.linalg import add
 from ..steps import Step
-from . import column, grid
-from .checks import apart
-from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
-from .checks import kept_slips
 from ..tolerance import agrees, clean
+from ..variants import Choice, Param, Vary
+from . import column, grid
+from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
+from .checks import apart, kept_slips
 
 _BUGGY = """\
 import math
@@ -166,7 +165,7 @@ def _link2_direction(deg: float) -> str:
     ('at 210° from the x-axis, counter-clockwise', 'straight up', 'at 55° from the x-axis, counter-clockwise')
     """
     d = deg % 360
-    words = {90: "straight up", 270: "straight down", 0: "straight along the positive x-axis",
+    words: dict[float, str] = {90: "straight up", 270: "straight down", 0: "straight along the positive x-axis",
              180: "straight along the negative x-axis"}
     return words.get(d, f"at {fmt(d)}° from the x-axis, counter-clockwise")
 
@@ -333,7 +332,7 @@ EXERCISES = (
     Derive(
         id="7.1",
         title="Jacobian at θ = (0, 90°)",
-        answer=number(label="J(1,1)"),
+        spec=number(label="J(1,1)"),
         vary=Vary(_jacobian_entry, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("t1", 0, -45, 45, 5, unit="°")),
         steps=(LINK2_DIRECTION,
                Step("link2", "link 2's term", number(label="−L2·sin(θ1 + θ2), link 2's term"))),
@@ -341,20 +340,20 @@ EXERCISES = (
     Derive(
         id="7.2",
         title="End-effector velocity",
-        answer=number(label="ẋ", unit="m/s"),
+        spec=number(label="ẋ", unit="m/s"),
         vary=Vary(_tip_velocity, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))),
         uses=(Uses("7.1", "j11", "J(1,1)", variant=lambda p: 0 if p["L"] == 1 else None),),
     ),
     Derive(
         id="7.3",
         title="Spot the singularity",
-        answer=number(label="det J at θ2 = 0"),
+        spec=number(label="det J at θ2 = 0"),
         vary=Vary(_straight_arm_det, Param("L", 1, 0.5, 2.5, 0.1, unit=" m", avoid=(2,))),
     ),
     Derive(
         id="7.4",
         title="Best elbow angle",
-        answer=number(label="θ2 that maximises w = |det J|", unit="°", angle="deg"),
+        spec=number(label="θ2 that maximises w = |det J|", unit="°", angle="deg"),
         vary=Vary(_best_elbow, Param("L", 1, 0.5, 2, 0.1, unit=" m")),
     ),
     Debug(
@@ -382,7 +381,7 @@ EXERCISES = (
     Derive(
         id="7.6",
         title="The whole Jacobian at θ = (0, 90°)",
-        answer=matrix(label="J"),
+        spec=matrix(label="J"),
         vary=Vary(_unit_jacobian, Param("t1", 0, -60, 60, 5, unit="°"), Param("t2", 90, -150, 150, 5, unit="°", avoid=(0,)),
                   valid=_well_posed_jacobian),
         steps=(LINK2_DIRECTION,
@@ -391,7 +390,7 @@ EXERCISES = (
     Derive(
         id="7.7",
         title="J(1,1) as a formula",
-        answer=formula(
+        spec=formula(
             variables=("theta1", "theta2", "L1", "L2"),
             domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},
         ),

@@ -2,10 +2,10 @@
 
 import math
 
-from ..kinds.build import Build
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..kinds.build import Build
 from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, prose, signed
@@ -164,7 +164,7 @@ EXERCISES = (
     Derive(
         id="8.1",
         title="One step of P control",
-        answer=number(label="control output u"),
+        spec=number(label="control output u"),
         vary=Vary(_p_step, Param("target", 10, 0, 20, 1), Param("actual", 7, 0, 20, 1),
                   Param("Kp", 2, 0.5, 5, 0.5, avoid=(1,)),
                   valid=lambda p: p["target"] != p["actual"]),
@@ -172,7 +172,7 @@ EXERCISES = (
     Derive(
         id="8.2",
         title="PID over three steps",
-        answer=number(label="u[2]"),
+        spec=number(label="u[2]"),
         vary=Vary(_pid_output, *_THREE_STEPS, valid=_converging),
     ),
     Trace(
@@ -246,14 +246,14 @@ EXERCISES = (
     Derive(
         id="8.6",
         title="The sign of the D term",
-        answer=number(label="D term"),
+        spec=number(label="D term"),
         vary=Vary(_falling_error_d_term, Param("ek", 2, 0, 8, 1), Param("ep", 5, 1, 10, 1), Param("Kd", 1, 0.5, 3, 0.5),
                   Choice("dt", 0.1, tuple(_SPANS)), valid=_d_is_a_brake),
     ),
     Derive(
         id="8.7",
         title="The three terms, one by one",
-        answer=matrix(label="the terms at step 2", names=("P", "I", "D")),
+        spec=matrix(label="the terms at step 2", names=("P", "I", "D")),
         vary=Vary(_pid_terms, *_THREE_STEPS, valid=_falling_fast),
     ),
 )

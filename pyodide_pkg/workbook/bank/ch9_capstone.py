@@ -32,22 +32,21 @@ The values carried in are the answers printed before them (variant 0):
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
+from ..chains import Uses
 from ..kinds.derive import Derive
 from ..kinds.design import Design, Step
 from ..number_format import fmt, paren, relation, shown, signed
 from ..reference.ekf import ekf_update, kalman_gain, range_bearing
 from ..reference.pid import p_term
-from ..variants import Param, Vary
-from .. import chains
-from ..chains import Uses
 from ..steps import Step as WorkStep
+from ..variants import Param, Vary
 from . import column
-from .checks import slips_apart
-from .checks import kept_slips
 from .ch9_predict import PRED_FULL  # where the capstone's chain starts: 9.2's predicted pose
+from .checks import kept_slips, slips_apart
 
 _PRED_FULL = PRED_FULL                                 # 9.2's answer, printed (5.8660, 3.5, 0.6236)
 _PRED = tuple(shown(v) for v in _PRED_FULL)            # ... and carried as printed into 9.3 and 9.4
@@ -228,7 +227,7 @@ EXERCISES = (
     Derive(
         id="9.3",
         title="Predicted range to a landmark",
-        answer=number(label="predicted range r", unit="m"),
+        spec=number(label="predicted range r", unit="m"),
         vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1), valid=_range_well_posed),
         uses=(Uses("9.2", "x", "x′"),),
         steps=(WorkStep("d", "(Δx, Δy)", matrix(label="(Δx, Δy), from the robot to the landmark", unit="m")),
@@ -237,7 +236,7 @@ EXERCISES = (
     Derive(
         id="9.4",
         title="Fuse the measurement",
-        answer=number(label="updated x⁺", unit="m"),
+        spec=number(label="updated x⁺", unit="m"),
         vary=Vary(_fused, Param("P", _P, 0.2, 1, 0.1), Param("z", _Z, 4.8, 6.9, 0.1, unit=" m"),
                   Param("R", _R, 0.1, 0.9, 0.1), valid=_fused_well_posed),
         uses=(Uses("9.2", "x", "x′"),),
@@ -247,14 +246,14 @@ EXERCISES = (
     Derive(
         id="9.5",
         title="Updated covariance",
-        answer=number(label="P⁺ = (1 − K)·P"),
+        spec=number(label="P⁺ = (1 − K)·P"),
         vary=Vary(_updated_variance, Param("P", _P, 0.1, 0.9, 0.1), Param("K", _K, 0.1, 0.9, 0.05, avoid=(0.5,)),
                   valid=lambda p: slips_apart(_updated_variance(p))),
     ),
     Derive(
         id="9.6",
         title="Velocity command",
-        answer=number(label="commanded speed u", unit="m/s"),
+        spec=number(label="commanded speed u", unit="m/s"),
         vary=Vary(_command, Param("target", _TARGET, 6, 15, 1, unit=" m"), Param("Kp", _KP, 0.1, 1.5, 0.1, avoid=(1,)),
                   valid=lambda p: slips_apart(_command(p))),
         uses=(Uses("9.4", "xu", "x⁺"),),

@@ -7,9 +7,9 @@ noisy sightings and the current waypoint, and returns the estimated path.
 
 import math
 
-from ..kinds.build import Build
 from workbook_sandbox.values import show
 
+from ..kinds.build import Build
 from ..reference.navigation import nav_step
 
 _SOLUTION = '''import math

@@ -14,18 +14,17 @@ the heading at the start of the step (its x part for 9.2; Δx, Δy and the turn
 
 import math
 
+from .. import chains
 from ..answer_kinds.base import Slip
-from ..answer_kinds.number import number
 from ..answer_kinds.matrix import matrix
+from ..answer_kinds.number import number
 from ..kinds.derive import Derive
 from ..number_format import approx, fmt, pi_frac, relation, shown
 from ..reference.ekf import motion_jacobian, motion_model
-from ..variants import Choice, Param, Vary
-from .. import chains
 from ..steps import Step
+from ..variants import Choice, Param, Vary
 from . import column
-from .checks import slips_apart
-from .checks import kept_slips
+from .checks import kept_slips, slips_apart
 
 START = (5.0, 3.0, math.pi / 6)
 V, OMEGA, DT = 1.0, 0.1, 1.0
@@ -130,7 +129,7 @@ def _new_state(p, given=None):
     """9.8: the whole predicted state (x′, y′, θ′) of the motion model. Steps: v·dt, then the
     move (Δx, Δy, Δθ) it makes."""
     pred, turned, swapped, values = _predicted_pose(p)
-    deg, th = _heading(p)
+    _deg, th = _heading(p)
     vdt, driven = _driven(p, given)
     along = motion_model((0.0, 0.0, th), vdt, 0.0, 1.0)  # (v·dt·cos θ, v·dt·sin θ)
     turn = motion_model((0.0, 0.0, 0.0), 0.0, p["omega"], p["dt"])[2]  # ω·dt
@@ -183,21 +182,21 @@ EXERCISES = (
     Derive(
         id="9.2",
         title="The full predict step",
-        answer=number(label="x′ after one step", unit="m"),
+        spec=number(label="x′ after one step", unit="m"),
         vary=Vary(_new_x, *_pose_params(), valid=lambda p: slips_apart(_new_x(p))),
         steps=(_DRIVEN, Step("dx", "the move in x", number(label="v·dt·cos θ, the move in x", unit="m"))),
     ),
     Derive(
         id="9.7",
         title="An entry of the Jacobian F",
-        answer=number(label="F(2,3)"),
+        spec=number(label="F(2,3)"),
         vary=Vary(_jacobian_entry, Choice(*_HEADING), Param("v", V, 0.5, 2, 0.1, unit=" m/s"),
                   Param("dt", DT, 0.5, 2, 0.5, unit=" s"), valid=lambda p: slips_apart(_jacobian_entry(p))),
     ),
     Derive(
         id="9.8",
         title="The whole predicted state",
-        answer=matrix(label="predicted state", names=("x′", "y′", "θ′"), units=("m", "m", "rad")),
+        spec=matrix(label="predicted state", names=("x′", "y′", "θ′"), units=("m", "m", "rad")),
         vary=Vary(_new_state, *_pose_params(), valid=lambda p: slips_apart(_new_state(p))),
         steps=(_DRIVEN, Step("move", "the move (Δx, Δy, Δθ)",
                              matrix(label="the move (Δx, Δy, Δθ)", units=("m", "m", "rad")))),

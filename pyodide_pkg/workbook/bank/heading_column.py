@@ -11,6 +11,7 @@ numbers of the exercise it generalises.
 """
 
 import math
+from typing import Any
 
 from ..answer_kinds.base import Slip
 from ..number_format import fmt
@@ -25,7 +26,7 @@ def _f23(v, theta, dt):
     return motion_jacobian((0.0, 0.0, theta), v, 0.0, dt)[1][2]
 
 
-_HEADING_COLUMN = {
+_HEADING_COLUMN: dict[str, dict[str, Any]] = {
     "1,3": {
         "key": _f13, "answer_text": "-v*sin(theta)*dt",
         "values": {"Fij": "F_{13}", "coord": "x", "model": "x' = x + v\\cos\\theta\\,dt",

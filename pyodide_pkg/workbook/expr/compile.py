@@ -14,7 +14,7 @@ is turned into nested closures once.
 from __future__ import annotations
 
 import math
-from typing import Callable, Mapping
+from collections.abc import Callable, Mapping
 
 from .grammar import CONSTANTS, FUNCTIONS, MAX_EXPONENT, InvalidAnswer
 

@@ -82,7 +82,7 @@ def evaluate(node: tuple) -> tuple[float, U.Dim | None, str | None]:
             raise InvalidAnswer("That exponent is too large.")
         if v1 < 0 and v2 != int(v2):
             raise InvalidAnswer("A negative number to a fractional power is not a real number.")
-        if not bare(d1):
+        if d1 is not None and not bare(d1):
             if v2 != int(v2):
                 raise InvalidAnswer("A quantity with a unit can only be raised to a whole power.")
             d1 = (d1[0] * int(v2), d1[1] * int(v2), d1[2] * int(v2))
@@ -105,9 +105,9 @@ def _call(name: str, args: list) -> tuple[float, U.Dim | None, str | None]:
     elif name == "sqrt":
         d = dims[0]
         if not bare(d):
-            if any(x % 2 for x in d):  # type: ignore[union-attr]
+            if any(x % 2 for x in d):
                 raise InvalidAnswer(f"The square root of {U.describe(d)} has no unit I know.")
-            out_dim = (d[0] // 2, d[1] // 2, d[2] // 2)  # type: ignore[index]
+            out_dim = (d[0] // 2, d[1] // 2, d[2] // 2)
     elif name == "abs":
         out_dim = dims[0]
     elif name == "atan2":

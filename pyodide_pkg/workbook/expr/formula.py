@@ -38,8 +38,8 @@ Implicit products, and what is refused (so that no reading is a guess):
 from __future__ import annotations
 
 import re
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
-from typing import Callable, Iterable
 
 from .compile import Env, compile_tree
 from .degrees import degree_arguments
@@ -58,7 +58,7 @@ class Formula:
     _fn: Callable[[Env], float]
     tree: tuple = ()
 
-    def with_degree_arguments(self) -> "Formula | None":
+    def with_degree_arguments(self) -> Formula | None:
         """The formula with the bare numbers inside sin, cos and tan read as degrees (``sin(θ1 + 90)``),
         or None when it has none."""
         tree = degree_arguments(self.tree) if self.tree else None

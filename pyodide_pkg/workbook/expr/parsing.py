@@ -21,8 +21,17 @@ import math
 import re
 
 from .. import units as U
-from .grammar import (FUNCTIONS, GREEK, MAX_DEPTH, MAX_LENGTH, MAX_NODES, SCALAR, Grammar, InvalidAnswer,
-                      not_an_expression)
+from .grammar import (
+    FUNCTIONS,
+    GREEK,
+    MAX_DEPTH,
+    MAX_LENGTH,
+    MAX_NODES,
+    SCALAR,
+    Grammar,
+    InvalidAnswer,
+    not_an_expression,
+)
 from .tokens import check_commas, normalise, tokenize
 
 _MAX_RECURSION = 60  # unary minus chains, powers of powers: far below Python's limit

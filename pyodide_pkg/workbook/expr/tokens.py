@@ -192,7 +192,7 @@ def _segment(name: str, grammar: Grammar) -> tuple[int, list[tuple[str, str]]]:
             if piece.isdigit():
                 if not after_func or (j < n and name[j].isdigit()):
                     continue
-                kind = "num"
+                kind: str | None = "num"
             else:
                 kind = grammar.kind(piece)
                 if kind is None or kind == "unit" or piece == "e":

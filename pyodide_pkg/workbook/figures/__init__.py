@@ -20,11 +20,11 @@ True
 from __future__ import annotations
 
 import math
+from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any, Callable
+from typing import Any
 
 from ..registry import FIGURES
-
 
 
 class FigureError(ValueError):

@@ -6,9 +6,9 @@ from __future__ import annotations
 
 import math
 
+from ..number_format import readout, readout_vector
 from ..reference.arm import forward_kinematics_2link, inverse_kinematics_2link, is_reachable
 from . import Control, Figure, Readout
-from ..number_format import readout, readout_vector
 from .svg import Canvas
 
 L1, L2 = 1.0, 0.6

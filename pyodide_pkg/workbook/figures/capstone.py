@@ -12,11 +12,17 @@ import random
 from functools import lru_cache
 from typing import NamedTuple
 
-from ..reference.ekf import covariance_ellipse, ekf_predict, ekf_update_matrix, measurement_jacobian, range_bearing
-from ..reference.ekf import motion_model
+from ..number_format import readout
+from ..reference.ekf import (
+    covariance_ellipse,
+    ekf_predict,
+    ekf_update_matrix,
+    measurement_jacobian,
+    motion_model,
+    range_bearing,
+)
 from ..reference.pose_graph import wrap_angle
 from . import Control, Figure, Readout
-from ..number_format import readout
 from .svg import Canvas
 
 WAYPOINTS = ((3.0, 0.0), (3.0, 3.0), (0.0, 3.0), (0.0, 0.0))

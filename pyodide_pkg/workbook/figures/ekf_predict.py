@@ -5,9 +5,9 @@ from __future__ import annotations
 
 import math
 
+from ..number_format import readout, readout_matrix
 from ..reference.ekf import covariance_ellipse, ekf_predict
 from . import Control, Figure, Readout
-from ..number_format import readout, readout_matrix
 from .svg import Canvas
 
 P0 = [[0.05 ** 2, 0.0, 0.0], [0.0, 0.05 ** 2, 0.0], [0.0, 0.0, math.radians(1) ** 2]]

@@ -5,11 +5,10 @@ from __future__ import annotations
 
 import math
 
-from ..reference.ekf import (covariance_ellipse, ekf_update_matrix, kalman_gain, measurement_jacobian,
-                             range_bearing)
+from ..number_format import readout, readout_matrix
+from ..reference.ekf import covariance_ellipse, ekf_update_matrix, kalman_gain, measurement_jacobian, range_bearing
 from ..reference.pose_graph import wrap_angle
 from . import Control, Figure, Readout
-from ..number_format import readout, readout_matrix
 from .svg import Canvas
 
 PREDICTED = (2.0, 1.0, math.radians(30))

@@ -9,10 +9,10 @@ from __future__ import annotations
 
 import math
 
+from ..number_format import readout, readout_matrix, readout_vector
 from ..reference.linalg import matvec
 from ..reference.rotation3d import euler_zyx, gimbal_lock_angle, gimbal_locked, quat_from_matrix
 from . import Control, Figure, Readout
-from ..number_format import readout, readout_matrix, readout_vector
 from .svg import Canvas
 
 AZIMUTH, ELEVATION = math.radians(35), math.radians(22)

@@ -9,9 +9,9 @@ from __future__ import annotations
 
 import math
 
+from ..number_format import readout_matrix, readout_vector
 from ..reference.transform2d import apply, chain, transform2d
 from . import Control, Figure, Readout
-from ..number_format import readout_matrix, readout_vector
 from .svg import Canvas
 
 SENSOR_OFFSET = (0.5, 0.0)  # where the sensor is mounted, in the robot frame (m)

@@ -8,10 +8,15 @@ from __future__ import annotations
 
 import math
 
-from ..reference.arm import (end_effector_velocity, forward_kinematics_2link, jacobian_2link, jacobian_det,
-                             manipulability)
-from . import Control, Figure, Readout
 from ..number_format import prose, readout, readout_matrix
+from ..reference.arm import (
+    end_effector_velocity,
+    forward_kinematics_2link,
+    jacobian_2link,
+    jacobian_det,
+    manipulability,
+)
+from . import Control, Figure, Readout
 from .svg import Canvas
 
 L1, L2 = 1.0, 0.7
@@ -19,7 +24,7 @@ SCALE = 0.45  # draw a velocity of 1 m/s as 0.45 m
 NEAR_SINGULAR = 0.15  # |det J| below this fraction of its peak L1·L2 counts as near a singularity
 
 
-def velocity_ellipse(J, n: int = 72) -> list[tuple[float, float]]:
+def velocity_ellipse(J, n: int = 72) -> list[tuple[float, ...]]:
     """J·(cos t, sin t) for t around the circle: the tip velocities of unit joint rates.
 
     >>> [tuple(round(v, 6) + 0.0 for v in p) for p in velocity_ellipse([[1, 0], [0, 2]], n=4)]

@@ -5,9 +5,9 @@ from __future__ import annotations
 
 from functools import lru_cache
 
+from ..number_format import readout
 from ..reference.pid import simulate_step_response, step_metrics
 from . import Control, Figure, Readout
-from ..number_format import readout
 from .svg import Canvas
 
 DURATION = 10.0

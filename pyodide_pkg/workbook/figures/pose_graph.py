@@ -7,9 +7,9 @@ import math
 from functools import lru_cache
 from html import escape
 
+from ..number_format import readout
 from ..reference.pose_graph import compose_pose, gauss_newton, graph_cost, information_matrix
 from . import Control, Figure, Readout
-from ..number_format import readout
 from .svg import Canvas, render_svg
 
 SIDES = 8  # an octagon: eight 1 m legs, turning 45° after each

@@ -4,9 +4,9 @@ from __future__ import annotations
 
 import math
 
+from ..number_format import readout_matrix, readout_vector
 from ..reference.rotation2d import rot2, rotate_2d
 from . import Control, Figure, Readout
-from ..number_format import readout_matrix, readout_vector
 from .svg import Canvas
 
 

@@ -7,8 +7,8 @@ workbook.css``, section "Figures"), which follow the light and dark palettes.
 from __future__ import annotations
 
 import math
+from collections.abc import Iterable
 from html import escape
-from typing import Iterable
 
 Point = tuple[float, float]
 Box = tuple[float, float, float, float]  # left, top, right, bottom (viewBox units)
@@ -246,8 +246,9 @@ class Canvas:
                         best = (cost, box)
                     if cost == 0:
                         break
-                if best[0] == 0:
+                if best is not None and best[0] == 0:
                     break
+            assert best is not None  # (LABEL_GAPS and LABEL_TURNS are not empty)
             box = best[1]
             # the baseline sits DESCENT_EM above the box's bottom
             self._text_at((box[0] + box[2]) / 2, box[3] - DESCENT_EM * size, content, cls, "middle")

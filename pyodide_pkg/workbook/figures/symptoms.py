@@ -17,8 +17,8 @@ True
 from __future__ import annotations
 
 import math
-from functools import cache
-from typing import Callable
+from collections.abc import Callable
+from functools import cache, partial
 
 from ..number_format import fixed, fmt, prose
 from ..reference.arm import forward_kinematics_2link, inverse_kinematics_2link
@@ -51,7 +51,7 @@ def _ik_draw(f: dict) -> str:
     c.dot((x, y), 7, "wb-fig-b")
     for t1, cls in ((f["t1"], "wb-fig-c"), (f["t1_bug"], "wb-fig-bad wb-fig-dash")):
         elbow = (L1 * math.cos(t1), L1 * math.sin(t1))
-        tip = forward_kinematics_2link(*f["links"], t1, f["t2"])
+        tip = forward_kinematics_2link(f["links"][0], f["links"][1], t1, f["t2"])
         c.polyline([(0, 0), elbow, tip], f"{cls} wb-fig-thick")
         c.dot(tip, 4, f"{cls} wb-fig-solid")
     c.text((x, y), "target: the tip with atan2", "wb-fig-label wb-fig-small wb-fig-c", dy=26)
@@ -126,8 +126,7 @@ def windup_facts() -> dict:
     """The step response with a saturating actuator, with and without anti-windup."""
     runs = {}
     for name, clamp in (("fixed", True), ("bug", False)):
-        def step(*args, clamp=clamp):
-            return pid_step_saturated(*args, anti_windup=clamp)
+        step = partial(pid_step_saturated, anti_windup=clamp)
         runs[name] = simulate_saturated(step, *WINDUP_GAINS, WINDUP_LIMIT, duration=WINDUP_TIME)
     peak = {name: max(ys) for name, (_, ys) in runs.items()}
     return {"gains": WINDUP_GAINS, "u_max": WINDUP_LIMIT, "runs": runs,

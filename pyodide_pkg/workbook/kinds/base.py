@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 from html import escape
-from typing import Any, Callable, ClassVar, Protocol
+from typing import Any, ClassVar, Protocol
 
 from ..contract import ATTR, ROLE, role_attr
 from ..verdict import Verdict
@@ -54,4 +55,4 @@ class Exercise:
         return ""
 
 
-__all__ = ["ATTR", "Callable", "Exercise", "Page", "PlainPage", "ROLE", "escape", "role_attr"]
+__all__ = ["ATTR", "ROLE", "Callable", "Exercise", "Page", "PlainPage", "escape", "role_attr"]

@@ -26,8 +26,9 @@ import copy
 import json
 import random
 import sys
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, Callable, ClassVar, Mapping
+from typing import Any, ClassVar
 
 from workbook_sandbox import harness, runner
 from workbook_sandbox.restore import STDLIB_HOMES, Restore
@@ -82,7 +83,7 @@ class Build(Exercise):
     def signature(self) -> str:
         return f"{self.function}({', '.join(self.params)})"
 
-    def variant(self, seed: object) -> "Build":
+    def variant(self, seed: object) -> Build:
         """This exercise with seed ``seed``'s hidden cases (the examples stay): the page's ``variant``."""
         seed = check_seed(seed)
         return self if seed == self.seed else replace(self, seed=seed)
@@ -90,7 +91,8 @@ class Build(Exercise):
     def hidden_cases(self) -> list[tuple]:
         """The edge cases, then random ones: the same for the same seed (the seed 0 ones are the exercise's own)."""
         rng = random.Random(f"hidden:{self.id}" + (f":{self.seed}" if self.seed else ""))
-        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]
+        # random_args may be None in the dataclass; every Build in the bank (all 12) gives it.
+        return [*self.edge_cases, *(self.random_args(rng) for _ in range(self.hidden_count))]  # type: ignore[misc]
 
     def arguments(self) -> list[list]:
         """Every case's arguments, examples first, as the sandbox receives them (through JSON)."""
@@ -98,7 +100,7 @@ class Build(Exercise):
 
     def job(self) -> str:
         """What the sandbox needs to run the learner's code (JSON): the function's name, the driver, the cases."""
-        job = {"function": self.function, "harness": self.harness, "cases": self.arguments()}
+        job: dict[str, Any] = {"function": self.function, "harness": self.harness, "cases": self.arguments()}
         figure = runs.trace_job(self)
         if figure is not None:
             job["figure"] = figure

@@ -1,6 +1,6 @@
 """Derive: work a number, a vector, a matrix or a formula out by hand; graded against a key from the reference code.
 
-A Derive exercise holds its answer kind (``answer=number(...)``, ``matrix(...)``
+A Derive exercise holds its answer kind (``spec=number(...)``, ``matrix(...)``
 or ``formula(...)``, :mod:`workbook.answer_kinds`), which reads, marks and
 shows the answer, and its generator (``vary=Vary(make, ...)``,
 :mod:`workbook.variants`), which draws the numbers. ``make(p)`` returns the
@@ -13,14 +13,15 @@ neither the exercise nor its answer kind has fails the build with the id.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
-from typing import Any, Callable, ClassVar, Mapping
+from typing import Any, ClassVar
 
-from ..answer_kinds.base import AnswerKind, AnswerSpec
-from ..contract import ATTR
 from .. import carried
 from .. import steps as stepwise
+from ..answer_kinds.base import AnswerKind, AnswerSpec
 from ..chains import Uses
+from ..contract import ATTR
 from ..number_format import fmt
 from ..variants import VariantError, Vary, check_seed
 from ..verdict import GradingError, Verdict, quote
@@ -33,24 +34,23 @@ WORKED = "worked"  # the placeholder the answer kind fills: the Answer line's va
 class Derive(Exercise):
     """A Derive exercise: its answer kind, its generator and the variant on screen."""
 
-    answer: AnswerSpec | AnswerKind | None = None
+    spec: AnswerSpec | None = None  # what the bank writes: spec=number(...), matrix(...) or formula(...)
     vary: Vary | None = field(default=None, compare=False, repr=False)
     seed: int = 0  # the variant: 0 is the workbook's numbers
     values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)  # the template's fill
     params: Mapping[str, Any] = field(default_factory=dict, compare=False, repr=False)  # this variant's draw
-    spec: AnswerSpec | None = field(default=None, compare=False, repr=False)
     uses: tuple[Uses, ...] = field(default=(), compare=False, repr=False)  # the earlier results it builds on
     steps: tuple[stepwise.Step, ...] = field(default=(), compare=False, repr=False)  # its checked steps, in order
     step_answers: Mapping[str, AnswerKind] = field(default_factory=dict, compare=False, repr=False)
+    answer: AnswerKind = field(init=False, compare=False, repr=False)  # this variant's answer, built from spec
     kind: ClassVar[str] = "derive"
     reveal_label: ClassVar[str] = "Show derivation"
 
     def __post_init__(self) -> None:
-        spec = self.answer if isinstance(self.answer, AnswerSpec) else self.spec
+        spec = self.spec
         if spec is None:
-            raise ValueError(f"exercise {self.id}: a Derive exercise needs answer=number(...), matrix(...) "
+            raise ValueError(f"exercise {self.id}: a Derive exercise needs spec=number(...), matrix(...) "
                              "or formula(...)")
-        object.__setattr__(self, "spec", spec)
         if self.vary is None:
             if self.steps:
                 raise ValueError(f"exercise {self.id}: steps need a generator (vary=Vary(make, ...))")
@@ -98,24 +98,32 @@ class Derive(Exercise):
                 return f"step {name}: {problem}"
         return None
 
-    def variant(self, seed: object) -> "Derive":
+    def variant(self, seed: object) -> Derive:
         """This exercise with variant ``seed``'s numbers (0: the workbook's own)."""
         seed = check_seed(seed)
         if self.vary is None or seed == self.seed:
             return self
-        return replace(self, seed=seed, answer=self.spec)
+        return replace(self, seed=seed)
 
     def carried_answer(self, given: Mapping[str, Any]) -> AnswerKind:
         """This variant's answer with ``given`` (the learner's earlier values, by the names
         ``make()`` takes) in place of the printed ones: the key recomputed by the generator."""
-        made = dict(self.vary.make(self.params, given=given))
+        vary, spec = self._generator()
+        made = dict(vary.make(self.params, given=given))
         for name in ("values", "title", "steps"):
             made.pop(name, None)
-        return self.spec.build(self.id, **made)
+        return spec.build(self.id, **made)
 
     def carried_steps(self, given: Mapping[str, Any]) -> dict[str, AnswerKind]:
         """The steps' answer kinds with ``given`` in place of the printed values, by the generator."""
-        return stepwise.build(self.id, self.steps, self.vary.make(self.params, given=given).get("steps"))
+        vary, _ = self._generator()
+        return stepwise.build(self.id, self.steps, vary.make(self.params, given=given).get("steps"))
+
+    def _generator(self) -> tuple[Vary, AnswerSpec]:
+        """The generator and the answer's spec (an exercise that carries values forward has both)."""
+        if self.vary is None or self.spec is None:
+            raise ValueError(f"exercise {self.id}: a carried value needs a generator (vary=Vary(make, ...))")
+        return self.vary, self.spec
 
     # ---- what the page and the worker ask: the answer kind answers ----------------
     @property
@@ -131,7 +139,7 @@ class Derive(Exercise):
         return self.answer.check(answer)
 
     def grade(self, answer: object, given: Mapping[str, Any] | None = None, steps: Mapping[str, Any] | None = None,
-              step: str | None = None, lookup: Callable[[str, int], "Derive"] | None = None) -> Verdict:
+              step: str | None = None, lookup: Callable[[str, int], Derive] | None = None) -> Verdict:
         """The verdict on ``answer`` to this exercise, or to its step ``step``, with error carried
         forward (:mod:`workbook.carried`) from the learner's answers to the earlier exercises it
         builds on (``given``: {ID: {answer, variant}}, found with ``lookup(id, seed)``) and to its

@@ -5,10 +5,10 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import ClassVar
 
+from ..markup import check_button, form
 from ..math_text import math_data, pieces
 from ..verdict import Verdict
 from .base import ATTR, ROLE, Exercise, Page, escape, role_attr
-from ..markup import check_button, form
 
 
 @dataclass(frozen=True)

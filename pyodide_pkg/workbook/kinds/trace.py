@@ -6,10 +6,10 @@ from dataclasses import dataclass
 from typing import ClassVar
 
 from ..contract import TAG
+from ..markup import check_button, form
 from ..math_text import math_data, pieces
 from ..verdict import Verdict
 from .base import ROLE, Exercise, Page, escape, role_attr
-from ..markup import check_button, form
 
 
 @dataclass(frozen=True)

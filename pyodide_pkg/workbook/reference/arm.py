@@ -6,7 +6,8 @@ Angles are in radians; θ2 is the elbow angle measured from the first link.
 from __future__ import annotations
 
 import math
-from typing import NamedTuple, Sequence
+from collections.abc import Sequence
+from typing import NamedTuple
 
 from .linalg import Matrix, Vector, det2, matvec
 from .pose_graph import wrap_angle

@@ -2,7 +2,8 @@
 
 from __future__ import annotations
 
-from typing import NamedTuple, Sequence
+from collections.abc import Sequence
+from typing import NamedTuple
 
 
 def p_term(e: float, Kp: float) -> float:
@@ -110,7 +111,7 @@ def simulate_saturated(step, Kp: float, Ki: float, Kd: float, u_max: float, dt: 
     y = velocity = integral = 0.0
     e_prev = target - y
     ts, ys = [0.0], [y]
-    for k in range(1, int(round(duration / dt)) + 1):
+    for k in range(1, round(duration / dt) + 1):
         e = target - y
         u, integral = step(e, e_prev, integral, Kp, Ki, Kd, dt, u_max)
         e_prev = e
@@ -187,7 +188,7 @@ def simulate_step_response(Kp: float, Ki: float, Kd: float, dt: float = 0.01, du
     (1001, 10.0, 0.9)
     """
     _check_dt(dt)
-    steps = int(round(duration / dt))
+    steps = round(duration / dt)
     y = velocity = integral = 0.0
     e_prev = target - y
     ts, ys = [0.0], [y]

@@ -7,7 +7,7 @@ measured motion ``z`` expressed in the frame of pose i.
 from __future__ import annotations
 
 import math
-from typing import Iterable, Sequence
+from collections.abc import Iterable, Sequence
 
 from .linalg import Matrix, Vector, inverse, matmul, matvec, transpose
 
@@ -196,7 +196,7 @@ def _edge_jacobians(xi: Pose, xj: Pose, z: Pose, h: float = 1e-6) -> tuple[Matri
         plus, minus = [list(xi), list(xj)], [list(xi), list(xj)]
         plus[which][k] += h
         minus[which][k] -= h
-        ep, em = edge_error(*plus, z), edge_error(*minus, z)
+        ep, em = edge_error(plus[0], plus[1], z), edge_error(minus[0], minus[1], z)
         return [(p - m) / (2 * h) for p, m in zip(ep, em)]
     A = transpose([column(k, 0) for k in range(3)])
     B = transpose([column(k, 1) for k in range(3)])
@@ -204,7 +204,7 @@ def _edge_jacobians(xi: Pose, xj: Pose, z: Pose, h: float = 1e-6) -> tuple[Matri
 
 
 def gauss_newton(poses: Sequence[Pose], edges: Sequence[Edge], fixed: int = 0,
-                 max_iterations: int = 10, tol: float = 1e-9) -> tuple[list[tuple[float, float, float]], list[float]]:
+                 max_iterations: int = 10, tol: float = 1e-9) -> tuple[list[tuple[float, ...]], list[float]]:
     """Minimise F(x) over every pose but ``fixed`` (which anchors the graph).
 
     Each iteration linearises every edge error, e ≈ e0 + A Δxi + B Δxj, adds

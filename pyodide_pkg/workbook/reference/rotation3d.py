@@ -229,7 +229,7 @@ def quat_from_matrix(R: Matrix) -> tuple[float, float, float, float]:
         q = ((m02 - m20) / s, (m01 + m10) / s, s / 4, (m12 + m21) / s)
     else:
         q = ((m10 - m01) / s, (m02 + m20) / s, (m12 + m21) / s, s / 4)
-    return q if q[0] >= 0 else tuple(-c for c in q)
+    return q if q[0] >= 0 else (-q[0], -q[1], -q[2], -q[3])
 
 
 def quat_rotate(q, v) -> tuple[float, float, float]:

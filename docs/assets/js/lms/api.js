@@ -39,7 +39,7 @@ function walkUp(win) {
   for (let hops = 0; win && hops <= MAX_HOPS; hops += 1) {
     const found = apiIn(win);
     if (found) return found;
-    let parent = null;
+    let parent;
     try {
       parent = win.parent;
     } catch {

@@ -207,7 +207,8 @@ export function encodeSuspend(exercises, version) {
     if (field) {
       fields.push(field);
       records = Object.fromEntries(Object.entries(records).map(([id, r]) => {
-        const { [field]: _gone, ...rest } = r;
+        const rest = { ...r };
+        delete rest[field];
         return [id, rest];
       }));
     }

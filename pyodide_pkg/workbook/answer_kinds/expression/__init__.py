@@ -21,8 +21,10 @@ input was understood.
 
 from __future__ import annotations
 
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
-from typing import Any, Callable, ClassVar, Mapping
+from types import ModuleType
+from typing import Any, ClassVar
 
 from ..base import AnswerKind, AnswerSpec
 from . import mark, read, show
@@ -39,7 +41,9 @@ class FormulaAnswer(AnswerKind):
     domain: Mapping[str, tuple[float, float]] = field(default_factory=dict)
     answer_text: str = ""
     kind: ClassVar[str] = "expression"
-    reader, marker, shower = read, mark, show
+    reader: ClassVar[ModuleType] = read
+    marker: ClassVar[ModuleType] = mark
+    shower: ClassVar[ModuleType] = show
 
     def __post_init__(self) -> None:
         if not callable(self.key):

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import math
 import random
-from typing import TYPE_CHECKING, Callable, Mapping
+from collections.abc import Callable, Mapping
+from typing import TYPE_CHECKING, cast
 
 from ...contract import TAG
 from ...expr import Formula, parse_formula
@@ -67,13 +68,13 @@ def equivalent(formula: Formula, reference: Callable[..., float], domain: Mappin
     return True if defined >= max(3, points // 2) else None
 
 
-def counterexample(ans: "FormulaAnswer", formula: Formula) -> str:
+def counterexample(ans: FormulaAnswer, formula: Formula) -> str:
     """Where the formula and the key differ, in words."""
     rng = random.Random(1)
     for _ in range(40):
         env = {name: rng.uniform(lo, hi) for name, (lo, hi) in ans.domain.items()}
         try:
-            want, got = float(ans.key(**env)), formula.evaluate(env)
+            want, got = float(cast("Callable[..., float]", ans.key)(**env)), formula.evaluate(env)
         except (ValueError, ArithmeticError, TypeError):
             continue
         if math.isfinite(want) and math.isfinite(got) and not agrees(got, clean(want)):
@@ -82,9 +83,9 @@ def counterexample(ans: "FormulaAnswer", formula: Formula) -> str:
     return "Not the same formula. Check each term against the derivation."
 
 
-def mark(ans: "FormulaAnswer", formula: Formula) -> Verdict:
+def mark(ans: FormulaAnswer, formula: Formula) -> Verdict:
     data = {"latex": formula.latex}
-    same = equivalent(formula, ans.key, ans.domain)
+    same = equivalent(formula, cast("Callable[..., float]", ans.key), ans.domain)
     if same is None:
         return Verdict("invalid", "Your formula cannot be evaluated at most points of the question's range "
                        "(a square root or logarithm of a negative number?).", data=data)
@@ -94,12 +95,12 @@ def mark(ans: "FormulaAnswer", formula: Formula) -> Verdict:
         if equivalent(formula, slip.value, ans.domain):
             return Verdict("incorrect", slip.message, tag=TAG.slip, data=data)
     in_degrees = formula.with_degree_arguments()
-    if in_degrees is not None and equivalent(in_degrees, ans.key, ans.domain):
+    if in_degrees is not None and equivalent(in_degrees, cast("Callable[..., float]", ans.key), ans.domain):
         return Verdict("incorrect", DEGREES, tag=TAG.degrees, data=data)
     return Verdict("incorrect", counterexample(ans, formula), data=data)
 
 
-def degenerate(ans: "FormulaAnswer") -> str | None:
+def degenerate(ans: FormulaAnswer) -> str | None:
     """The worked formula must be accepted, and no slip may agree with the key."""
     verdict = ans.check(ans.answer_text)
     if verdict.status != "correct":

@@ -16,7 +16,7 @@ def reply(formula: Formula) -> dict:
     return {"latex": formula.latex}
 
 
-def read(ans: "FormulaAnswer", answer: object) -> Formula | Verdict:
+def read(ans: FormulaAnswer, answer: object) -> Formula | Verdict:
     """The formula read, or an ``invalid`` verdict saying why it could not be read."""
     try:
         return parse_formula(answer, ans.variables)

@@ -22,6 +22,7 @@ it can.
 from __future__ import annotations
 
 from dataclasses import dataclass
+from types import ModuleType
 from typing import Any, ClassVar
 
 from ...tolerance import clean
@@ -50,7 +51,9 @@ class MatrixAnswer(AnswerKind):
     either_sign: str = ""
     rel_tol: float = 1e-3
     kind: ClassVar[str] = "matrix"
-    reader, marker, shower = read, mark, show
+    reader: ClassVar[ModuleType] = read
+    marker: ClassVar[ModuleType] = mark
+    shower: ClassVar[ModuleType] = show
 
     def __post_init__(self) -> None:
         if not self.key or any(len(row) != len(self.key[0]) for row in self.key):

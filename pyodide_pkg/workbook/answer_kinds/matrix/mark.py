@@ -28,7 +28,7 @@ def _half(r: Reading) -> float | None:
     return r.half_unit if r.figures is not None and r.figures >= FIGURES else None
 
 
-def differs(ans: "MatrixAnswer", readings: list[list[Reading]], target, values=None) -> list[Position]:
+def differs(ans: MatrixAnswer, readings: list[list[Reading]], target, values=None) -> list[Position]:
     """1-based ``[row, col]`` of every entry that does not count as ``target``'s (``values`` overrides the readings' values)."""
     out = []
     for i, (row, want) in enumerate(zip(readings, target), 1):
@@ -43,7 +43,7 @@ def _where(positions: list[Position]) -> str:
     return ", ".join(f"({i},{j})" for i, j in positions)
 
 
-def _trig_degrees(ans: "MatrixAnswer", readings: list[list[Reading]], wrong: list[Position]) -> Verdict | None:
+def _trig_degrees(ans: MatrixAnswer, readings: list[list[Reading]], wrong: list[Position]) -> Verdict | None:
     """Every wrong entry is right once the bare numbers in its sin, cos or tan are read as degrees."""
     fixed = []
     for i, j in wrong:
@@ -56,7 +56,7 @@ def _trig_degrees(ans: "MatrixAnswer", readings: list[list[Reading]], wrong: lis
     return Verdict("incorrect", TRIG_DEGREES.format(how=how), tag=TAG.degrees, data={"wrong": wrong})
 
 
-def mark(ans: "MatrixAnswer", readings: list[list[Reading]]) -> Verdict:
+def mark(ans: MatrixAnswer, readings: list[list[Reading]]) -> Verdict:
     key = ans.cleaned
     values = [[r.value for r in row] for row in readings]
     wrong = differs(ans, readings, key)

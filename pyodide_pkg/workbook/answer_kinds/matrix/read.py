@@ -21,7 +21,7 @@ if TYPE_CHECKING:
 Grid = list[list[str]]
 
 
-def split(ans: "MatrixAnswer", text: object) -> dict:
+def split(ans: MatrixAnswer, text: object) -> dict:
     """The ``split`` op: ``{entries}`` for a whole matrix, ``{cell}`` for one value (it stays where it
     was pasted), or ``{message}``."""
     if is_one_value(text):
@@ -32,7 +32,7 @@ def split(ans: "MatrixAnswer", text: object) -> dict:
         return {"message": str(err)}
 
 
-def _cells(ans: "MatrixAnswer", answer: object) -> Grid:
+def _cells(ans: MatrixAnswer, answer: object) -> Grid:
     """The entry texts of an answer: pasted text, or the grid of inputs (names placed by name)."""
     if isinstance(answer, str):
         return split_matrix(answer, ans.shape, ans.names)
@@ -65,7 +65,7 @@ def reply(readings: list[list[Reading]]) -> dict:
     return {"value": [[r.value for r in row] for row in readings]}
 
 
-def read(ans: "MatrixAnswer", answer: object) -> list[list[Reading]] | Verdict:
+def read(ans: MatrixAnswer, answer: object) -> list[list[Reading]] | Verdict:
     """A reading per entry, or an ``invalid`` verdict naming every entry that could not be read."""
     try:
         grid = _cells(ans, answer)

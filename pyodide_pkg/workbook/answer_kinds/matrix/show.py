@@ -14,25 +14,25 @@ if TYPE_CHECKING:
     from . import MatrixAnswer, Rows
 
 
-def attributes(ans: "MatrixAnswer") -> dict[str, str]:
+def attributes(ans: MatrixAnswer) -> dict[str, str]:
     r, c = ans.shape
     return {ATTR.answerShape: f"{r}x{c}"}
 
 
-def worked_text(ans: "MatrixAnswer") -> str:
+def worked_text(ans: MatrixAnswer) -> str:
     return "[" + "; ".join(" ".join(fmt(v) for v in row) for row in ans.cleaned) + "]"
 
 
-def worked_tex(ans: "MatrixAnswer") -> str:
+def worked_tex(ans: MatrixAnswer) -> str:
     rows = r" \\ ".join(" & ".join(fmt(v) for v in row) for row in ans.cleaned)
     return rf"\begin{{bmatrix}} {rows} \end{{bmatrix}}"
 
 
-def typed(ans: "MatrixAnswer", value: "Rows") -> list[list[str]]:
+def typed(ans: MatrixAnswer, value: Rows) -> list[list[str]]:
     return [[fmt(clean(v), significant=7) for v in row] for row in value]
 
 
-def worked_html(ans: "MatrixAnswer") -> str:
+def worked_html(ans: MatrixAnswer) -> str:
     r, c = ans.shape
     cells = "".join(
         f'<span {role_attr(ROLE.worked_entry)} {ATTR.row}="{i}" {ATTR.col}="{j}">{fmt(v)}</span>'
@@ -42,25 +42,25 @@ def worked_html(ans: "MatrixAnswer") -> str:
             f'style="grid-template-columns: repeat({c}, auto)" aria-label="{r} by {c}">{cells}</div>')
 
 
-def _names(ans: "MatrixAnswer") -> list[str]:
+def _names(ans: MatrixAnswer) -> list[str]:
     return [name.split("|")[0] for name in ans.names]
 
 
-def label_html(ans: "MatrixAnswer") -> str:
+def label_html(ans: MatrixAnswer) -> str:
     r, c = ans.shape
     what = "column vector" if c == 1 else ("row vector" if r == 1 else "matrix")
     named = f": {', '.join(escape(n) for n in _names(ans))}" if ans.names else ""
     return f"{escape(ans.label)} ({r}×{c} {what}{named}; paste a whole {what} into any entry)"
 
 
-def _cell_name(ans: "MatrixAnswer", i: int, j: int) -> str:
+def _cell_name(ans: MatrixAnswer, i: int, j: int) -> str:
     """An entry's accessible name: the answer's label and the entry (its component's name, or row and column)."""
     if ans.names:
         return f"{ans.label}, {_names(ans)[(i - 1) * ans.shape[1] + (j - 1)]}"
     return f"{ans.label}, row {i}, column {j}"
 
 
-def widget(ans: "MatrixAnswer", base: str) -> str:
+def widget(ans: MatrixAnswer, base: str) -> str:
     r, c = ans.shape
     cells = "".join(
         f'<input {role_attr(ROLE.entry)} {ATTR.row}="{i}" {ATTR.col}="{j}" type="text" inputmode="text" '

@@ -9,7 +9,8 @@
 from __future__ import annotations
 
 import math
-from typing import Callable
+from collections.abc import Callable
+from functools import partial
 
 from ...reference.linalg import inverse
 from ...tolerance import agrees
@@ -109,11 +110,11 @@ def whole_matrix_slips(got: Matrix, key: Matrix, *, rotation_angle: float | None
 
     for a in range(n_rows):
         for b in range(a + 1, n_rows):
-            candidates.append(("rows-swapped", swapped("Rows", a, b), lambda a=a, b=b: _swap_rows(key, a, b)))
+            candidates.append(("rows-swapped", swapped("Rows", a, b), partial(_swap_rows, key, a, b)))
     for a in range(n_cols):
         for b in range(a + 1, n_cols):
             candidates.append(("columns-swapped", swapped("Columns", a, b),
-                               lambda a=a, b=b: _swap_columns(key, a, b)))
+                               partial(_swap_columns, key, a, b)))
     candidates.append(("negated", "Every sign is flipped: the whole matrix is negated.",
                        lambda: [[-v for v in row] for row in key]))
     out: list[tuple[str, str]] = []

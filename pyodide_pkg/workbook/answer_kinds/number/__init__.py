@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import math
 from dataclasses import dataclass
+from types import ModuleType
 from typing import Any, ClassVar
 
 from ..base import AnswerKind, AnswerSpec
@@ -40,7 +41,9 @@ class NumberAnswer(AnswerKind):
     periodic: bool = False
     either_sign: str = ""
     kind: ClassVar[str] = "number"
-    reader, marker, shower = read, mark, show
+    reader: ClassVar[ModuleType] = read
+    marker: ClassVar[ModuleType] = mark
+    shower: ClassVar[ModuleType] = show
 
     def __post_init__(self) -> None:
         if self.angle not in (None, "deg", "rad"):

@@ -29,7 +29,7 @@ def _half(reading: Reading) -> float | None:
     return reading.half_unit if reading.figures is not None and reading.figures >= FIGURES else None
 
 
-def agrees_with(ans: "NumberAnswer", value: float, target: float, half_unit: float | None = None) -> bool:
+def agrees_with(ans: NumberAnswer, value: float, target: float, half_unit: float | None = None) -> bool:
     """``value`` counts as ``target`` for this answer (its tolerance, exactness and turns)."""
     target = clean(target)
     if ans.periodic and ans.angle:
@@ -57,7 +57,7 @@ def _converted(value: float, other: float, unit: str, other_unit: str) -> str:
     return f"{fmt(value)}{unit} {verb} {fmt(other)}{other_unit}"
 
 
-def mark(ans: "NumberAnswer", reading: Reading) -> Verdict:
+def mark(ans: NumberAnswer, reading: Reading) -> Verdict:
     value, half = reading.value, _half(reading)
     key = clean(ans.key)
     if agrees_with(ans, value, key, half):

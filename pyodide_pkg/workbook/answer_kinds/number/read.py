@@ -19,7 +19,7 @@ if TYPE_CHECKING:
 _TRAILING_WORD = re.compile(r"^(.*?\S)\s+([A-Za-z]+)\s*\.?\s*$", re.S)
 
 
-def counted_words(ans: "NumberAnswer") -> frozenset[str]:
+def counted_words(ans: NumberAnswer) -> frozenset[str]:
     """The words that may follow the number: a unit that is a word (not one the reader knows, such as m),
     and, for a count, the plural nouns of the label (``rows (= columns) of H``: rows, columns)."""
     from . import UNITS
@@ -31,7 +31,7 @@ def counted_words(ans: "NumberAnswer") -> frozenset[str]:
     return frozenset(words)
 
 
-def _without_word(ans: "NumberAnswer", answer: object) -> object:
+def _without_word(ans: NumberAnswer, answer: object) -> object:
     if not isinstance(answer, str) or len(answer) > 200:
         return answer
     m = _TRAILING_WORD.match(answer)
@@ -42,7 +42,7 @@ def _without_word(ans: "NumberAnswer", answer: object) -> object:
     return m.group(1) if word in words or word + "s" in words else answer
 
 
-def read(ans: "NumberAnswer", answer: object) -> Reading | Verdict:
+def read(ans: NumberAnswer, answer: object) -> Reading | Verdict:
     """The value read in the unit asked, or an ``invalid`` verdict saying why it could not be read."""
     try:
         return read_quantity(_without_word(ans, answer), ans.expect)

@@ -14,35 +14,35 @@ if TYPE_CHECKING:
     from . import NumberAnswer
 
 
-def worked_text(ans: "NumberAnswer") -> str:
+def worked_text(ans: NumberAnswer) -> str:
     """The key as a learner would type it, printed by the one number printer."""
     return fmt(clean(ans.key)) + ("°" if ans.angle == "deg" else "")
 
 
-def worked_tex(ans: "NumberAnswer") -> str:
+def worked_tex(ans: NumberAnswer) -> str:
     return worked_text(ans)
 
 
-def typed(ans: "NumberAnswer", value: Any) -> str:
+def typed(ans: NumberAnswer, value: Any) -> str:
     """A value as a careful learner types it (more figures than printed: slips are told apart exactly)."""
     return fmt(clean(value), significant=7) + ("°" if ans.angle == "deg" else "")
 
 
-def attributes(ans: "NumberAnswer") -> dict[str, str]:
+def attributes(ans: NumberAnswer) -> dict[str, str]:
     return {}
 
 
-def worked_html(ans: "NumberAnswer") -> str:
+def worked_html(ans: NumberAnswer) -> str:
     return (f'<p class="wb-worked">Type it as: <code {role_attr(ROLE.worked_answer)}>'
             f"{escape(worked_text(ans))}</code></p>")
 
 
-def label_html(ans: "NumberAnswer") -> str:
+def label_html(ans: NumberAnswer) -> str:
     named = " (degrees)" if ans.unit == "°" else (f" ({escape(ans.unit)})" if ans.unit else "")
     return f"{escape(ans.label)}{named}"
 
 
-def widget(ans: "NumberAnswer", base: str) -> str:
+def widget(ans: NumberAnswer, base: str) -> str:
     unit = f'<span class="wb-unit" aria-hidden="true">{escape(ans.unit)}</span>' if ans.unit else ""
     return form("derive", (
         f'<label class="wb-label" for="{base}-answer">{label_html(ans)}</label>'

@@ -26,8 +26,9 @@ from __future__ import annotations
 
 import copy
 import math
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Any, Callable
+from typing import Any
 
 from workbook_sandbox import harness
 
@@ -133,7 +134,7 @@ def _sample(item: dict[str, Any], width: int) -> float | list[float] | str:
         return f"{item.get('type', 'object')} {item.get('text', '')}, not {width} numbers"
     out = [_sample(v, 0) for v in row]
     bad = next((v for v in out if isinstance(v, str)), None)
-    return out if bad is None else bad
+    return out if bad is None else bad  # type: ignore[return-value]  # (out holds only numbers when bad is None)
 
 
 def series(value: dict[str, Any], width: int = 0) -> tuple[list, str]:
@@ -257,7 +258,7 @@ def _items(fig: RunFigure, ex: Any, report: Any, cases: list, arguments: list[li
     hidden = items[shown:]
     off = [d for d in hidden if d.error is not None and d.error > max(ex.abs_tol, 1e-9)
            + ex.rel_tol * max(map(abs, flat(d.want)), default=0.0)]
-    extra = [max(off, key=lambda d: d.error)] if off else []
+    extra = [max(off, key=lambda d: d.error or 0.0)] if off else []  # (off: errors that are numbers)
     failed = next((d for d in hidden if d.message), None)
     if failed is not None:
         extra.append(failed)
@@ -270,13 +271,13 @@ def _readout(fig: RunFigure, items: list[Drawn]) -> str:
     failed = next((d for d in items if d.message), None)
     parts = []
     if errors:
-        worst = max(errors, key=lambda d: d.error)
+        worst = max(errors, key=lambda d: d.error or 0.0)  # (errors: numbers)
         unit = f" {fig.unit}" if fig.unit else ""
-        if compact(worst.error) == "0":
+        if compact(worst.error or 0.0) == "0":
             where = "on every case" if failed is None else "as far as its numbers go"
             parts.append(f"largest error 0{unit}: yours agrees with the reference {where}")
         else:
-            parts.append(f"largest error {compact(worst.error)}{unit} at {worst.label}")
+            parts.append(f"largest error {compact(worst.error or 0.0)}{unit} at {worst.label}")
     if failed is not None:
         parts.append(f"{failed.label}: {failed.message}")
     text = "; ".join(parts) or "nothing to compare"
@@ -306,9 +307,9 @@ def _start(drawn: list[Drawn], every: list[Drawn]) -> int:
     """The frame to open on: the case the readout names first (the largest error, when it is not 0),
     else the first that went wrong, else the worst."""
     errors = [d for d in every if d.error is not None]
-    worst = max(errors, key=lambda d: d.error) if errors else None
+    worst = max(errors, key=lambda d: d.error or 0.0) if errors else None
     at = next((k for k, d in enumerate(drawn) if d is worst), None)
-    if worst is not None and compact(worst.error) != "0" and at is not None:
+    if worst is not None and worst.error is not None and compact(worst.error) != "0" and at is not None:
         return at
     badness = [math.inf if d.message else (d.error or 0.0) for d in drawn]
     return badness.index(max(badness)) if badness else 0

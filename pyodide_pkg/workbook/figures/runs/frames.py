@@ -52,7 +52,8 @@ def frame(d: Drawn) -> tuple[str, str]:
     below = message(c, d.message)
     want = d.want
     yours = (f"yours is ({compact(got[0])}, {compact(got[1])}, {compact(math.degrees(got[2]))}°), which puts B at "
-             f"({compact(mine[0])}, {compact(mine[1])})" if got is not None else "your function gave no pose to draw")
+             f"({compact(mine[0])}, {compact(mine[1])})" if got is not None and mine is not None
+             else "your function gave no pose to draw")
     description = with_message(
         f"{d.label}: A at ({compact(a[0])}, {compact(a[1])}) facing {compact(math.degrees(a[2]))}°, B at "
         f"({compact(b[0])}, {compact(b[1])}) facing {compact(math.degrees(b[2]))}°; B seen from A is "

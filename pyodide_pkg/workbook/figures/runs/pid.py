@@ -26,7 +26,7 @@ def frame(d: Drawn) -> tuple[str, str]:
     for y in (0.0, 0.5, 1.0, 1.5, 2.0):
         c.line((0, y), (duration, y), "wb-fig-grid")
         c.text((0, y), f"{y:g}", "wb-fig-label wb-fig-small wb-fig-muted", dx=-6, dy=4, anchor="end")
-    for t in range(0, int(duration) + 1):
+    for t in range(int(duration) + 1):
         c.text((t, Y_RANGE[0]), f"{t} s", "wb-fig-label wb-fig-small wb-fig-muted", dy=16)
     c.line((0, 1), (duration, 1), "wb-fig-b wb-fig-dash wb-fig-thin")
     c.text((duration, 1), "target", "wb-fig-label wb-fig-small wb-fig-b", dx=-4, dy=-6, anchor="end")
@@ -36,7 +36,7 @@ def frame(d: Drawn) -> tuple[str, str]:
     if len(got) > 1:
         c.polyline(_curve(got), f"{YOURS} wb-fig-thick")
     if got and (d.message or len(got) < len(d.want)):
-        c.dot(_curve(got)[-1], 5, f"wb-fig-bad wb-fig-solid")
+        c.dot(_curve(got)[-1], 5, "wb-fig-bad wb-fig-solid")
     below = message(c, d.message)
     gains = f"Kp = {compact(Kp)}, Ki = {compact(Ki)}, Kd = {compact(Kd)}" + (
         f", output held in [{compact(limits[0])}, {compact(limits[1])}]" if limits else "")

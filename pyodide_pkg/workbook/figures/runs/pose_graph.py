@@ -25,7 +25,7 @@ def _poses(c: Canvas, xs, row: str, cls: str, name: str) -> None:
 def _edges(c: Canvas, xs, edges) -> None:
     """Each edge as an arc over the 'before' row, from pose i to pose j."""
     y = ROWS["before"]
-    for n, (i, j, z, w) in enumerate(edges):
+    for n, (i, j, z, _w) in enumerate(edges):
         a, b = xs[int(i)], xs[int(j)]
         rise = 0.35 + 0.22 * n
         mid = (a + b) / 2
