@@ -30,6 +30,24 @@ def open_chapter(page: Page, site_url: str, n: int, wait_ready: bool = True) -> 
         wait_runtime(page)
 
 
+def go_instantly(page: Page, site_url: str, n: int) -> None:
+    """Open chapter ``n`` from the page the tab is on by mkdocs-material's instant navigation (a
+    same-document swap, as a learner's click on a link makes): the grader the tab booted keeps
+    running, so a test that visits many chapters boots Python once. Returns when every exercise
+    of the new page has started and the grader is ready."""
+    url = site_url + CHAPTERS[n]
+    page.evaluate("() => { window.__sameDocument = true; }")
+    page.evaluate("u => { const a = document.createElement('a'); a.href = u; document.body.append(a); a.click(); a.remove(); }",
+                  url)
+    page.wait_for_url(url)
+    page.wait_for_function(
+        "p => { const els = [...document.querySelectorAll('[data-exercise-id]')];"
+        " return els.length > 0 && els.every(e => e.dataset.exerciseId.startsWith(p) && e.dataset.wbReady); }",
+        arg=f"{n}.")
+    assert page.evaluate("() => window.__sameDocument === true"), "expected an instant (same-document) navigation"
+    wait_runtime(page)
+
+
 def wait_runtime(page: Page, state: str = "ready", timeout: float = 120_000) -> None:
     # Generous: on a 2-core machine busy with other work, booting Python can take over a minute.
     page.wait_for_function(

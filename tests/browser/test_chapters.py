@@ -6,7 +6,7 @@ from __future__ import annotations
 
 import pytest
 
-from helpers import open_chapter, solve
+from helpers import go_instantly, open_chapter, solve
 from workbook import bank
 
 
@@ -27,8 +27,11 @@ def test_chapter_page_solves_one_of_each_kind(page, site_url, chapter):
 
 def test_every_derive_key_is_accepted_in_the_page(page, site_url):
     """Every Derive answer, typed as the derivation's worked answer, graded by the worker."""
-    for chapter in bank.chapters():
-        open_chapter(page, site_url, chapter)
+    for i, chapter in enumerate(bank.chapters()):
+        if i == 0:
+            open_chapter(page, site_url, chapter)
+        else:  # one grader for the whole tour: the next chapter by instant navigation
+            go_instantly(page, site_url, chapter)
         for ex in bank.chapter(chapter):
             if ex.kind == "derive":
                 assert solve(page, ex) == "correct", ex.id
