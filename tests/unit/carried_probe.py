@@ -181,7 +181,8 @@ def probe_chain_of_chains(counts: Counter, rng: random.Random) -> None:
 
 def probe_undefined(counts: Counter) -> None:
     """Values that leave the next quantity undefined never earn "carried"."""
-    cases = [("4.2", "d", ((0.0,), (0.0,)), None), ("4.3", "q", 0.0, None), ("4.7", "q", 0.0, None),
+    zero = ((0.0,), (0.0,))
+    cases = [("4.2", "d", zero, None), ("4.3", "d", zero, None), ("4.7", "d", zero, None),
              ("6.3", "t2", 180.0, "θ1"), ("6.3", "t2", -180.0, "θ1")]
     for ex_id, name, value, asked in cases:
         for v in variants(ex_id, max(DRAWS // 3, 20)):

@@ -115,7 +115,7 @@ def test_a_division_by_zero_is_said_not_hidden(ex_id):
     ex = bank.get(ex_id)
     key = ex.answer.key
     answer = [["7"] * len(row) for row in key] if isinstance(key, tuple) else "7"
-    said = grade(ex, answer, mine={"q": "0"})
+    said = grade(ex, answer, mine={"d": ex.step_answers["d"].typed(((0.0,), (0.0,)))})
     assert said["tag"] == "undefined" and "divides by zero" in said["message"], said
 
 

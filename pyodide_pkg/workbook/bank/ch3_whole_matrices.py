@@ -15,7 +15,7 @@ from ..answer_kinds.matrix import matrix
 from ..chains import Uses
 from ..kinds.derive import Derive
 from ..number_format import bmatrix, fmt
-from ..reference.ekf import motion_jacobian, motion_model
+from ..reference.ekf import ekf_predict, motion_jacobian, motion_model  # noqa: F401 (ekf_predict: the doctests)
 from ..reference.linalg import add, identity, matmul, sub, transpose
 from ..steps import Step
 from ..variants import Choice, Param, Vary

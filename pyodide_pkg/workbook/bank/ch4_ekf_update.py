@@ -12,7 +12,7 @@ from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fixed, fmt, paren, relation, shown
 from ..reference.domain import bearing_of
-from ..reference.ekf import ekf_update, innovation, range_bearing
+from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_bearing  # noqa: F401 (the doctests)
 from ..steps import Step
 from ..variants import Param, Vary
 from . import column

@@ -259,9 +259,10 @@ class Parser:
 
 
 def _name(name: str) -> str:
-    """A name as a learner types it in a message: θ for theta."""
+    """A name as a learner types it in a message: θ for theta, θ1 for theta1."""
     greek = {word: letter for letter, word in GREEK.items() if letter not in "ϕ"}
-    return greek.get(name, name)
+    stem = name.rstrip("0123456789")
+    return greek.get(stem, stem) + name[len(stem):]
 
 
 def _has_unit(node: tuple) -> bool:

@@ -22,7 +22,11 @@ class Undefined(ArithmeticError):
 
 
 def bearing_of(dx: float, dy: float) -> float:
-    """atan2(dy, dx), refused where the offset has no direction (atan2(0, 0) would give 0)."""
+    """atan2(dy, dx), refused where the offset has no direction (atan2(0, 0) would give 0).
+
+    >>> round(math.degrees(bearing_of(3.0, 4.0)), 2)
+    53.13
+    """
     if dx == 0 and dy == 0:
         raise Undefined("the offset (0, 0) has no direction, so no bearing is defined")
     return math.atan2(dy, dx)
