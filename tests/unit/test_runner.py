@@ -93,3 +93,35 @@ def test_memory_error_is_a_verdict_that_names_it():
     assert verdict["message"].startswith("Your code ran out of memory on rotate_2d(3, 0, 1.570796)")
     rows = verdict["data"]["tests"]
     assert rows[0]["actual"] == "raised MemoryError" and rows[1]["actual"] == "not run"
+
+
+@pytest.mark.parametrize("body", ["raise ValueError('no')", "raise MemoryError", "return 'x' * 10 ** 15",
+                                  "return 5", "return str(self)"])
+@pytest.mark.parametrize("where", ["in the function", "while loading"])
+def test_an_exception_whose_message_fails_is_a_plain_verdict(body, where):
+    """Issue 28: an exception whose __str__ raised (MemoryError too) escaped the runner: "sandbox
+    crashed" or "out of memory" instead of a verdict about the learner's code."""
+    ex = bank.get("0.5")
+    cls = f"class Odd(Exception):\n    def __str__(self):\n        {body}\n"
+    if where == "in the function":
+        code = cls + "def rotate_2d(x, y, theta):\n    raise Odd()\n"
+    else:
+        code = cls + "raise Odd()\n" + ex.solution
+    reply = run_build(ex, code)
+    assert reply["ok"], reply
+    value = reply["value"]
+    assert value["status"] == "incorrect"
+    assert "Odd" in value["feedback"] and "memory" not in value["feedback"]
+    if where == "in the function":
+        assert value["tests"][0]["actual"] == "raised Odd"
+        assert "its message cannot be shown" in value["tests"][0]["message"]
+
+
+def test_a_run_still_stops_at_an_interrupt_raised_while_a_message_is_made():
+    ex = bank.get("0.5")
+    code = ("class Odd(Exception):\n    def __str__(self):\n        raise KeyboardInterrupt\n"
+            "def rotate_2d(x, y, theta):\n    raise Odd()\n")
+    from workbook_sandbox.runner import run
+    report = run({"function": "rotate_2d", "harness": "call", "cases": [[1, 2, 0], [3, 4, 0]]}, code)
+    assert report["stopped"] == "interrupt"
+    assert report["cases"][0]["error"]["type"] == "Odd" and report["cases"][1] == {"skipped": True}
