@@ -40,15 +40,17 @@ fails.
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import copy
+import importlib
 import io
 import json
 import traceback
 from typing import Any, Callable
 
 from . import harness
-from .restore import STDLIB_HOMES, Restore
+from .restore import PLAIN_HOMES, STDLIB_HOMES, Restore
 from .values import clip, encode
 
 FILENAME = "<your code>"
@@ -187,8 +189,25 @@ class Run:
             out["partial"] = value
         return out
 
+    def preimport(self) -> None:
+        """Import, before the restore notes the interpreter, the watched modules the code imports
+        (a first ``import numpy`` would otherwise come after the snapshot, and what the run
+        changed in NumPy would stay)."""
+        try:
+            tree = ast.parse(self.code)
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            return
+        names = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
+        names |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom) and node.level == 0
+                  and node.module}
+        for name in sorted(names):
+            if name.split(".")[0] in PLAIN_HOMES:
+                with contextlib.suppress(Exception, KeyboardInterrupt):
+                    importlib.import_module(name)
+
     def run(self, restore: Restore) -> dict[str, Any]:
         cases = self.report["cases"]
+        self.preimport()
         with contextlib.redirect_stdout(self.out), restore:
             fn = None
             try:

@@ -125,3 +125,23 @@ def test_a_run_still_stops_at_an_interrupt_raised_while_a_message_is_made():
     report = run({"function": "rotate_2d", "harness": "call", "cases": [[1, 2, 0], [3, 4, 0]]}, code)
     assert report["stopped"] == "interrupt"
     assert report["cases"][0]["error"]["type"] == "Odd" and report["cases"][1] == {"skipped": True}
+
+
+NUMPY_GOOD = ("import numpy as np\n\ndef rotate_2d(x, y, theta):\n"
+              "    r = np.array([[np.cos(theta), -np.sin(theta)], [np.sin(theta), np.cos(theta)]], dtype='float64')\n"
+              "    v = r @ np.array([x, y], dtype='float64')\n    return (float(v[0]), float(v[1]))\n")
+
+
+@pytest.mark.parametrize("tamper", [
+    "numpy.sctypeDict['float64'] = numpy.float16",
+    "numpy.sctypeDict.update(float64=numpy.float16, double=numpy.float16)",
+    "numpy.sctypeDict.clear()",
+])
+def test_plain_code_cannot_change_numpy_for_later_runs(tamper):
+    """Issue 28: a write into one of NumPy's module-level dicts outlived the run."""
+    from workbook.build_plain import plain
+    ex = bank.get("0.5")
+    code = f"import numpy\n{tamper}\ndef rotate_2d(x, y, theta):\n    return (x, y)\n"
+    assert plain(code)  # the sandbox is kept after it: the restore must undo it
+    assert run_build(ex, code)["value"]["status"] == "incorrect"
+    assert run_build(ex, NUMPY_GOOD)["value"]["status"] == "correct"
