@@ -125,7 +125,7 @@ def read_report(raw: Any, count: int, figure_count: int = 0) -> Report:
     cases = [_case(case) for case in raw.get("cases", [])[:count]]
     figure = drawn if isinstance(drawn := raw.get("figure"), list) else []
     stdout = _text(raw.get("stdout"), STDOUT_CAP)
-    if raw.get("cut") is True or len(raw.get("stdout") or "") > STDOUT_CAP:
+    if raw.get("cut") is True or (isinstance(raw.get("stdout"), str) and len(raw["stdout"]) > STDOUT_CAP):
         stdout += "\n… (output cut)"
     stopped = raw.get("stopped") if raw.get("stopped") in ("interrupt", "memory") else None
     return Report({**_error(load), "phase": "syntax" if load.get("phase") == "syntax" else "load"}

@@ -49,8 +49,13 @@ from typing import Any, cast
 
 _FIRST = (vars(builtins), globals())  # what the restore itself looks names up in
 # Packages whose classes, containers and functions are watched besides every module's names.
+# The modules plain code may import (workbook.build_plain) are watched too, NumPy among them: a
+# run that writes into one of their module-level dicts (``numpy.sctypeDict['float64'] = ...``)
+# is undone. They are imported before the run's snapshot (runner.preimport), so that a run that
+# imports one for the first time is undone as well.
+PLAIN_HOMES = ("numpy", "cmath", "itertools", "statistics", "fractions", "collections", "typing")
 STDLIB_HOMES = ("random", "math", "copy", "json", "io", "contextlib", "traceback", "dataclasses", "functools",
-                "workbook_sandbox")
+                "workbook_sandbox") + PLAIN_HOMES
 _MISSING = object()
 _NUMPY_PRINT_DEFAULTS = dict(edgeitems=3, infstr="inf", linewidth=75, nanstr="nan", precision=8, suppress=False,
                              threshold=1000, formatter=None, sign="-", floatmode="maxprec", legacy=False)

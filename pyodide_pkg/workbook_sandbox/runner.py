@@ -40,8 +40,10 @@ fails.
 
 from __future__ import annotations
 
+import ast
 import contextlib
 import copy
+import importlib
 import io
 import json
 import traceback
@@ -49,7 +51,7 @@ from collections.abc import Callable
 from typing import Any
 
 from . import harness
-from .restore import STDLIB_HOMES, Restore
+from .restore import PLAIN_HOMES, STDLIB_HOMES, Restore
 from .values import clip, encode
 
 FILENAME = "<your code>"
@@ -90,13 +92,19 @@ def error_info(err: BaseException, source_lines: list[str]) -> dict[str, Any]:
             "traceback": clip("\n".join(lines), TRACEBACK_CAP)}
 
 
+UNSHOWN = "(its message cannot be shown)"
+
+
 def _message(err: BaseException) -> str:
+    """The error's message; when its ``__str__`` fails (raises, even MemoryError, or returns no
+    string), a note saying so: that is the learner's code, not the sandbox, failing. Only an
+    interrupt goes on (the page's, at the time limit, or the code's own), to stop the run."""
     try:
         return clip(str(err), MESSAGE_CAP)
-    except BaseException as inner:
-        if isinstance(inner, (KeyboardInterrupt, MemoryError)):
-            raise
-        return "(its message cannot be shown)"
+    except KeyboardInterrupt:
+        raise
+    except BaseException:
+        return UNSHOWN
 
 
 class _Stop(Exception):
@@ -121,6 +129,15 @@ class Run:
         self.out = _CappedIO()
         self.report: dict[str, Any] = {"load": None, "missing": False, "cases": [], "stopped": None}
 
+    def info(self, err: BaseException) -> dict[str, Any]:
+        """:func:`error_info`; an interrupt while the error's message is made stops the run."""
+        try:
+            return error_info(err, self.lines)
+        except KeyboardInterrupt:
+            name = clip(type(err).__name__, 60)
+            raise _Stop("interrupt", {"type": name, "message": UNSHOWN, "line": None,
+                                      "traceback": f"{name}: {UNSHOWN}"}) from None
+
     def guarded(self, action: Callable[[], Any]) -> tuple[bool, Any]:
         """Run ``action``: (True, its result), or (False, the error's info). Stops the run on an interrupt
         or when memory runs out."""
@@ -129,11 +146,11 @@ class Run:
         except harness.Partial as stop:  # a closed-loop driver stopped: the function's own error, and the trajectory
             return True, stop
         except MemoryError as err:
-            raise _Stop("memory", error_info(err, self.lines)) from None
+            raise _Stop("memory", self.info(err)) from None
         except KeyboardInterrupt as err:
-            raise _Stop("interrupt", error_info(err, self.lines)) from None
+            raise _Stop("interrupt", self.info(err)) from None
         except BaseException as err:  # SystemExit, GeneratorExit and the learner's own BaseException subclasses too
-            return False, error_info(err, self.lines)
+            return False, self.info(err)
 
     def load(self) -> Callable[..., Any] | None:
         try:
@@ -167,14 +184,31 @@ class Run:
     def partial(self, stop: harness.Partial) -> dict[str, Any]:
         """What a closed-loop driver had when the function failed, and the function's error."""
         cause = stop.__cause__ if stop.__cause__ is not None else stop  # drivers let interrupts through
-        out: dict[str, Any] = {"error": error_info(cause, self.lines)}
+        out: dict[str, Any] = {"error": self.info(cause)}
         ok, value = self.guarded(lambda: encode(stop.so_far))
         if ok:
             out["partial"] = value
         return out
 
+    def preimport(self) -> None:
+        """Import, before the restore notes the interpreter, the watched modules the code imports
+        (a first ``import numpy`` would otherwise come after the snapshot, and what the run
+        changed in NumPy would stay)."""
+        try:
+            tree = ast.parse(self.code)
+        except (SyntaxError, ValueError, RecursionError, MemoryError):
+            return
+        names = {alias.name for node in ast.walk(tree) if isinstance(node, ast.Import) for alias in node.names}
+        names |= {node.module for node in ast.walk(tree) if isinstance(node, ast.ImportFrom) and node.level == 0
+                  and node.module}
+        for name in sorted(names):
+            if name.split(".")[0] in PLAIN_HOMES:
+                with contextlib.suppress(Exception, KeyboardInterrupt):
+                    importlib.import_module(name)
+
     def run(self, restore: Restore) -> dict[str, Any]:
         cases = self.report["cases"]
+        self.preimport()
         with contextlib.redirect_stdout(self.out), restore:
             fn = None
             try:

@@ -84,3 +84,14 @@ def test_a_report_from_the_real_runner_judges_like_a_native_run():
     for code in (EX.solution, EX.starter, "def rotate_2d(x, y, theta):\n    return 1 / 0\n"):
         report = runner.run_json(EX.job(), code)
         assert judge(report)["value"] == EX.check(code).to_dict()
+
+
+@pytest.mark.parametrize("field, bad", [("stdout", 5), ("stdout", ["a"]), ("stdout", {"a": 1}), ("cut", "yes"),
+                                        ("stopped", 3), ("missing", "no"), ("load", 7)])
+def test_a_report_field_of_the_wrong_type_still_gives_a_verdict_on_the_values(field, bad):
+    """Issue 28: `stdout` a number made the grader fail "unexpectedly (TypeError)"."""
+    reply = judge(report_of(true_outputs(), **{field: bad}))
+    assert reply["ok"], reply
+    assert reply["value"]["status"] == "correct"
+    wrong = judge(report_of([[9.0, 9.0]] * len(true_outputs()), **{field: bad}))
+    assert wrong["ok"] and wrong["value"]["status"] == "incorrect"

@@ -91,3 +91,59 @@ def test_memory_error_is_a_verdict_that_names_it():
     assert verdict["message"].startswith("Your code ran out of memory on rotate_2d(3, 0, 1.570796)")
     rows = verdict["data"]["tests"]
     assert rows[0]["actual"] == "raised MemoryError" and rows[1]["actual"] == "not run"
+
+
+def via_api(code):
+    return json.loads(handle(json.dumps({"op": "run", "exercise": "0.5", "code": code})))
+
+
+@pytest.mark.parametrize("body", ["raise ValueError('no')", "raise MemoryError", "return 'x' * 10 ** 15",
+                                  "return 5", "return str(self)"])
+@pytest.mark.parametrize("where", ["in the function", "while loading"])
+def test_an_exception_whose_message_fails_is_a_plain_verdict(body, where):
+    """Issue 28: an exception whose __str__ raised (MemoryError too) escaped the runner: "sandbox
+    crashed" or "out of memory" instead of a verdict about the learner's code."""
+    ex = bank.get("0.5")
+    cls = f"class Odd(Exception):\n    def __str__(self):\n        {body}\n"
+    if where == "in the function":
+        code = cls + "def rotate_2d(x, y, theta):\n    raise Odd()\n"
+    else:
+        code = cls + "raise Odd()\n" + ex.solution
+    reply = via_api(code)
+    assert reply["ok"], reply
+    verdict = reply["value"]
+    assert verdict["status"] == "incorrect", verdict
+    assert "memory" not in verdict["message"] and "crash" not in verdict["message"], verdict["message"]
+    if where == "while loading":
+        assert "Odd" in verdict["message"], verdict["message"]
+    else:
+        row = verdict["data"]["tests"][0]
+        assert row["actual"] == "raised Odd" and "its message cannot be shown" in row["message"], row
+
+
+def test_a_run_still_stops_at_an_interrupt_raised_while_a_message_is_made():
+    code = ("class Odd(Exception):\n    def __str__(self):\n        raise KeyboardInterrupt\n"
+            "def rotate_2d(x, y, theta):\n    raise Odd()\n")
+    from workbook_sandbox.runner import run
+    report = run({"function": "rotate_2d", "harness": "call", "cases": [[1, 2, 0], [3, 4, 0]]}, code)
+    assert report["stopped"] == "interrupt"
+    assert report["cases"][0]["error"]["type"] == "Odd" and report["cases"][1] == {"skipped": True}
+
+
+NUMPY_GOOD = ("import numpy as np\n\ndef rotate_2d(x, y, theta):\n"
+              "    r = np.array([[np.cos(theta), -np.sin(theta)], [np.sin(theta), np.cos(theta)]], dtype='float64')\n"
+              "    v = r @ np.array([x, y], dtype='float64')\n    return (float(v[0]), float(v[1]))\n")
+
+
+@pytest.mark.parametrize("tamper", [
+    "numpy.sctypeDict['float64'] = numpy.float16",
+    "numpy.sctypeDict.update(float64=numpy.float16, double=numpy.float16)",
+    "numpy.sctypeDict.clear()",
+])
+def test_plain_code_cannot_change_numpy_for_later_runs(tamper):
+    """Issue 28: a write into one of NumPy's module-level dicts outlived the run."""
+    from workbook.build_plain import plain
+    code = f"import numpy\n{tamper}\ndef rotate_2d(x, y, theta):\n    return (x, y)\n"
+    assert plain(code)  # the sandbox is kept after it: the restore must undo it
+    assert via_api(code)["value"]["status"] == "incorrect"
+    assert via_api(NUMPY_GOOD)["value"]["status"] == "correct", via_api(NUMPY_GOOD)["value"]["message"]

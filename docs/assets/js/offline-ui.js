@@ -45,7 +45,7 @@ function progressBar(role, done, total, label) {
  * `view`: {mode: "announce" | "ask", totalBytes}. "announce": the copy starts by
  * itself in a moment; "ask": it waits for the learner (a metered connection).
  */
-export function showNotice(view, { onStore, onDecline }) {
+export function showNotice(view, { onStore, onDecline, onOK = () => {} }) {
   hideNotice();
   const size = formatSize(view.totalBytes);
   const box = element("div", { role: ROLE.offlineNotice, className: "wb-update wb-offline-notice" });
@@ -53,11 +53,16 @@ export function showNotice(view, { onStore, onDecline }) {
   box.setAttribute("aria-label", "Offline copy");
   const text = element("p");
   if (view.mode === "ask") {
-    text.textContent = `Store the workbook in this browser for offline use? It takes ${size}, and your connection looks metered, so it waits for your word.`;
+    const why = view.metered === false ? "on a phone that may be on mobile data" : "and your connection looks metered";
+    text.textContent = `Store the workbook in this browser for offline use? It takes ${size}, ${why}, so it waits for your word.`;
     box.append(text, button(`Store (${size})`, ROLE.offlineStore, true, onStore), button("Not now", ROLE.offlineDecline, false, onDecline));
   } else {
-    text.textContent = `The workbook will store itself in this browser for offline use: ${size}, starting in a moment.`;
-    box.append(text, button("Don't store", ROLE.offlineDecline, false, onDecline), button("OK", null, false, hideNotice));
+    text.textContent = `The workbook will store itself in this browser for offline use: ${size}, starting in a few seconds (or at OK).`;
+    const ok = () => {
+      hideNotice();
+      onOK();
+    };
+    box.append(text, button("Don't store", ROLE.offlineDecline, false, onDecline), button("OK", null, false, ok));
   }
   document.body.append(box);
 }
@@ -95,6 +100,8 @@ export function drawFooter() {
   } else if (view.state === "copying") {
     line.append(`Storing for offline use · ${formatSize(view.bytes || 0)} of ${total} `);
     line.append(progressBar(ROLE.offlineProgress, view.bytes || 0, view.totalBytes, "Offline copy"));
+    // Declined after it started (or once the notice is gone): the copy stops after its current file.
+    if (footerActions.onDecline) line.append(" ", button("Stop storing", null, false, footerActions.onDecline));
   } else {
     const why = view.state === "failed" ? `Not stored for offline use (${view.message}). ` : "Not stored for offline use. ";
     line.append(why);

@@ -21,7 +21,8 @@ import { ATTR, OFFLINE, RUNTIME, setRootState } from "./contract.js";
 import { drawFooter, hideNotice, remindToExport, setFooter, showNotice, showUpdate } from "./offline-ui.js";
 
 const UPDATE_CHECK_MS = 30 * 60_000;
-const AFTER_READY_MS = 2_000;
+const READ_MS = 8_000; // the notice stays this long before the copy starts by itself
+const NARROW = "(max-width: 600px)"; // a phone's screen: the copy waits for the learner's word there
 const setOffline = (state) => setRootState("offline", state);
 
 // ---- Small local notes (declined, whether persist() was asked) ----------------------
@@ -52,9 +53,15 @@ function notes(siteRoot) {
   };
 }
 
-/** Whether the connection is metered or slow: the copy then waits for consent. */
+/** Whether the connection is metered or slow (Save-Data, cellular, 2G/3G): the copy then waits for consent. */
 export function metered(connection = navigator.connection) {
-  return Boolean(connection && (connection.saveData || /(^|-)2g$|^3g$/.test(connection.effectiveType || "")));
+  return Boolean(connection && (connection.saveData || connection.type === "cellular"
+    || /(^|-)2g$|^3g$/.test(connection.effectiveType || "")));
+}
+
+/** Whether the copy waits for the learner's word: a metered connection, or a phone's narrow screen. */
+function waitsForWord() {
+  return metered() || Boolean(window.matchMedia?.(NARROW).matches);
 }
 
 function runtimeSettled() {
@@ -141,7 +148,9 @@ export function registerOffline(siteRoot, progress = null) {
   });
 
   let worker = null;
+  let started = false; // the copy was started (by the learner, or after the notice)
   function store() {
+    started = true;
     note.set("declined", false);
     hideNotice();
     setOffline(OFFLINE.caching);
@@ -181,22 +190,24 @@ export function registerOffline(siteRoot, progress = null) {
         setFooter({ ...status, state: "declined" }, actions);
         return;
       }
-      if (metered()) {
+      if (waitsForWord()) {
         setOffline(OFFLINE.asking);
         setFooter({ ...status, state: "partial" }, actions);
         await runtimeSettled();
         if (note.get("declined") || last.state !== "partial") return;
-        showNotice({ mode: "ask", totalBytes: status.totalBytes }, actions);
+        showNotice({ mode: "ask", totalBytes: status.totalBytes, metered: metered() }, actions);
         return;
       }
-      // Announced at ready, started a little later (unless declined meanwhile).
+      // Announced at ready, started once the notice has been there long enough to read (or at
+      // its OK), unless declined meanwhile; "Stop storing" in the footer declines it later.
       setOffline(OFFLINE.caching);
       setFooter({ ...status, state: "copying" }, actions);
       await runtimeSettled();
-      showNotice({ mode: "announce", totalBytes: status.totalBytes }, actions);
-      await delay(AFTER_READY_MS);
+      const agreed = new Promise((resolve) => showNotice({ mode: "announce", totalBytes: status.totalBytes },
+        { ...actions, onOK: resolve }));
+      await Promise.race([delay(READ_MS), agreed]);
       await idle();
-      if (note.get("declined") || last.state === "complete") return;
+      if (note.get("declined") || last.state === "complete" || started) return;
       store();
     })
     .catch(() => {

@@ -183,12 +183,21 @@ export class Progress {
   }
 
   update(id, patch) {
-    const next = { ...this.get(id), ...patch, updated: Date.now() };
+    const next = { ...this.get(id), ...patch, updated: this.stamp(id) };
     for (const [k, v] of Object.entries(next)) if (v === undefined) delete next[k];
     this.data.exercises[id] = next;
     this.persist();
     this.notify(id, next);
     return next;
+  }
+
+  /**
+   * The time a write of `id` is stamped with: now, or just after what is already stored when
+   * that is later (a record stamped by a clock that ran ahead, in another tab or an imported
+   * file) or after the last erase. A later write on this device always counts as the newer.
+   */
+  stamp(id) {
+    return Math.max(Date.now(), (this.get(id).updated ?? 0) + 1, (this.data.reset ?? 0) + 1);
   }
 
   notify(id, record) {
@@ -292,7 +301,11 @@ export class Progress {
 
   /** Forget every exercise's record (answers, code, solved marks), in every tab. */
   reset() {
-    this.data = { version: SCHEMA_VERSION, reset: Date.now(), exercises: {} };
+    // Stamped after every record this tab knows of, however far ahead its clock ran, so that
+    // the erase drops them all here, in storage and in every other tab's copy.
+    this.flush();
+    const latest = Math.max(0, ...Object.values(this.data.exercises).map((r) => r.updated ?? 0));
+    this.data = { version: SCHEMA_VERSION, reset: Math.max(Date.now(), latest + 1, (this.data.reset ?? 0) + 1), exercises: {} };
     this.persist();
     this.notify(null, null);
   }

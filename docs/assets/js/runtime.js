@@ -65,10 +65,17 @@ export class Runtime {
     this.ready = false;
     this.startedAt = early ? early.started : performance.now();
     this.setState(RUNTIME.loading);
-    this.worker = early ? early.worker : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL);
-    this.worker.onmessage = (event) => this.receive(event.data);
-    this.worker.onerror = (event) => {
+    const worker = early ? early.worker : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL);
+    this.worker = worker;
+    this.spawns = (this.spawns || 0) + 1; // workers started, the first included
+    // A worker that was replaced is not heard any more: a late message or error of a
+    // terminated one (its Python stopped mid-run) must not fail or answer for its successor.
+    worker.onmessage = (event) => {
+      if (worker === this.worker) this.receive(event.data);
+    };
+    worker.onerror = (event) => {
       event.preventDefault?.();
+      if (worker !== this.worker) return;
       if (!this.ready) {
         this.fail("The Python runtime could not start" + (event.message ? `: ${event.message}` : "."));
         return;
@@ -219,6 +226,7 @@ export class Runtime {
 
   /** A fresh worker in place of this one; pending requests are sent to it once it is ready. */
   replace() {
+    this.worker.onmessage = this.worker.onerror = null;
     this.worker.terminate();
     this.inFlight = null;
     for (const other of this.pending.values()) {

@@ -38,11 +38,12 @@ async function runBuild(grader, { code, ...request }, options) {
   if (!cases.ok) return cases;
   const { job, plain, limit } = cases.value;
   const box = startSandbox(grader.workerURL);
-  const interrupts = box.interrupts;
+  const { interrupts, restarts } = box;
   const ran = await box.request({ op: "run", job, code }, { ...options, limitMs: limit * 1000 || options.limitMs });
   // Replace the sandbox after code that may have left a trace, and after a run it stopped
-  // (an interrupt may land in the runner's own code). A terminated one was replaced already.
-  if (!plain || ran.recycle || box.interrupts !== interrupts) {
+  // (an interrupt may land in the runner's own code). A terminated one (a time-out past the
+  // interrupt's grace, a crash) was replaced already: one replacement per stopped run, not two.
+  if (box.restarts === restarts && (!plain || ran.recycle || box.interrupts !== interrupts)) {
     box.recycles = (box.recycles || 0) + 1;
     box.replace();
   }
