@@ -1,0 +1,26 @@
+// The theme's navigation drawer (below 76.25em the site's menu slides in from the
+// side): while it is closed it sits off-screen, so it leaves the tab order and the
+// accessibility tree (inert) and comes back the moment it opens. Wider, the same
+// element is the visible left-hand menu and stays as it is.
+
+const NARROW = "(max-width: 76.2344em)"; // the theme's breakpoint: the menu is a drawer below 76.25em
+
+let media = null;
+
+/** Make the closed drawer inert, the open (or wide) menu not. */
+export function updateDrawer() {
+  const toggle = document.querySelector('input[data-md-toggle="drawer"]');
+  const closed = Boolean(media?.matches) && !toggle?.checked;
+  for (const el of document.querySelectorAll(".md-sidebar--primary")) el.inert = closed;
+}
+
+export function initDrawer() {
+  if (media) return updateDrawer();
+  media = matchMedia(NARROW);
+  media.addEventListener("change", updateDrawer);
+  // The drawer's checkbox changes by its labels (menu button, overlay) and, from other code, by click().
+  document.addEventListener("change", (event) => {
+    if (event.target?.matches?.('input[data-md-toggle="drawer"]')) updateDrawer();
+  });
+  updateDrawer();
+}
