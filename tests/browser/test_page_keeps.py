@@ -165,3 +165,28 @@ def test_no_display_formula_is_cut_at_1280_px(page, site_url):
         if over:
             cut[n] = over
     assert cut == {}, cut
+
+
+FOCUSED = """() => {
+  const el = document.activeElement;
+  if (!el || el === document.body) return null;
+  const r = el.getBoundingClientRect();
+  const s = getComputedStyle(el);
+  const shown = r.width > 0 && r.height > 0 && r.bottom > 0 && r.right > 0
+    && r.top < innerHeight && r.left < innerWidth && s.visibility !== 'hidden' && Number(s.opacity) > 0;
+  const ring = (s.outlineStyle !== 'none' && parseFloat(s.outlineWidth) > 0) || s.boxShadow !== 'none';
+  return { what: el.outerHTML.slice(0, 120), shown, ring };
+}"""
+
+
+def test_every_tab_stop_is_visible_and_ringed(page, site_url):
+    lost = {}
+    for width, height in ((360, 740), (1280, 800)):
+        page.set_viewport_size({"width": width, "height": height})
+        open_chapter(page, site_url, 0)
+        for stop in range(60):
+            page.keyboard.press("Tab")
+            got = page.evaluate(FOCUSED)
+            if got and not (got["shown"] and got["ring"]):
+                lost.setdefault(width, []).append((stop + 1, got))
+    assert lost == {}, lost
