@@ -58,7 +58,6 @@ def test_in_page_links_keep_every_verdict_and_back_to_exercise_focuses_its_answe
     header_bottom = page.evaluate("() => document.querySelector('.md-header').getBoundingClientRect().bottom")
     heading_top = page.evaluate("() => document.getElementById('ex-3-7-title').getBoundingClientRect().top")
     assert header_bottom <= heading_top < 800, (header_bottom, heading_top)
-    assert page.url.endswith("#ex-3-7") or page.url.endswith("#ex-3-7-title"), page.url
 
     # The table of contents, twice: still the same exercises, the same verdicts
     for target in ("ex-3-8-title", "ex-3-7-title"):
@@ -184,6 +183,8 @@ def test_every_tab_stop_is_visible_and_ringed(page, site_url):
     for width, height in ((360, 740), (1280, 800)):
         page.set_viewport_size({"width": width, "height": height})
         open_chapter(page, site_url, 0)
+        # measured as they are, not halfway through the theme's transitions (the skip link fades in)
+        page.add_style_tag(content="*, *::before, *::after { transition: none !important; }")
         for stop in range(60):
             page.keyboard.press("Tab")
             got = page.evaluate(FOCUSED)
