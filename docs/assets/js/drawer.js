@@ -1,7 +1,10 @@
 // The theme's navigation drawer (below 76.25em the site's menu slides in from the
 // side): while it is closed it sits off-screen, so it leaves the tab order and the
 // accessibility tree (inert) and comes back the moment it opens. Wider, the same
-// element is the visible left-hand menu and stays as it is.
+// element is the visible left-hand menu and stays as it is. The search's results
+// box is a tab stop of its own even while closed and empty (an invisible stop
+// after the search field): it leaves the tab order; its results are links, and
+// the arrow keys move through them from the search field.
 
 const NARROW = "(max-width: 76.2344em)"; // the theme's breakpoint: the menu is a drawer below 76.25em
 
@@ -12,6 +15,7 @@ export function updateDrawer() {
   const toggle = document.querySelector('input[data-md-toggle="drawer"]');
   const closed = Boolean(media?.matches) && !toggle?.checked;
   for (const el of document.querySelectorAll(".md-sidebar--primary")) el.inert = closed;
+  for (const el of document.querySelectorAll(".md-search__scrollwrap[tabindex]")) el.tabIndex = -1;
 }
 
 export function initDrawer() {
