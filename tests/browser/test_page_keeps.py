@@ -165,9 +165,11 @@ def test_no_display_formula_is_cut_at_1280_px(page, site_url):
 FOCUSED = """() => {
   const focused = document.activeElement;
   if (!focused || focused === document.body) return null;
-  // A visually hidden input shows through its label; the code editor draws its ring on its frame.
-  const label = focused.id && focused.matches('input') ? document.querySelector(`label[for="${focused.id}"]`) : null;
-  const el = (label && label.getClientRects().length ? label : null) || focused.closest('.cm-editor') || focused;
+  // A visually hidden option (the palette switch) shows through its visible label; the code
+  // editor draws its ring on its frame.
+  const hiddenInput = focused.matches('input') && focused.getBoundingClientRect().width <= 1;
+  const label = hiddenInput ? [...(focused.form || document).querySelectorAll('label')].find((l) => l.getClientRects().length) : null;
+  const el = label || focused.closest('.cm-editor') || focused;
   const r = el.getBoundingClientRect();
   const s = getComputedStyle(el);
   const shown = r.width > 0 && r.height > 0 && r.bottom > 0 && r.right > 0
