@@ -205,7 +205,7 @@ def build_hand_in(student: str, code: str | None, claimed: bool = True) -> bytes
 def test_class_page_runs_build_code_again(page, site_url):
     """The bank's solution is verified; the starter code, code that never ends (before a good
     file: the sandbox is replaced, the next learner's run is not touched), a claim with no code
-    and a wrong solution never claimed are not."""
+    and the starter never claimed are not."""
     ex = bank.get("0.5")
     assert ex.kind == "build" and ex.starter != ex.solution
     files = [("loop.json", build_hand_in("lou", "while True:\n    pass\n")),
