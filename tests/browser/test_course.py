@@ -2,7 +2,9 @@
 (the same in every browser for one id, different between ids, recomputed by the class page),
 the hand-in carries the answers, and the class page re-grades every file: an edited file's
 claimed solve is "not verified", the common mistakes are counted, the table downloads as CSV,
-and a malformed or hostile file is named and skipped. axe finds nothing on the new pages."""
+and a malformed or hostile file is named and skipped. A Build solve's code is run again in the
+sandbox: only code that passes is verified, and code that never ends stops alone.
+axe finds nothing on the new pages."""
 
 from __future__ import annotations
 
@@ -17,7 +19,7 @@ from playwright.sync_api import Page
 
 from helpers import role, wait_runtime
 from test_a11y import OVERFLOW, audit
-from workbook import bank
+from workbook import api, bank
 from workbook.assignment import assigned_variant
 
 SLOW = 180_000
@@ -186,6 +188,44 @@ def test_class_page_regrades_three_learners(page, site_url):
     assert by[("ana", "0.1")]["verified"] == "yes" and by[("ana", "0.1")]["attempts"] == "2"
     assert by[("ben", "0.1")]["verified"] == "no" and int(by[("ben", "0.1")]["variant"]) == assigned_variant(CODE, "ben", "0.1")
     assert len(rows) == 3 * len(SET)
+
+
+def build_hand_in(student: str, code: str | None, claimed: bool = True) -> bytes:
+    """A hand-in of 0.1 and the Build exercise 0.5, whose record holds `code` (claimed solved when `claimed`)."""
+    rec: dict = {"attempts": 1, "updated": int(time.time() * 1000) - 60_000}
+    if code is not None:
+        rec["code"] = code
+    if claimed:
+        rec.update(solved=True, done=[0], clean=[0])
+    data = hand_in(student, {"0.5": rec})
+    data["assignment"]["exercises"] = ["0.1", "0.5"]
+    return json.dumps(data).encode()
+
+
+def test_class_page_runs_build_code_again(page, site_url):
+    """The bank's solution is verified; the starter code, code that never ends (before a good
+    file: the sandbox is replaced, the next learner's run is not touched), a claim with no code
+    and the starter never claimed are not."""
+    ex = bank.get("0.5")
+    assert ex.kind == "build" and ex.starter != ex.solution
+    files = [("loop.json", build_hand_in("lou", "while True:\n    pass\n")),
+             ("starter.json", build_hand_in("sam", ex.starter)),
+             ("good.json", build_hand_in("gil", ex.solution)),
+             ("nocode.json", build_hand_in("nia", None)),
+             ("unclaimed.json", build_hand_in("una", ex.starter, claimed=False))]
+    page.goto(site_url + "class/")
+    page.locator("#wb-class-files").set_input_files([{"name": n, "mimeType": "application/json", "buffer": b} for n, b in files])
+    page.wait_for_function("() => document.querySelector('[data-wb-class]').dataset.wbGraded === '5'", timeout=SLOW)
+    cell = lambda who: page.locator(f"tr[data-wb-student='{who}'] td[data-wb-exercise='0.5']")  # noqa: E731
+    states = {who: cell(who).get_attribute("data-wb-cell") for who in ("lou", "sam", "gil", "nia", "una")}
+    assert states == {"lou": "not-verified", "sam": "not-verified", "gil": "verified", "nia": "not-verified", "una": "unsolved"}
+    assert "passes" in cell("gil").text_content()
+    starter_says = json.loads(api.handle(json.dumps({"op": "run", "exercise": "0.5", "code": ex.starter})))["value"]
+    assert starter_says["status"] == "incorrect" and starter_says["message"] in cell("sam").text_content()
+    assert "did not finish in time" in cell("lou").text_content()
+    assert "no answer or code" in cell("nia").text_content()
+    assert page.locator("td[data-wb-rate='0.5']").text_content().startswith("1 of 5")
+    assert page.evaluate("() => window.workbook.sandbox.restarts + (window.workbook.sandbox.recycles || 0)") >= 1
 
 
 @pytest.mark.parametrize("width", [1280, 360])

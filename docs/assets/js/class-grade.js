@@ -1,10 +1,14 @@
 // The class page's reading and re-grading (docs/class.md, class-page.js): a file is a
 // hand-in (assignment-page.js) or a progress export; every recorded answer to the
 // assignment's numbers is graded again by the same grader, at the variant recomputed from
-// the class code and the student id (never the file's word for it). A claimed solve whose
-// answers do not grade correct is "not verified".
+// the class code and the student id (never the file's word for it). A claimed Build solve's
+// recorded code is run again as a chapter page runs it (sandbox-client.js: the grader's
+// cases, the sandbox's run, the grader's judgement; the sandbox replaced after code that was
+// not plain or was stopped). A claimed solve whose answers do not grade correct, or whose
+// code does not pass, is "not verified".
 
 import { assignedVariant } from "./assignment-hash.js";
+import { ERROR } from "./contract.js";
 import { classKey } from "./assignment-link.js";
 import { isAssigned, isSlips } from "./assignment-schema.js";
 import { EXPORT_FORMAT, cleanRecord, parseImport } from "./progress-schema.js";
@@ -62,12 +66,33 @@ async function grade(runtime, request) {
   return reply.ok ? reply.value : { error: reply.error };
 }
 
+const STOPPED = { [ERROR.timeout]: "did not finish in time", [ERROR.crash]: "crashed the sandbox", [ERROR.memory]: "ran out of memory" };
+
+/**
+ * A claimed Build solve: the record's code run again (`runtime` is withSandbox's). Sets the
+ * cell's verdict and says why in its note; a record of another kind (the grader's
+ * "wrong-op") is left as it is.
+ */
+async function rerun(cell, runtime, id, v, code, onProgress) {
+  const reply = await runtime.request({ op: "run", exercise: id, variant: v, code }, { onProgress });
+  if (!reply.ok) {
+    if (reply.error.kind === ERROR.wrongOp) return;
+    cell.note = STOPPED[reply.error.kind] ? `its code, run again here, ${STOPPED[reply.error.kind]}` : `its code could not be run again here: ${reply.error.message}`;
+    return;
+  }
+  cell.regraded = true;
+  cell.verified = reply.value.status === "correct";
+  cell.note = cell.verified ? "its code, run again here, passes" : `its code, run again here: ${reply.value.message}`;
+}
+
 /**
  * One learner's row: per exercise {variant, claimed, verified, regraded, attempts, hinted,
  * revealed, stepped, carried, slips: {name: n} (re-graded), recordedSlips, note}.
- * `drawing`: the ids that draw variants (Derive).
+ * `drawing`: the ids that draw variants (Derive); `runtime`: the grader with Build runs
+ * through the sandbox (withSandbox); `onRun(id, text)`: a Build run starts (text null) or
+ * reports progress.
  */
-export async function gradeLearner(learner, drawing, runtime) {
+export async function gradeLearner(learner, drawing, runtime, onRun = () => {}) {
   const cells = {};
   for (const id of learner.ids) {
     const r = learner.records[id] ?? {};
@@ -84,7 +109,7 @@ export async function gradeLearner(learner, drawing, runtime) {
         const verdict = await grade(runtime, { exercise: id, variant: v, answer: attempt.answer,
           ...(attempt.steps ? { steps: attempt.steps } : {}), ...(attempt.given ? { given: attempt.given } : {}) });
         if (verdict.error) {
-          cell.note ||= verdict.error.kind === "wrong-op" ? "a code exercise: its runs are not re-run here" : `not re-graded: ${verdict.error.message}`;
+          cell.note ||= verdict.error.kind === "wrong-op" ? "a code exercise: only its recorded code is run again here" : `not re-graded: ${verdict.error.message}`;
           continue;
         }
         cell.regraded = true;
@@ -92,14 +117,23 @@ export async function gradeLearner(learner, drawing, runtime) {
         const slip = verdict.status === "incorrect" ? verdict.data?.slip : null;
         if (slip) cell.slips[slip] = (cell.slips[slip] ?? 0) + 1;
       }
+      if (cell.claimed && !attempts.length && has(r.done, v)) {
+        if (typeof r.code === "string") {
+          onRun(id, null);
+          await rerun(cell, runtime, id, v, r.code, (text) => onRun(id, text));
+        } else cell.note ||= "the file holds no answer or code to check";
+      }
     } else {
       // A progress export: the last answer, at the numbers it was given for.
       const v = r.variant ?? 0;
       Object.assign(cell, { variant: v, claimed: (r.clean?.length ?? 0) > 0 || (r.steppedDone?.length ?? 0) > 0,
         revealed: has(r.revealedIn, v), stepped: (r.stepped?.length ?? 0) > 0, carried: (r.carried?.length ?? 0) > 0, attempts: r.attempts ?? 0 });
-      if (r.last !== undefined && r.last !== null && has(r.done, v)) {
+      if ((r.last === undefined || r.last === null) && typeof r.code === "string" && has(r.done, v)) {
+        onRun(id, null);
+        await rerun(cell, runtime, id, v, r.code, (text) => onRun(id, text));
+      } else if (r.last !== undefined && r.last !== null && has(r.done, v)) {
         const verdict = await grade(runtime, { exercise: id, variant: v, answer: r.last });
-        if (verdict.error) cell.note = verdict.error.kind === "wrong-op" ? "a code exercise: its runs are not re-run here" : `not re-graded: ${verdict.error.message}`;
+        if (verdict.error) cell.note = verdict.error.kind === "wrong-op" ? "a code exercise: only its recorded code is run again here" : `not re-graded: ${verdict.error.message}`;
         else {
           cell.regraded = true;
           cell.verified = verdict.status === "correct";

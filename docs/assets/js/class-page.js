@@ -1,12 +1,14 @@
 // The class page (docs/class.md): a teacher drops hand-in files (or progress exports);
 // everything stays in this browser. Each is read (class-grade.js; a malformed or hostile
-// file is named and skipped), every recorded answer re-graded by the grader, and the page
+// file is named and skipped), every recorded answer re-graded by the grader (a Build
+// solve's code run again in the sandbox, as on a chapter page), and the page
 // shows students × exercises, each exercise's rates, the class's most common mistakes and
 // a CSV of the table.
 
 import { gradeLearner, problemOf, readLearner } from "./class-grade.js";
 import { el, loadManifest } from "./progress-view.js";
 import { download } from "./notice.js";
+import { withSandbox } from "./sandbox-client.js";
 
 const COLUMNS = ["student", "file", "class", "exercise", "variant", "solved (claimed)", "verified", "attempts", "hint", "derivation", "steps", "carried", "note"];
 
@@ -180,15 +182,20 @@ export async function initClassPage(shared, siteRoot) {
     draw();
     results.querySelector(`[data-wb-sort="${CSS.escape(key)}"]`)?.focus();
   };
+  const runtime = withSandbox(shared.runtime); // Build code runs in the sandbox worker, one learner's at a time
   async function take(files) {
     const started = performance.now();
     let done = 0;
     for (const file of files) {
-      status.textContent = `Reading and re-grading ${file.name} (${++done} of ${files.length})…`;
+      const reading = `Reading and re-grading ${file.name} (${++done} of ${files.length})…`;
+      status.textContent = reading;
       try {
         const learner = readLearner(file.name, await file.text(), known);
         learner.file = file.name;
-        learner.cells = await gradeLearner(learner, drawing, shared.runtime);
+        const onRun = (id, text) => {
+          status.textContent = `${reading} Running ${learner.student}’s code for exercise ${id}${text ? `: ${text}` : "…"}`;
+        };
+        learner.cells = await gradeLearner(learner, drawing, runtime, onRun);
         state.learners = state.learners.filter((l) => l.file !== file.name);
         state.learners.push(learner);
       } catch (err) {
