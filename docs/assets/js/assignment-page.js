@@ -9,7 +9,7 @@
 
 import { ATTR, ROLE, ownRole } from "./contract.js";
 import { initExercise } from "./exercise.js";
-import { el, loadManifest } from "./progress-view.js";
+import { el, listPage } from "./progress-view.js";
 import { assignedVariant, tidy } from "./assignment-hash.js";
 import { addAttempt } from "./assignment-schema.js";
 import { readAssignment, savedStudent, saveStudent, STUDENT_CAP } from "./assignment-link.js";
@@ -115,14 +115,9 @@ function handIn(progress, assignment, student) {
 }
 
 export async function initAssignment(shared, siteRoot) {
-  const root = document.querySelector("[data-wb-assignment]");
-  if (!root || root.dataset.wbBuilt) return;
-  root.dataset.wbBuilt = "true";
-  const manifest = await loadManifest(siteRoot);
-  if (!manifest) {
-    root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
-    return;
-  }
+  const page = await listPage("data-wb-assignment", siteRoot);
+  if (!page) return;
+  const { root, manifest } = page;
   const known = manifest.chapters.flatMap((c) => c.ids);
   const assignment = readAssignment(location.hash, known);
   if (!assignment.ok) {

@@ -6,7 +6,7 @@
 // a CSV of the table.
 
 import { gradeLearner, problemOf, readLearner } from "./class-grade.js";
-import { el, loadManifest } from "./progress-view.js";
+import { el, listPage } from "./progress-view.js";
 import { download } from "./notice.js";
 import { withSandbox } from "./sandbox-client.js";
 
@@ -148,14 +148,9 @@ function renderMistakes(learners, ids) {
 }
 
 export async function initClassPage(shared, siteRoot) {
-  const root = document.querySelector("[data-wb-class]");
-  if (!root || root.dataset.wbBuilt) return;
-  root.dataset.wbBuilt = "true";
-  const manifest = await loadManifest(siteRoot);
-  if (!manifest) {
-    root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
-    return;
-  }
+  const page = await listPage("data-wb-class", siteRoot);
+  if (!page) return;
+  const { root, manifest } = page;
   const order = manifest.chapters.flatMap((c) => c.ids);
   const known = new Set(order);
   const drawing = new Set(manifest.variants || []);

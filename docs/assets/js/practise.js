@@ -5,7 +5,7 @@
 
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
-import { dueLine, el, loadManifest, reviewedIds } from "./progress-view.js";
+import { dueLine, el, listPage, reviewedIds } from "./progress-view.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
 
@@ -45,15 +45,10 @@ function pick(manifest, progress, skip, anyway) {
 }
 
 export async function initPractise(shared, siteRoot) {
-  const root = document.querySelector("[data-wb-practise]");
-  if (!root || root.dataset.wbBuilt) return;
-  root.dataset.wbBuilt = "true";
+  const page = await listPage("data-wb-practise", siteRoot);
+  if (!page) return;
+  const { root, manifest } = page;
   const { progress } = shared;
-  const manifest = await loadManifest(siteRoot);
-  if (!manifest) {
-    root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
-    return;
-  }
   const status = el("p", { className: "wb-practise-status", role: "status" });
   const next = el("button", { type: "button", className: "md-button md-button--primary", textContent: "Next exercise" });
   next.dataset.wbAction = "next";

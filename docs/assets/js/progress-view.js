@@ -25,6 +25,21 @@ export function el(tag, props = {}, ...children) {
   return node;
 }
 
+/**
+ * A page built from the exercise list (Practise, the teacher's, assignment and class pages):
+ * its root element (`[attr]`, once per page) and the list; null when the page has no such
+ * element, or when the list cannot be loaded (then the page says so).
+ */
+export async function listPage(attr, siteRoot) {
+  const root = document.querySelector(`[${attr}]`);
+  if (!root || root.dataset.wbBuilt) return null;
+  root.dataset.wbBuilt = "true";
+  const manifest = await loadManifest(siteRoot);
+  if (manifest) return { root, manifest };
+  root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
+  return null;
+}
+
 /** The exercises that join the review queue (Derive, Build and Debug; an older manifest: the Derive ones). */
 export const reviewedIds = (manifest) => manifest.reviewed || manifest.variants || [];
 

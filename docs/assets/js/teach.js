@@ -3,7 +3,7 @@
 // Nothing is sent anywhere: the link is made in this page.
 
 import { assignmentHref, CLASS_CAP } from "./assignment-link.js";
-import { el, loadManifest } from "./progress-view.js";
+import { el, listPage } from "./progress-view.js";
 
 let serial = 0;
 const uid = (stem) => `wb-teach-${stem}-${++serial}`;
@@ -40,14 +40,9 @@ function chapterBox(chapter, titles) {
 }
 
 export async function initTeach(siteRoot) {
-  const root = document.querySelector("[data-wb-teach]");
-  if (!root || root.dataset.wbBuilt) return;
-  root.dataset.wbBuilt = "true";
-  const manifest = await loadManifest(siteRoot);
-  if (!manifest) {
-    root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
-    return;
-  }
+  const page = await listPage("data-wb-teach", siteRoot);
+  if (!page) return;
+  const { root, manifest } = page;
   const code = el("input", { type: "text", maxLength: CLASS_CAP, autocomplete: "off", required: true });
   code.dataset.wbField = "class";
   const due = el("input", { type: "date" });
