@@ -7,9 +7,9 @@ from __future__ import annotations
 import json
 import time
 
-from helpers import exercise, open_chapter, run_build, set_editor, wait_runtime
 from playwright.sync_api import Page
 
+from helpers import exercise, open_chapter, run_build, set_editor, wait_runtime
 from workbook import bank
 
 LONG = 120_000

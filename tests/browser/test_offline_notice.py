@@ -4,10 +4,10 @@ the notice stays long enough to read (8 s) before the copy starts, or starts it 
 
 from __future__ import annotations
 
-from helpers import role
 from playwright.sync_api import expect
-from test_start_explained import LONG, MANIFEST, offline_state, version_cache_entries
 
+from helpers import role
+from test_start_explained import LONG, MANIFEST, offline_state, version_cache_entries
 from workbook.contract import ATTR
 
 CELLULAR = """

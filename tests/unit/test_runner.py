@@ -3,6 +3,7 @@
 import json
 
 import numpy as np  # noqa: F401  (available natively; the worker loads it on demand)
+import pytest
 
 from workbook import bank
 from workbook.api import handle
