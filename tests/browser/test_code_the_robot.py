@@ -22,8 +22,7 @@ WRONG = {
     "5.8": (("x[1] + d1, x[2] + d2", "x[1] - d1, x[2] - d2"),
             ("if det == 0:\n        return None", ""), "d1 = (-b[1] * h22 + b[2] * h12) / det"),
     "6.7": (("if elbow_up:", "if not elbow_up:"),
-            ("return None  # farther than L1 + L2, or nearer than |L1 - L2|\n"
-             "    c2 = (x * x + y * y - L1 * L1 - L2 * L2) / (2 * L1 * L2)", "pass"),
+            ("\n    c2 = max(-1.0, min(1.0, c2))  # round-off at the edge can put c2 a hair past 1 or -1", ""),
             "theta2 = math.acos(c2)"),
     "7.8": (("abs(det) < 1e-9", "det == 0"),
             ("-L2 * s12]", "-L2 * s2]"), "J = [[-L1 * s1 - L2 * s12, -L2 * s2],"),
