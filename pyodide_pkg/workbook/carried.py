@@ -74,7 +74,9 @@ class Worked(Protocol):
               step: str | None = None, lookup: Callable[[str, int], Any] | None = None) -> Verdict: ...
 
 
-Lookup = Callable[[str, int], Worked]  # an exercise's variant, by id and seed
+Lookup = Callable[[str, int], Worked]
+# What a generator raises when a learner's value takes it off its model (a root of a negative, a missing key)
+OFF_THE_MODEL = (ArithmeticError, ValueError, TypeError, KeyError)  # an exercise's variant, by id and seed
 
 
 @dataclass(frozen=True)
@@ -123,9 +125,12 @@ def _number(ex: Worked, name: str) -> int:
     return 1 + [s.name for s in ex.steps].index(name)
 
 
+def _label(ex: Worked, name: str) -> str:
+    return next(s.label for s in ex.steps if s.name == name)
+
+
 def _step_says(ex: Worked, name: str) -> str:
-    label = next(s.label for s in ex.steps if s.name == name)
-    return f"your {label} in step {_number(ex, name)}"
+    return f"your {_label(ex, name)} in step {_number(ex, name)}"
 
 
 # ---- the learner's values ---------------------------------------------------------------------------
@@ -245,14 +250,14 @@ def _follows_from(ex: Worked, step: str | None, answer: object, values: list[Val
         try:
             if not _follows(ex, step, answer, v.corrected(values)):
                 return v
-        except (ArithmeticError, ValueError, TypeError, KeyError):
+        except OFF_THE_MODEL:
             return v
     right = values
     for v in wrong:
         right = v.corrected(right)
     try:  # no one value is needed: the answer follows from them together, or from none (it is near the key)
         return None if _follows(ex, step, answer, right) else wrong[-1]
-    except (ArithmeticError, ValueError, TypeError, KeyError):
+    except OFF_THE_MODEL:
         return wrong[-1]
 
 
@@ -321,7 +326,7 @@ def grade(ex: Worked, answer: object, given: Mapping[str, Any], mine: Mapping[st
         return undefined_verdict(ex, _undefining(ex, step, answer, values, wrong), found)
     if step is None and ex.steps:
         first = _first_step(ex, mine)
-        data = {"first": first, "number": _number(ex, first), "label": next(s.label for s in ex.steps if s.name == first)}
+        data = {"first": first, "number": _number(ex, first), "label": _label(ex, first)}
         return Verdict(verdict.status, verdict.message, tag=verdict.tag, data={**verdict.data, "steps": data})
     return verdict
 
@@ -332,6 +337,6 @@ def _undefining(ex: Worked, step: str | None, answer: object, values: list[Value
         try:
             _follows(ex, step, answer, v.corrected(values))
             return v
-        except (ArithmeticError, ValueError, TypeError, KeyError):
+        except OFF_THE_MODEL:
             continue
     return wrong[-1] if wrong else None
