@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import math
 from fractions import Fraction
+from functools import lru_cache
 
 SIGNIFICANT = 4  # at least this many significant figures in every printed result
 DECIMALS = 4     # and at least this many decimals for a rounded number
@@ -62,7 +63,12 @@ def is_exact(x: float, significant: int = SIGNIFICANT) -> bool:
 
 def fmt(x: float, significant: int = SIGNIFICANT) -> str:
     """``x`` as the workbook prints it (see the module's rule)."""
-    x = _clean(float(x))
+    return _fmt(float(x), significant)
+
+
+@lru_cache(maxsize=8192)  # pages and tests print the same numbers many times over
+def _fmt(x: float, significant: int) -> str:
+    x = _clean(x)
     if not math.isfinite(x):
         return "∞" if x > 0 else ("−∞" if x < 0 else "NaN")
     d = decimals(x, significant)

@@ -220,6 +220,17 @@ def read_quantity(text: object, expect: str | None) -> Reading:
     """
     if expect is not None and expect not in U.EXPECT:
         raise ValueError(f"expect must be one of {sorted(U.EXPECT)} or None, not {expect!r}")
+    if isinstance(text, str) and len(text) <= MAX_LENGTH:
+        return _read_cached(text, expect)
+    return _read(text, expect)
+
+
+@functools.lru_cache(maxsize=4096)  # a Reading is frozen; errors are raised, not cached
+def _read_cached(text: str, expect: str | None) -> Reading:
+    return _read(text, expect)
+
+
+def _read(text: object, expect: str | None) -> Reading:
     answer, dim, tree = _parse(text)
     value = _in_unit(answer, dim, expect, text)
     figures, half = typed_precision(tree if tree is not None else ("num", answer.value), str(text))

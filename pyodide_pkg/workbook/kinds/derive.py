@@ -31,6 +31,30 @@ WORKED = "worked"  # the placeholder the answer kind fills: the Answer line's va
 
 
 @dataclass(frozen=True)
+class _Draw:
+    """One draw's exercise: what ``make(p)`` gave, built (frozen: variants that drew the same
+    numbers share it, each with its own copies of the mappings)."""
+
+    title: str | None
+    steps: Mapping[str, AnswerKind]
+    answer: AnswerKind
+    values: Mapping[str, str]
+    problem: str | None  # why the draw is not a fair question, or None
+
+
+def _degenerate_step(kinds: Mapping[str, AnswerKind]) -> str | None:
+    for name, kind in kinds.items():
+        problem = kind.degenerate()
+        if problem:
+            return f"step {name}: {problem}"
+    return None
+
+
+_DRAWS: dict[Vary, dict[Any, _Draw]] = {}  # each generator's draws made so far
+_DRAWS_KEPT = 4096  # per generator; a full memory starts again
+
+
+@dataclass(frozen=True)
 class Derive(Exercise):
     """A Derive exercise: its answer kind, its generator and the variant on screen."""
 
@@ -57,46 +81,65 @@ class Derive(Exercise):
             self._set(spec.build(self.id), {})
             return
         for p in self.vary.candidates(self.id, self.seed):
-            made = dict(self.vary.make(p))
-            values = {name: fmt(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else str(v)
-                      for name, v in p.items()}
-            values.update(made.pop("values", {}))
-            if WORKED in values:
-                raise VariantError(f"exercise {self.id}: {{{{{WORKED}}}}} is filled by the answer kind, not by make()")
-            if "title" in made:
-                object.__setattr__(self, "title", made.pop("title"))
-            self._set_steps(made.pop("steps", None), values)
-            self._set(spec.build(self.id, **made), values, p)
-            problem = self.answer.degenerate() or self._degenerate_step()
-            if problem is None:
+            draw = self._draw(spec, p)
+            if draw.title is not None:
+                object.__setattr__(self, "title", draw.title)
+            object.__setattr__(self, "step_answers", dict(draw.steps))
+            object.__setattr__(self, "answer", draw.answer)
+            object.__setattr__(self, "values", dict(draw.values))
+            object.__setattr__(self, "params", dict(p))
+            if draw.problem is None:
                 return
             if self.seed == 0:
-                raise VariantError(f"exercise {self.id}: the workbook's own numbers are degenerate: {problem}")
+                raise VariantError(f"exercise {self.id}: the workbook's own numbers are degenerate: {draw.problem}")
         raise VariantError(f"exercise {self.id}: no well-posed draw for variant {self.seed}")
 
-    def _set(self, answer: AnswerKind, values: dict[str, str], params: Mapping[str, Any] | None = None) -> None:
+    def _set(self, answer: AnswerKind, values: dict[str, str]) -> None:
         object.__setattr__(self, "answer", answer)
         object.__setattr__(self, "values", {**values, WORKED: answer.worked_tex()})
-        object.__setattr__(self, "params", dict(params or {}))
+        object.__setattr__(self, "params", {})
 
-    def _set_steps(self, made: Mapping[str, Any] | None, values: dict[str, str]) -> None:
+    def _draw(self, spec: AnswerSpec, p: Mapping[str, Any]) -> _Draw:
+        """What the draw ``p`` makes: the same parameters always make the same exercise, so a
+        draw made before (another seed drew the same numbers) is taken from the generator's memory."""
+        assert self.vary is not None
+        try:
+            key: Any = (self.id, id(spec), tuple(sorted(p.items())))
+            hash(key)
+        except TypeError:
+            return self._make(spec, p)
+        memory = _DRAWS.setdefault(self.vary, {})
+        if key not in memory:
+            if len(memory) >= _DRAWS_KEPT:
+                memory.clear()
+            memory[key] = self._make(spec, p)
+        return memory[key]
+
+    def _make(self, spec: AnswerSpec, p: Mapping[str, Any]) -> _Draw:
+        assert self.vary is not None
+        made = dict(self.vary.make(p))
+        values = {name: fmt(v) if isinstance(v, (int, float)) and not isinstance(v, bool) else str(v)
+                  for name, v in p.items()}
+        values.update(made.pop("values", {}))
+        if WORKED in values:
+            raise VariantError(f"exercise {self.id}: {{{{{WORKED}}}}} is filled by the answer kind, not by make()")
+        title = made.pop("title", None)
+        steps = self._step_kinds(made.pop("steps", None), values)
+        answer = spec.build(self.id, **made)
+        problem = answer.degenerate() or _degenerate_step(steps)
+        return _Draw(title, steps, answer, {**values, WORKED: answer.worked_tex()}, problem)
+
+    def _step_kinds(self, made: Mapping[str, Any] | None, values: dict[str, str]) -> dict[str, AnswerKind]:
         """Build the steps' answer kinds; ``{{step_NAME}}`` prints each one's worked answer."""
         if not self.steps and made is None:
-            return
+            return {}
         kinds = stepwise.build(self.id, self.steps, made)
         for name, kind in kinds.items():
             key = stepwise.placeholder(name)
             if key in values:
                 raise VariantError(f"exercise {self.id}: {{{{{key}}}}} is filled by the step's answer kind, not by make()")
             values[key] = kind.worked_tex()
-        object.__setattr__(self, "step_answers", kinds)
-
-    def _degenerate_step(self) -> str | None:
-        for name, kind in self.step_answers.items():
-            problem = kind.degenerate()
-            if problem:
-                return f"step {name}: {problem}"
-        return None
+        return kinds
 
     def variant(self, seed: object) -> Derive:
         """This exercise with variant ``seed``'s numbers (0: the workbook's own)."""
