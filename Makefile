@@ -150,10 +150,11 @@ browser: $(BIN)/.test
 	@echo "browser: $$($(BIN)/python scripts/find_browser.py)"
 
 # Both suites run on TEST_JOBS processes (pytest-xdist): the unit tests one by one, the browser
-# tests a file at a time (a file's tests share its fixtures and its one Chromium).
+# tests a file at a time (a file's tests share its fixtures), longest file first, and the tests of
+# a file that declares SPREAD one by one (tests/browser/conftest.py).
 TEST_JOBS ?= 2
 UNIT := $(BIN)/python -m pytest -n $(TEST_JOBS) tests/unit
-BROWSER := $(BIN)/python -m pytest -n $(TEST_JOBS) --dist loadfile tests/browser
+BROWSER := $(BIN)/python -m pytest -n $(TEST_JOBS) --dist loadgroup tests/browser
 
 # Linter and type checker (ruff.toml, mypy.ini, eslint.config.mjs): fast, and first in `make test`.
 LINT_PY := pyodide_pkg docs/hooks scripts tests
@@ -163,7 +164,7 @@ lint: $(BIN)/.test node_modules/.installed
 	node_modules/.bin/eslint --max-warnings 0 docs/assets/js
 
 test-unit: $(BIN)/.test node_modules/.installed
-	$(UNIT)
+	WORKBOOK_DRAW_SHARE=0.2 $(UNIT)
 
 test-browser: site browser
 	$(BROWSER)

@@ -20,7 +20,7 @@ SITE = ROOT / "site"
 sys.path.insert(0, str(ROOT / "scripts"))
 
 from find_browser import find_browser  # noqa: E402  (from scripts/, on the path above)
-from helpers import keep_to_origin, record_leaving  # noqa: E402
+from helpers import go_instantly, keep_to_origin, open_chapter, record_leaving  # noqa: E402
 from site_server import SUBPATH, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 
 
@@ -48,6 +48,27 @@ def browser_type_launch_args(browser_type_launch_args):
 
 def pytest_configure(config):
     config.addinivalue_line("markers", "uncached: route every request (no HTTP cache), as the offline tests need")
+    config.addinivalue_line("markers", "xdist_group(name): run in one test process (pytest-xdist's mark)")
+
+
+# The longest files first, so that the two processes end together (longest job first); a file
+# that sets ``SPREAD = True`` has tests that share nothing, and they are shared out one by one.
+LONGEST_FIRST = ("test_a11y", "test_scorm", "test_first_hour", "test_skeleton", "test_sandbox", "test_course",
+                 "test_offline", "test_progress", "test_progress_kept", "test_answer_kinds", "test_variants_in_page")
+
+
+def pytest_collection_modifyitems(config, items):
+    """Group each file's tests for ``pytest -n 2 --dist loadgroup`` (a file's tests share its
+    module fixtures and run in one process), except in files that spread, and order the files
+    longest first."""
+    def rank(item):
+        name = item.module.__name__.rsplit(".", 1)[-1]
+        return LONGEST_FIRST.index(name) if name in LONGEST_FIRST else len(LONGEST_FIRST)
+
+    items.sort(key=rank)  # stable: a file keeps its own order
+    for item in items:
+        spread = getattr(item.module, "SPREAD", False)
+        item.add_marker(pytest.mark.xdist_group(item.nodeid if spread else item.nodeid.split("::")[0]))
 
 
 @pytest.fixture
@@ -69,3 +90,40 @@ def page(page, external_requests):
     page.js_errors = errors
     yield page
     assert errors == [], f"uncaught errors in the page: {errors}"
+
+
+@pytest.fixture(scope="module")
+def _tour_tab(browser, site_url):
+    """The one tab of a test module's ``tour``, with the checks the ``page`` fixture makes."""
+    context = browser.new_context()
+    leaving = (keep_to_origin if os.environ.get("WORKBOOK_ROUTE_ALL") else record_leaving)(context, site_url)
+    tab = context.new_page()
+    tab.set_default_timeout(30_000)
+    errors: list[str] = []
+    tab.on("pageerror", lambda err: errors.append(str(err)))
+    tab.js_errors, tab.leaving = errors, leaving
+    yield tab
+    context.close()
+
+
+@pytest.fixture
+def tour(_tour_tab, site_url):
+    """``tour(n)`` opens chapter n in the test module's one tab and returns the page: the first
+    chapter by loading it, the next ones by instant navigation, so the module's tests share one
+    booted grader instead of booting Python each. Only for tests that change nothing another test
+    reads (no grading: the tab's progress would carry over); each test still fails on an uncaught
+    error in the page or a request that leaves the site's origin, as with ``page``."""
+    tab = _tour_tab
+    tab.js_errors.clear()
+    tab.leaving.clear()
+
+    def visit(n: int):
+        if tab.url.startswith(site_url):
+            go_instantly(tab, site_url, n)
+        else:
+            open_chapter(tab, site_url, n)
+        return tab
+
+    yield visit
+    assert tab.leaving == [], f"requests left the site's origin: {tab.leaving}"
+    assert tab.js_errors == [], f"uncaught errors in the page: {tab.js_errors}"

@@ -16,6 +16,7 @@ from conftest import ROOT
 from helpers import CHAPTERS, exercise, open_chapter, role, settle, wait_runtime
 from workbook import bank
 
+SPREAD = True  # its tests share nothing: the two test processes share them out (conftest.py)
 AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
 EVERY_PAGE = [*PAGES, "practise/", "performance/"]  # the last is the developers' page, out of the menu
@@ -80,27 +81,40 @@ def audit(page: Page) -> list[str]:
     return result
 
 
-@pytest.mark.parametrize("scheme", ["light", "dark"])
-def test_axe_finds_no_violation_on_any_page(page, site_url, scheme):
+SCHEME = {"light": "default", "dark": "slate"}  # the OS preference -> mkdocs-material's palette
+
+
+def set_scheme(page: Page, scheme: str) -> None:
+    """Switch the palette as the theme's toggle does (no reload)."""
     page.emulate_media(color_scheme=scheme)
+    page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", SCHEME[scheme])
+
+
+@pytest.mark.parametrize("path", EVERY_PAGE, ids=[p.strip("/") or "home" for p in EVERY_PAGE])
+def test_axe_finds_no_violation_on_any_page(page, site_url, path):
+    """Every page in both palettes: loaded in one (light for every other page, dark for the rest,
+    so both are checked as loaded), then switched to the other as the palette toggle does."""
+    first = "dark" if EVERY_PAGE.index(path) % 2 else "light"
+    page.emulate_media(color_scheme=first)
+    page.goto(site_url + path)
+    assert page.evaluate("document.body.getAttribute('data-md-color-scheme')") == SCHEME[first]
+    settle_page(page)
+    if path == "practise/":  # with an exercise on the card
+        page.get_by_role("button", name="Practise another").click()
+        wait_practise_card(page)
+    open_all_help(page)
     found = {}
-    for path in EVERY_PAGE:
-        page.goto(site_url + path)
-        expected = "slate" if scheme == "dark" else "default"
-        assert page.evaluate("document.body.getAttribute('data-md-color-scheme')") == expected
-        settle_page(page)
-        if path == "practise/":  # with an exercise on the card
-            page.get_by_role("button", name="Practise another").click()
-            wait_practise_card(page)
-        open_all_help(page)
+    for scheme in (first, "light" if first == "dark" else "dark"):
+        if scheme != first:
+            set_scheme(page, scheme)
         problems = audit(page)
         if path == "progress/":
             page.get_by_role("button", name="Reset all progress…").click()
             problems += [f"(reset dialog) {p}" for p in audit(page)]
             page.keyboard.press("Escape")
         if problems:
-            found[path or "home"] = problems
-    assert found == {}, "\n".join(f"{p}:\n  " + "\n  ".join(v) for p, v in found.items())
+            found[scheme] = problems
+    assert found == {}, "\n".join(f"{s}:\n  " + "\n  ".join(v) for s, v in found.items())
 
 
 def test_exercise_feedback_states_pass_the_audit(page, site_url):
@@ -118,8 +132,7 @@ def test_exercise_feedback_states_pass_the_audit(page, site_url):
     assert build.locator(role("test-result")).count() > 0
     audit(page)  # loads axe and stops colour transitions before the palette changes
     for scheme in ("light", "dark"):
-        page.emulate_media(color_scheme=scheme)
-        page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", "slate" if scheme == "dark" else "default")
+        set_scheme(page, scheme)
         assert audit(page) == [], scheme
 
 
@@ -271,15 +284,13 @@ OVERFLOW = ("""() => {
 }""")
 
 
-def test_every_page_fits_360_px(page, site_url):
+@pytest.mark.parametrize("path", PAGES, ids=[p.strip("/") or "home" for p in PAGES])
+def test_every_page_fits_360_px(page, site_url, path):
     page.set_viewport_size({"width": 360, "height": 740})
-    problems = {}
-    for path in PAGES:
-        page.goto(site_url + path)
-        settle_page(page)
-        open_all_help(page)
-        found = page.evaluate(OVERFLOW) + page.evaluate(TARGETS)
-        if found:
-            problems[path or "home"] = found
-    assert problems == {}, "\n".join(f"{p}:\n  " + "\n  ".join(v) for p, v in problems.items())
-    wait_runtime(page, timeout=120_000)
+    page.goto(site_url + path)
+    settle_page(page)
+    open_all_help(page)
+    found = page.evaluate(OVERFLOW) + page.evaluate(TARGETS)
+    assert found == [], "\n  ".join(found)
+    if path == PAGES[-1]:  # as the walk did once: a page's runtime starts at 360 px too
+        wait_runtime(page, timeout=120_000)

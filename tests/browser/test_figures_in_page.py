@@ -66,8 +66,8 @@ def test_every_chapter_page_has_a_figure(page, site_url):
         assert fig.locator(role("readout")).count() >= 1
 
 
-def test_ch0_rotation(page, site_url):
-    open_chapter(page, site_url, 0)
+def test_ch0_rotation(tour):
+    page = tour(0)  # the module's one tab: one booted grader for these tests
     text = press(page, "theta", "ArrowRight", "image")
     assert slider_value(page, "theta") == 31
     assert_close(text, rotate_2d(1.5, 0.5, rad(31)))
@@ -81,23 +81,23 @@ def test_ch0_controls_queue_until_the_runtime_is_ready(page, site_url):
     assert_close(text, rotate_2d(1.5, 0.5, rad(180)))
 
 
-def test_ch1_frames(page, site_url):
-    open_chapter(page, site_url, 1)
+def test_ch1_frames(tour):
+    page = tour(1)  # the module's one tab: one booted grader for these tests
     text = press(page, "heading", "ArrowRight", "world")
     T = chain(transform2d(1.0, 0.5, rad(31)), transform2d(0.5, 0.0, rad(20)))
     assert_close(text, apply(T, 1.2, 0.4))
 
 
-def test_ch2_euler_and_gimbal_lock(page, site_url):
-    open_chapter(page, site_url, 2)
+def test_ch2_euler_and_gimbal_lock(tour):
+    page = tour(2)  # the module's one tab: one booted grader for these tests
     text = press(page, "pitch", "End", "q")
     assert_close(text, quat_from_matrix(euler_zyx(rad(30), rad(90), rad(10))))
     assert readout(page, "gimbal").startswith("locked")
     assert "gimbal-lock" in figure(page).get_attribute("data-flags")
 
 
-def test_ch3_ekf_predict(page, site_url):
-    open_chapter(page, site_url, 3)
+def test_ch3_ekf_predict(tour):
+    page = tour(3)  # the module's one tab: one booted grader for these tests
     text = press(page, "steps", "ArrowRight", "pose")
     Q = [[0.05 ** 2, 0, 0], [0, 0.05 ** 2, 0], [0, 0, rad(2) ** 2]]
     state, P = (0.0, 0.0, 0.0), [[0.05 ** 2, 0, 0], [0, 0.05 ** 2, 0], [0, 0, rad(1) ** 2]]
@@ -106,8 +106,8 @@ def test_ch3_ekf_predict(page, site_url):
     assert_close(text, [state[0], state[1], round(math.degrees(state[2]), 1)])
 
 
-def test_ch4_ekf_update(page, site_url):
-    open_chapter(page, site_url, 4)
+def test_ch4_ekf_update(tour):
+    page = tour(4)  # the module's one tab: one booted grader for these tests
     text = press(page, "sigma_r", "ArrowRight", "posterior")
     sigma_r = slider_value(page, "sigma_r")
     assert sigma_r == pytest.approx(0.22)
@@ -119,8 +119,8 @@ def test_ch4_ekf_update(page, site_url):
     assert_close(text, [x[0], x[1], round(math.degrees(x[2]), 2)])
 
 
-def test_ch5_pose_graph_optimise_lowers_the_cost(page, site_url):
-    open_chapter(page, site_url, 5)
+def test_ch5_pose_graph_optimise_lowers_the_cost(tour):
+    page = tour(5)  # the module's one tab: one booted grader for these tests
     press(page, "drift", "ArrowRight", "gap")
     shown = readout(page, "cost")
     before = numbers(shown)[0]
@@ -135,8 +135,8 @@ def test_ch5_pose_graph_optimise_lowers_the_cost(page, site_url):
     assert history[0] == pytest.approx(before) and history[-1] == pytest.approx(after)
 
 
-def test_ch6_arm_ik_and_unreachable(page, site_url):
-    open_chapter(page, site_url, 6)
+def test_ch6_arm_ik_and_unreachable(tour):
+    page = tour(6)  # the module's one tab: one booted grader for these tests
     text = press(page, "tx", "ArrowRight", "elbow_up")
     tx = slider_value(page, "tx")
     assert tx == pytest.approx(0.95)
@@ -149,8 +149,8 @@ def test_ch6_arm_ik_and_unreachable(page, site_url):
     assert "unreachable" in figure(page).get_attribute("data-flags")
 
 
-def test_ch7_jacobian_and_singularity(page, site_url):
-    open_chapter(page, site_url, 7)
+def test_ch7_jacobian_and_singularity(tour):
+    page = tour(7)  # the module's one tab: one booted grader for these tests
     text = press(page, "theta2", "ArrowRight", "det")
     assert_close(text, [jacobian_det(jacobian.L1, jacobian.L2, rad(30), rad(71))])
     assert figure(page).get_attribute("data-flags") == ""
@@ -159,8 +159,8 @@ def test_ch7_jacobian_and_singularity(page, site_url):
     assert figure(page).get_attribute("data-flags") == "singular"
 
 
-def test_ch8_pid(page, site_url):
-    open_chapter(page, site_url, 8)
+def test_ch8_pid(tour):
+    page = tour(8)  # the module's one tab: one booted grader for these tests
     text = press(page, "Kp", "ArrowRight", "error")
     m = step_metrics(*simulate_step_response(8.5, 0, 0, duration=10.0))
     assert_close(text, [m.steady_state_error])
@@ -168,8 +168,8 @@ def test_ch8_pid(page, site_url):
     assert_close(readout(page, "settling"), [m.settling_time], 2)
 
 
-def test_ch9_capstone(page, site_url):
-    open_chapter(page, site_url, 9)
+def test_ch9_capstone(tour):
+    page = tour(9)  # the module's one tab: one booted grader for these tests
     text = press(page, "step", "ArrowRight", "estimate")
     s = capstone.simulate(True)[21]
     assert_close(text, [s.estimate[0], s.estimate[1], round(math.degrees(s.estimate[2]), 1)])

@@ -28,12 +28,13 @@ from pathlib import Path
 
 import pytest
 
+import many_draws
 from exercise_text import load_all  # docs/hooks/exercise_text.py
 from printed_math import check_formula, computed, math_of, read_side, relations
 from workbook import bank
 
 ROOT = Path(__file__).resolve().parents[2]
-SEEDS = range(1000)
+SEEDS = range(many_draws.count(1000))
 DERIVE = [ex for ex in bank.all_exercises() if ex.kind == "derive"]
 TEXTS = load_all(ROOT)
 ANSWER_LINE = re.compile(r"<p>\s*<strong>Answer:</strong>(.*?)</p>", re.S)

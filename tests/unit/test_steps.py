@@ -21,13 +21,14 @@ from pathlib import Path
 
 import pytest
 
+import many_draws
 from exercise_text import load_all  # docs/hooks/exercise_text.py
 from moved import moved
 from workbook import bank, chains, steps
 from workbook.api import handle
 
 ROOT = Path(__file__).resolve().parents[2]
-DRAWS = 200
+DRAWS = many_draws.count(200)
 STEPPED = [ex for ex in bank.all_exercises() if ex.kind == "derive" and ex.steps]
 TEXTS = load_all(ROOT)
 # The exercises that must offer steps: every EKF, pose-graph, IK, Jacobian and capstone derivation

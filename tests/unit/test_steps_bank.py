@@ -22,13 +22,14 @@ import random
 
 import pytest
 
+import many_draws
 from moved import moved
 from workbook import bank, chains, steps
 from workbook.api import handle
 from workbook.bank import ch3_whole_matrices
 from workbook.number_format import bmatrix
 
-DRAWS = 200
+DRAWS = many_draws.count(200)
 
 
 def _inverse(v, given):

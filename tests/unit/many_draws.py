@@ -1,0 +1,14 @@
+"""How many variants the many-draw tests take (test_variants, test_printed, test_steps,
+test_steps_bank): all of them in ``make test`` and CI; a share of them in ``make test-unit``, the
+developer's quick loop (``WORKBOOK_DRAW_SHARE=0.2``), which still draws from every exercise."""
+
+from __future__ import annotations
+
+import os
+
+SHARE = float(os.environ.get("WORKBOOK_DRAW_SHARE", "1"))
+
+
+def count(full: int) -> int:
+    """``full`` draws in the whole suite; the share of them (at least 20) in the quick loop."""
+    return full if SHARE >= 1 else max(20, round(full * SHARE))
