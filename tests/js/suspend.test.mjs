@@ -1,6 +1,6 @@
 // suspend_data's encodings (docs/assets/js/lms/suspend.js) at their limits, in Node.
 // Run by tests/unit/test_scorm_suspend.py: node --experimental-default-type=module --test
-// with WORKBOOK_IDS, the workbook's 88 exercise ids (from the grading package).
+// with WORKBOOK_IDS, every exercise id of the workbook (from the grading package).
 
 import { test } from "node:test";
 import assert from "node:assert/strict";
@@ -32,8 +32,8 @@ const essential = (r) => ({
   attempts: r.attempts, box: r.box, hinted: Boolean(r.hinted), revealed: Boolean(r.revealed),
 });
 
-test("the essential state of all 88 exercises, each at its widest, fits SCORM 1.2's 4,096 characters", () => {
-  assert.equal(IDS.length, 88);
+test(`the essential state of all ${IDS.length} exercises, each at its widest, fits SCORM 1.2's 4,096 characters`, () => {
+  assert.ok(IDS.length > 0);
   const records = Object.fromEntries(IDS.map((id, i) => [id, fullRecord(i)]));
   const { text, dropped } = encodeSuspend(records, "1.2");
   assert.ok(text.length <= LIMIT_12, `${text.length} characters`);
@@ -47,7 +47,7 @@ test("the essential state of all 88 exercises, each at its widest, fits SCORM 1.
     assert.ok(Math.abs(back.due - records[id].due) < 60_000, `${id}: due within the minute`);
     assert.ok(back.updated <= records[id].updated && records[id].updated - back.updated < 1000, `${id}: updated to the second, never later`);
   }
-  console.log(`# 88 widest records: ${text.length} characters`);
+  console.log(`# ${IDS.length} widest records: ${text.length} characters`);
 });
 
 test("over the limit, last answers are dropped first, oldest record first, and nothing else", () => {

@@ -7,6 +7,8 @@ some input) and RIGHT ones (correct rewrites in another style). A program is eit
 
 from __future__ import annotations
 
+import holdout_programs_ekf
+
 ROT = "import math\n\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n"
 EKF = "def ekf_update(x, P, z, R):\n"
 FK = "import math\n\n\ndef forward_kinematics_2link(L1, L2, theta1, theta2):\n"
@@ -345,3 +347,5 @@ def nav_step(x, P, u, z, landmark, waypoint, dt, Q, R):
 ''',
     },
 }
+
+WRONG["4.10"], RIGHT["4.10"] = holdout_programs_ekf.WRONG, holdout_programs_ekf.RIGHT

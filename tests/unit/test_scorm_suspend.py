@@ -1,6 +1,6 @@
 """SCORM suspend_data and the chapter's report (docs/assets/js/lms/), tested in Node.
 
-``tests/js/suspend.test.mjs`` holds the cases: the 88 exercises' essential state at
+``tests/js/suspend.test.mjs`` holds the cases: every exercise's essential state at
 its widest within SCORM 1.2's 4,096 characters, what is dropped first past it, the
 2004 form, merging with the local record, hostile text. This runs it with the
 workbook's own exercise ids and fails with Node's report when a case fails.

@@ -9,9 +9,10 @@ from ..kinds.derive import Derive
 from ..kinds.trace import Option, Trace
 from ..number_format import fmt, paren, relation, relation_all, shown
 from ..reference.linalg import matvec
-from ..reference.rotation3d import quat_axis_angle, quat_from_axis_angle, quat_norm, rz
+from ..reference.rotation3d import quat_axis_angle, quat_from_axis_angle, quat_multiply, quat_norm, rz
 from ..variants import Choice, Param, Vary
 from . import column
+from .checks import slips_apart
 
 _AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
 _SLOT = {"w": 0, "x": 1, "y": 2, "z": 3}  # where each component sits in q = (w, x, y, z)
@@ -152,6 +153,62 @@ def _quat_whole(p):
     }
 
 
+def _cross(u, v):
+    """u × v, written out as the chapter's prose writes it."""
+    return (u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0])
+
+
+def _quat_product(p):
+    """2.10: the Hamilton product q₁ ⊗ q₂ of two quaternions with small whole components, w first."""
+    q1 = (p["w1"], p["x1"], p["y1"], p["z1"])
+    q2 = (p["w2"], p["x2"], p["y2"], p["z2"])
+    key = quat_multiply(q1, q2)
+    u1, u2 = q1[1:], q2[1:]
+    dot = sum(a * b for a, b in zip(u1, u2))
+    cross = _cross(u1, u2)
+    plain = tuple(q1[0] * b + q2[0] * a for a, b in zip(u1, u2))  # w₁u₂ + w₂u₁, the cross term left out
+    swapped = quat_multiply(q2, q1)
+    pairs = ((1, 2), (2, 0), (0, 1))  # the two factors of each cross component's first term
+    return {
+        "key": column(key),
+        "slips": (
+            Slip(column(swapped),
+                 "That is q₂ ⊗ q₁: the cross term u₁ × u₂ went in with a minus sign, which is exactly what "
+                 "swapping the two factors does. The product does not commute: q₁ ⊗ q₂ adds +u₁ × u₂."),
+            Slip(column((q1[0] * q2[0] + dot, *key[1:])),
+                 f"The scalar part subtracts the dot product: w = w₁w₂ − u₁·u₂ = {fmt(q1[0] * q2[0])} − "
+                 f"{paren(dot)}, not w₁w₂ + u₁·u₂."),
+            Slip(column((key[0], *plain)),
+                 "The vector part is missing the cross product: it is w₁u₂ + w₂u₁ + u₁ × u₂. The cross term is "
+                 f"({', '.join(map(fmt, cross))}) here."),
+            Slip(column(tuple(a * b for a, b in zip(q1, q2))),
+                 "That multiplies component by component. The Hamilton product mixes them: the scalar part "
+                 "takes a dot product and the vector part a cross product."),
+            Slip(column(key[1:] + key[:1]),
+                 "Those are the right numbers in the order (x, y, z, w), scalar last, as some libraries store "
+                 "them. This answer asks for (w, x, y, z), scalar first."),
+        ),
+        "values": {
+            "w1": fmt(q1[0]), "w2": fmt(q2[0]), "u1": ", ".join(map(fmt, u1)), "u2": ", ".join(map(fmt, u2)),
+            "dot_terms": " + ".join(f"{paren(a)} \\cdot {paren(b)}" for a, b in zip(u1, u2)),
+            "dot": fmt(dot), "pdot": paren(dot), "ww": fmt(q1[0] * q2[0]),
+            "cross_terms": ",\\ ".join(f"{paren(u1[i])} \\cdot {paren(u2[j])} - {paren(u1[j])} \\cdot {paren(u2[i])}"
+                                       for i, j in pairs),
+            "cross": ", ".join(map(fmt, cross)),
+            "a": ", ".join(fmt(q1[0] * b) for b in u2), "b": ", ".join(fmt(q2[0] * a) for a in u1),
+            "w": fmt(key[0]), "v": ", ".join(map(fmt, key[1:])),
+            "swapped": ", ".join(map(fmt, swapped)),
+        },
+    }
+
+
+def _fair_product(p):
+    """2.10's draw is a fair question: the cross term is not zero (so the order matters), the dot
+    product is not zero (so its sign does), and the key and every slip are told apart."""
+    u1, u2 = (p["x1"], p["y1"], p["z1"]), (p["x2"], p["y2"], p["z2"])
+    return any(_cross(u1, u2)) and sum(a * b for a, b in zip(u1, u2)) != 0 and slips_apart(_quat_product(p))
+
+
 EXERCISES = (
     Derive(
         id="2.1",
@@ -218,5 +275,14 @@ EXERCISES = (
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
         ),
         vary=Vary(_quat_whole, Param("theta", 90, 10, 170, 10, unit="°"), Choice("axis", "z", ("x", "y", "z"))),
+    ),
+    Derive(
+        id="2.10",
+        title="Multiply two quaternions",
+        spec=matrix(label="q₁ ⊗ q₂ = (w, x, y, z)ᵀ", names=("w", "x", "y", "z")),
+        vary=Vary(_quat_product,
+                  Param("w1", 1, 1, 3, 1), Param("x1", 2, -2, 2, 1), Param("y1", 0, -2, 2, 1), Param("z1", -1, -2, 2, 1),
+                  Param("w2", 2, 1, 3, 1), Param("x2", -1, -2, 2, 1), Param("y2", 1, -2, 2, 1), Param("z2", 0, -2, 2, 1),
+                  valid=_fair_product),
     ),
 )

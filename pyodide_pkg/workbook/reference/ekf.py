@@ -235,6 +235,45 @@ def ekf_update_matrix(x, P: Matrix, z, h, H: Matrix, R: Matrix):
     return x_new, P_new
 
 
+def ekf_update_range_bearing(x, P: Matrix, z, landmark, R: Matrix):
+    """Exercise 4.10: one EKF update of the pose ``x`` = (x, y, θ) on a range–bearing sighting ``z`` = (r, φ)
+    of a mapped landmark, in the simple form P⁺ = (I − K H) P.
+
+    h and H at the prediction, the innovation with its bearing wrapped into (−π, π], then S, K, and
+    x⁺ = x + K y with the heading wrapped. Returns ``(x_new, P_new)`` (lists), or None when the
+    landmark sits at the robot's position (its bearing, so H, is undefined there).
+
+    Exercise 4.4's sighting, as :func:`ekf_update_matrix` works it:
+
+    >>> xn, Pn = ekf_update_range_bearing([0, 0, 0], [[1, 0, 0], [0, 1, 0], [0, 0, 0.1]], (4.8, 0.95), (3, 4),
+    ...                                   [[0.1, 0], [0, 0.01]])
+    >>> [round(v, 4) for v in xn]
+    [0.1333, 0.1273, -0.0151]
+
+    A landmark behind the robot, predicted at a bearing just under π and seen just past −π: the wrapped
+    innovation is 0.0366 rad, and the pose moves by a few centimetres (unwrapped, −6.25 rad would swing
+    the heading by 5.5 rad and throw y 2.7 m off).
+
+    >>> x, P, z, R = [0, 0, 0], [[0.1, 0, 0], [0, 0.1, 0], [0, 0, 0.05]], (4.0, -3.13), [[0.01, 0], [0, 0.001]]
+    >>> [round(v, 3) + 0.0 for v in ekf_update_range_bearing(x, P, z, (-4, 0.1), R)[0]]
+    [-0.001, 0.016, -0.032]
+    >>> h, H = range_bearing(x, (-4, 0.1)), measurement_jacobian(x, (-4, 0.1))
+    >>> [round(v, 3) + 0.0 for v in ekf_update_matrix(x, P, z, h, H, R)[0]]
+    [-0.069, -2.726, 5.456]
+    >>> ekf_update_range_bearing([1, 2, 0], [[1, 0, 0], [0, 1, 0], [0, 0, 1]], (1, 0), (1, 2), [[1, 0], [0, 1]]) is None
+    True
+    """
+    if (landmark[0] - x[0], landmark[1] - x[1]) == (0, 0):
+        return None
+    H = measurement_jacobian(x, landmark)
+    y = innovation_wrapped(z, range_bearing(x, landmark))
+    K = kalman_gain(P, H, R)
+    moved = [xi + di for xi, di in zip(x, matvec(K, y))]
+    x_new = [moved[0], moved[1], wrap_angle(moved[2])]
+    P_new = matmul(sub(identity(len(x)), matmul(K, H)), P)
+    return x_new, P_new
+
+
 def kalman_gain(P: Matrix, H: Matrix, R: Matrix) -> Matrix:
     """K = P Hᵀ S⁻¹ with S = H P Hᵀ + R: how far the update trusts each measurement.
 

@@ -90,6 +90,42 @@ def quat_norm(q) -> float:
 
 
 
+def quat_conjugate(q) -> tuple[float, float, float, float]:
+    """q* = (w, −x, −y, −z): the same axis turned the other way; for a unit q it is q⁻¹.
+
+    >>> quat_conjugate((0.5, 0.5, -0.5, 0.5))
+    (0.5, -0.5, 0.5, -0.5)
+    """
+    w, x, y, z = q
+    return (w, -x, -y, -z)
+
+
+def quat_multiply(p, q) -> tuple[float, float, float, float]:
+    """The Hamilton product p ⊗ q of two quaternions stored w-first, (w, x, y, z).
+
+    With p = (a, u) and q = (b, v) (scalar, vector):
+    p ⊗ q = (a b − u·v, a v + b u + u × v). The cross product is why the order
+    matters: q ⊗ p has − u × v. For unit quaternions, p ⊗ q turns by q first,
+    then by p, as the matrix product R(p) R(q) does.
+
+    Exercise 2.10, and two quarter turns about z make a half turn:
+
+    >>> quat_multiply((1, 2, 0, -1), (2, -1, 1, 0))
+    (4, 4, 2, 0)
+    >>> quat_multiply((2, -1, 1, 0), (1, 2, 0, -1))
+    (4, 2, 0, -4)
+    >>> h = quat_from_axis_angle((0, 0, 1), math.pi / 2)
+    >>> [round(c, 12) + 0.0 for c in quat_multiply(h, h)]
+    [0.0, 0.0, 0.0, 1.0]
+    """
+    a, ux, uy, uz = p
+    b, vx, vy, vz = q
+    return (a * b - ux * vx - uy * vy - uz * vz,
+            a * vx + b * ux + uy * vz - uz * vy,
+            a * vy + b * uy + uz * vx - ux * vz,
+            a * vz + b * uz + ux * vy - uy * vx)
+
+
 def quat_integrate(q, omega, dt: float, steps: int = 1, renormalise: bool = True) -> tuple[float, float, float, float]:
     """Integrate a gyroscope's body rates ω = (ωx, ωy, ωz) (rad/s) into the attitude q, ``steps`` times.
 

@@ -9,13 +9,13 @@
 //   solved after a reveal), the flags (solved, solved after reveal, hinted,
 //   revealed), attempts, the variant on screen, the review box and due time, the
 //   time it was updated, and the last answer (the answer of the variant on screen).
-//   All 88 exercises' essential state fits in SCORM 1.2's 4,096 characters.
+//   Every exercise's essential state fits in SCORM 1.2's 4,096 characters.
 //
 // When it would not fit, what is dropped first:
 //   2004: the checked steps on screen (`stepWork`), then Build code, then the
 //         compact form (as for 1.2);
 //   1.2:  last answers, of the exercise updated longest ago first; then (never
-//         with this workbook's 88 exercises) whole records, oldest first.
+//         with this workbook's exercises) whole records, oldest first.
 // What is dropped is only left out of the LMS's copy: this browser keeps it.
 //
 // Decoding never trusts the text: every record passes the progress schema's
