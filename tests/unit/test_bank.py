@@ -101,7 +101,7 @@ def test_pages_place_every_exercise_exactly_once():
     for ex in ALL:
         assert BLOCKS[ex.id]["prompt"].strip(), f"{ex.id} has no prompt"
         assert BLOCKS[ex.id]["solution"].strip(), f"{ex.id} has no derivation or explanation"
-        assert BLOCKS[ex.id]["page"].startswith(f"0{ex.id.split('.')[0]}-")
+        assert BLOCKS[ex.id]["page"].startswith(f"{int(ex.id.split('.')[0]):02d}-")  # the chapter's number on two digits
 
 
 def test_the_readme_states_the_number_of_exercises():
