@@ -75,7 +75,8 @@ class Build(Exercise):
     run_figure: str = ""
     angles: tuple[str, ...] = ()  # index paths of outputs compared as angles (π and −π agree): "[2]", "[*][2]"
     seed: int = 0  # which hidden cases: 0 the exercise's own, any other a fresh draw (a review, new cases)
-    values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)  # the chapter's {{name}}s (from the reference)
+    # the chapter's {{name}}s (from the reference)
+    values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
     reveal_label: ClassVar[str] = "Show solution"
@@ -161,11 +162,13 @@ class Build(Exercise):
         if not self.run_figure:
             return ""
         return (
-            f'<figure class="wb-figure wb-run-figure" {role_attr(ROLE.run_figure)} data-figure="{escape(self.run_figure)}" '
+            f'<figure class="wb-figure wb-run-figure" {role_attr(ROLE.run_figure)} '
+            f'data-figure="{escape(self.run_figure)}" '
             f'aria-labelledby="{base}-run-title" hidden>'
             f'<figcaption class="wb-run-title" id="{base}-run-title">Your function, drawn</figcaption>'
             f'<p class="wb-run-readout" {role_attr(ROLE.readout)} aria-live="polite"></p>'
-            f'<div class="wb-fig-canvas" {role_attr(ROLE.run_canvas)} role="img" aria-describedby="{base}-run-desc"></div>'
+            f'<div class="wb-fig-canvas" {role_attr(ROLE.run_canvas)} role="img" '
+            f'aria-describedby="{base}-run-desc"></div>'
             f'<p class="wb-run-description" id="{base}-run-desc" {role_attr(ROLE.run_description)}></p>'
             f'<div class="wb-run-steps">'
             f'<button type="button" class="md-button" {role_attr(ROLE.run_previous)}>Previous case</button>'
