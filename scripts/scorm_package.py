@@ -111,7 +111,11 @@ def build(site: Path, out: Path, package_version: str = "1") -> list[Path]:
                     zf.writestr(rel, folder_links(path.read_text(encoding="utf-8")))
                 else:
                     # Already-compressed files are stored as they are.
-                    kind = zipfile.ZIP_STORED if path.suffix in (".zip", ".whl", ".gz", ".wasm", ".png", ".jpg", ".woff2") else zipfile.ZIP_DEFLATED
+                    kind = (
+                        zipfile.ZIP_STORED
+                        if path.suffix in (".zip", ".whl", ".gz", ".wasm", ".png", ".jpg", ".woff2")
+                        else zipfile.ZIP_DEFLATED
+                    )
                     zf.write(path, rel, compress_type=kind)
         tmp.replace(target)
         written.append(target)

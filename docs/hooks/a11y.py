@@ -53,7 +53,8 @@ def add_skip_link(output: str, where: str) -> str:
     if EXERCISES not in output:
         return output
     if output.count(SKIP) != 1:
-        raise PluginError(f"a11y hook: expected the theme's markup {SKIP!r} once in {where}: update docs/hooks/a11y.py.")
+        raise PluginError(f"a11y hook: expected the theme's markup {SKIP!r} once in {where}: update "
+                          "docs/hooks/a11y.py.")
     return output.replace(SKIP, SKIP + SKIP_LINK)
 
 

@@ -87,5 +87,7 @@ def load_all(root: Path) -> dict[str, ExerciseText]:
         for block in parse(path.read_text(encoding="utf-8"), str(path)):
             if isinstance(block, ExerciseBlock):
                 ex = bank.get(block.id)
-                found[block.id] = text_of(block, block.title, convert, code=ex.solution if isinstance(ex, Build) else None)
+                found[block.id] = text_of(
+                    block, block.title, convert, code=ex.solution if isinstance(ex, Build) else None
+                )
     return found

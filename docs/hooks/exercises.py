@@ -100,7 +100,8 @@ def _exercise(state: BuildState, block: ExerciseBlock, path: str) -> tuple[str, 
     try:
         ex = bank.get(block.id)
     except KeyError:
-        raise PluginError(f"{path}: unknown exercise id {block.id!r} (no such exercise in the grading package)") from None
+        raise PluginError(f"{path}: unknown exercise id {block.id!r} (no such exercise in the grading "
+                          "package)") from None
     if block.id in state.placed:
         raise PluginError(f"{path}: exercise {block.id} is placed twice (also in {state.placed[block.id]})")
     state.placed[block.id] = path
@@ -117,7 +118,8 @@ def _exercise(state: BuildState, block: ExerciseBlock, path: str) -> tuple[str, 
     templates = text.as_dict() if getattr(ex, "vary", None) is not None else None
     unfilled = [name for name in text.names() if name not in values]
     if templates is None and unfilled:
-        raise PluginError(f"{path}: exercise {block.id} has placeholders {unfilled} but no generator (vary=...) or values")
+        raise PluginError(f"{path}: exercise {block.id} has placeholders {unfilled} but no generator (vary=...) or "
+                          "values")
     widget = exercise_html(ex, shown.prompt, shown.hint, shown.solution, PageTools(inline=state.inline), templates)
     state.titles[block.id] = title
     slot = SLOT.format(id=block.id)

@@ -60,7 +60,8 @@ def _help(ex: Exercise, base: str, hint_html: str, solution_html: str) -> tuple[
 
 
 def _variant_controls(base: str) -> str:
-    """New numbers, back to the workbook's, and a link to the numbers on screen (docs/assets/js/variants.js drives them)."""
+    """New numbers, back to the workbook's, and a link to the numbers on screen
+    (docs/assets/js/variants.js drives them)."""
     return (f'<div class="wb-variant" aria-label="Numbers" role="group">'
             f'<button type="button" class="md-button wb-help-button" {role_attr(ROLE.new_variant)}>New numbers</button>'
             f'<button type="button" class="md-button wb-help-button" {role_attr(ROLE.original_variant)} hidden>'
@@ -92,11 +93,13 @@ def exercise_html(ex: Exercise, prompt_html: str, hint_html: str, solution_html:
     return (
         f'<div class="wb-exercise" id="{base}" {ATTR.exercise}="{escape(ex.id)}" {ATTR.kind}="{ex.kind}" '
         f'{ATTR.state}="{STATE.unanswered}"{extra} role="region" aria-labelledby="{base}-name">'
-        f'<div class="wb-head"><span class="wb-kind wb-kind--{ex.kind}">{KIND_LABEL.get(ex.kind, ex.kind.title())}</span>'
+        '<div class="wb-head"><span class="wb-kind '
+        f'wb-kind--{ex.kind}">{KIND_LABEL.get(ex.kind, ex.kind.title())}</span>'
         f'<span class="wb-status" {role_attr(ROLE.status)} aria-hidden="true"></span></div>'
         f'<div class="wb-prompt">{prompt_html}</div>'
         f"{ex.widget(base, tools)}"
-        f'<div class="wb-feedback" id="{base}-feedback" {role_attr(ROLE.feedback)} role="status" aria-live="polite"></div>'
+        f'<div class="wb-feedback" id="{base}-feedback" {role_attr(ROLE.feedback)} role="status" '
+        'aria-live="polite"></div>'
         f"{steps_html(ex, base, tools)}"
         f'<div class="wb-help">{buttons}</div>{panels}'
         f"</div>"
@@ -111,7 +114,8 @@ def exercise_index_html(items: list[tuple[str, str]]) -> str:
     """
     links = "".join(
         f'<li><a href="#{dom_id(i)}-title" data-wb-jump="{escape(i)}">'
-        f'<span class="wb-jump-id">{escape(i)}</span> <span class="wb-jump-title" data-wb-jump-title>{escape(title)}</span></a></li>'
+        f'<span class="wb-jump-id">{escape(i)}</span> <span class="wb-jump-title" '
+        f'data-wb-jump-title>{escape(title)}</span></a></li>'
         for i, title in items)
     return (f'<nav class="wb-exercise-index" id="wb-exercises" aria-labelledby="wb-exercises-title">'
             f'<p class="wb-exercise-index-title" id="wb-exercises-title">Exercises on this page</p>'

@@ -59,7 +59,8 @@ def figure_html(name: str) -> str:
     frame = fig.render()
     base = f"fig-{fig.name}"
     readouts = "".join(
-        f'<div class="wb-fig-readout{" wb-fig-matrix" if r.matrix else ""}{" wb-fig-text" if r.text else ""}"><dt>{escape(r.label)}</dt>'
+        f'<div class="wb-fig-readout{" wb-fig-matrix" if r.matrix else ""}{" wb-fig-text" if r.text else ""}">'
+        f'<dt>{escape(r.label)}</dt>'
         f'<dd {role_attr(ROLE.readout)} {ATTR.readout}="{r.key}">{escape(frame["readouts"][r.key])}</dd></div>'
         for r in fig.readouts
     )

@@ -39,7 +39,8 @@ def _step_html(ex: Any, base: str, n: int, step: Any, page: Any) -> str:
             f'{ATTR.state}="{STATE.unanswered}"{attributes}>'
             f'<p class="wb-work-step-title" id="{sbase}-title">Step {n} · {escape(step.label)}</p>'
             f"{widget.replace(check_button(), _step_check())}"
-            f'<div class="wb-feedback wb-work-step-feedback" id="{sbase}-feedback" {role_attr(ROLE.work_step_feedback)} '
+            f'<div class="wb-feedback wb-work-step-feedback" id="{sbase}-feedback" '
+            f'{role_attr(ROLE.work_step_feedback)} '
             f'role="status" aria-live="polite"></div></li>')
 
 

@@ -67,7 +67,8 @@ def _exercise(request: dict[str, Any], kind: str | None = None):
     try:
         seed = check_seed(request.get("variant", 0))
     except ValueError as err:
-        raise GradingError("bad-request", f"This page asked for variant {quote(request.get('variant'))}: {err}.") from None
+        raise GradingError("bad-request", f"This page asked for variant {quote(request.get('variant'))}: "
+                                          f"{err}.") from None
     try:
         ex = bank.variant(str(request.get("exercise")), seed)
     except KeyError:
@@ -75,7 +76,8 @@ def _exercise(request: dict[str, Any], kind: str | None = None):
                            "which the grader does not know.") from None
     if kind is not None:
         if ex.kind != kind:
-            raise GradingError("wrong-op", f"Exercise {ex.id} is a {ex.kind} exercise: {request['op']!r} is for {kind} exercises.")
+            raise GradingError("wrong-op", f"Exercise {ex.id} is a {ex.kind} exercise: {request['op']!r} is for {kind} "
+                                           "exercises.")
     elif ex.op != request["op"]:
         raise GradingError("wrong-op", f"Exercise {ex.id} is a {ex.kind} exercise: it is graded with "
                            f"{ex.op!r}, not {request['op']!r}.")
@@ -205,7 +207,8 @@ def _well_formed(request: dict[str, Any]) -> None:
 def _check_given(sent: dict[str, Any]) -> None:
     """``given``: at most a few earlier answers, ``{ID: {"answer": ..., "variant": N}}``."""
     if len(sent) > chains.MAX_GIVEN:
-        raise GradingError("bad-request", f"This request carries {len(sent)} earlier answers; at most {chains.MAX_GIVEN}.")
+        raise GradingError("bad-request", f"This request carries {len(sent)} earlier answers; at most "
+                                          f"{chains.MAX_GIVEN}.")
     for source, earlier in sent.items():
         if not isinstance(earlier, dict) or set(earlier) - {"answer", "variant"}:
             raise GradingError("bad-request", f"This request's earlier answer to {quote(source)} is not "
@@ -217,7 +220,8 @@ def _check_given(sent: dict[str, Any]) -> None:
         try:
             _check_answer(earlier.get("answer"))
         except TooLong as err:  # the earlier exercise's answer, not the one being checked
-            raise GradingError("bad-request", f"This request's earlier answer to {quote(source)}: {err.message}") from None
+            raise GradingError("bad-request", f"This request's earlier answer to {quote(source)}: "
+                                              f"{err.message}") from None
 
 
 class TooLong(GradingError):

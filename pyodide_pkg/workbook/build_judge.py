@@ -26,7 +26,8 @@ from typing import Any
 from workbook_sandbox.runner import MESSAGE_CAP, STDOUT_CAP, TRACEBACK_CAP
 from workbook_sandbox.values import DEPTH_CAP, ITEMS_CAP, TEXT_CAP, clip, show
 
-from .verdict import GradingError
+from .contract import TAG
+from .verdict import GradingError, Verdict
 
 REPORT_CAP = 1_000_000  # characters of a report the grader reads at all
 UNREADABLE = "The sandbox's report on this run could not be read; run it again."
@@ -174,10 +175,6 @@ def numbers(value: dict[str, Any], want: Any) -> Any:
     return out
 
 
-def close(got: Any, want: Any, rel_tol: float, abs_tol: float, angles: tuple[str, ...] = ()) -> bool:
-    return first_difference(got, want, rel_tol, abs_tol, angles=angles) is None
-
-
 def angle_at(at: str, angles: tuple[str, ...]) -> bool:
     """Whether the entry at index path ``at`` is an angle: a pattern such as ``[0][2]``, ``*`` any index."""
     return any(re.fullmatch(re.escape(p).replace(r"\*", r"\d+"), at) for p in angles)
@@ -255,3 +252,40 @@ def hidden_summary(rows: list[dict[str, Any]]) -> dict[str, Any]:
             return {**r, **summary}
     return {**summary, "input": f"{len(rows)} hidden inputs", "expected": "reference values",
             "actual": "all agree", "passed": True, "message": ""}
+
+
+# ---- The verdict ---------------------------------------------------------------------------
+
+
+def judge(report: Report, cases: list[Case], signature: str, shown: int, rel_tol: float, abs_tol: float,
+          angles: tuple[str, ...] = ()) -> Verdict:
+    """The verdict on a run: a load error, a missing function, or the ``shown`` example rows and one
+    row for the hidden cases (``signature`` names the function the learner must define)."""
+    def verdict(status: str, message: str, tag: str = "", error: dict | None = None, rows: list | None = None):
+        return Verdict(status, message, tag=tag, data={"tests": rows or [], "stdout": report.stdout, "error": error})
+
+    load = report.load
+    if load is not None and load["phase"] == "syntax":
+        return verdict("incorrect", f"Syntax error on line {load['line']}: {load['message']}.", TAG.syntax,
+                       _error_data(load))
+    if load is not None:
+        what = "ran out of memory" if report.stopped == "memory" else f"raised {load['type']}"
+        return verdict("incorrect", f"Your code {what} while loading.", TAG.exception, _error_data(load))
+    if report.missing:
+        return verdict("incorrect", f"Define a function named {signature}.", TAG.missing)
+    rows = compare(report, cases, rel_tol, abs_tol, angles)
+    rows = rows[:shown] + [hidden_summary(rows[shown:])]
+    passed = sum(1 for r in rows if r["passed"])
+    if passed == len(rows):
+        return verdict("correct", f"All {len(rows)} tests pass.", rows=rows)
+    failing = next((r for r in rows if r.get("line")), None)
+    error = {"line": failing["line"], "traceback": failing["message"]} if failing else None
+    message = f"{passed} of {len(rows)} tests pass."
+    if report.stopped == "memory":
+        stop = next((r["input"] for r in rows if r["actual"] == "raised MemoryError"), "a test")
+        message = f"Your code ran out of memory on {stop}; the sandbox was restarted. {message}"
+    return verdict("incorrect", message, TAG.exception if error else TAG.failed, error, rows)
+
+
+def _error_data(error: dict[str, Any]) -> dict[str, Any]:
+    return {key: error[key] for key in ("type", "message", "line", "traceback")}

@@ -206,10 +206,16 @@ def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
     scale = max(abs(v) for v in _entries(kind.key) + wanted)
     floor = REL * scale
     rows = reading if isinstance(reading, list) else [[reading]]
-    got = [(r.value, r.half_unit if r.figures is not None and r.figures >= FIGURES else None) for row in rows for r in row]
+    got = [
+        (r.value, r.half_unit if r.figures is not None and r.figures >= FIGURES else None) for row in rows for r in row
+    ]
     if len(got) != len(wanted):
         return False
-    turn = {"deg": 360.0, "rad": math.tau}.get(getattr(kind, "angle", None) or "") if getattr(kind, "periodic", False) else None
+    turn = (
+        {"deg": 360.0, "rad": math.tau}.get(getattr(kind, "angle", None) or "")
+        if getattr(kind, "periodic", False)
+        else None
+    )
     for (value, half), want in zip(got, wanted):
         want = clean(want)
         if turn:

@@ -1,9 +1,13 @@
 """The page contract, as Python names: read once from ``contract.json``.
 
-``contract.json`` (beside this file) is the one source for the names that the
-page, the worker, the build and the tests share; ``CONTRACT.md`` at the top of
-the repository explains each entry. The page's JavaScript imports the same file
-(``docs/assets/js/contract.js``).
+``contract.json`` (beside this file) is the one source for the names and limits that
+the page, the worker, the build and the tests share, and holds nothing else: the
+prose that explains each entry is in ``CONTRACT.md`` at the top of the repository
+(both workers and the page bundle the JSON, so every word in it would ship), and
+facts another part owns are read from that part (a Build exercise's signature from
+the bank, which exercises an op applies to from the kinds and ``api``). The page's
+JavaScript imports the same file (``docs/assets/js/contract.js``). Extend it; never
+rename an entry.
 
 >>> ROLE.answer, ATTR.state, STATE.pending, TAG.slip
 ('answer', 'data-state', 'pending', 'slip')
@@ -45,8 +49,7 @@ REVIEW_KINDS: tuple[str, ...] = tuple(DATA["reviewKinds"])  # the kinds that joi
 STATUSES: tuple[str, ...] = tuple(DATA["statuses"])
 ERRORS: tuple[str, ...] = tuple(DATA["errors"])
 OPS: dict[str, dict[str, Any]] = DATA["ops"]
-LIMIT = SimpleNamespace(**{k: v for k, v in DATA["limits"].items() if not k.startswith("$")})  # shared with the page
-BUILD_FUNCTIONS: dict[str, str] = DATA["buildFunctions"]  # exercise id -> the signature the learner writes
+LIMIT = SimpleNamespace(**DATA["limits"])  # shared with the page
 
 
 def role_attr(role: str) -> str:

@@ -69,7 +69,8 @@ class Registry:
         except AttributeError:
             raise TypeError(f"{module.__name__} registers no {self.what}: it defines no {self.export}") from None
         if self.own and getattr(thing, self.own, name) != name:
-            raise TypeError(f"{module.__name__} defines a {self.what} called {getattr(thing, self.own)!r}, not {name!r}")
+            raise TypeError(f"{module.__name__} defines a {self.what} called {getattr(thing, self.own)!r}, not "
+                            f"{name!r}")
         return thing
 
     def check(self) -> dict[str, Any]:

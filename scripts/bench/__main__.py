@@ -31,7 +31,8 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap = argparse.ArgumentParser(prog="bench", description=PACKAGE_DOC.split("\n\n")[0])
     ap.add_argument("--runs", type=int, default=int(os.environ.get("BENCH_RUNS", 5)),
                     help="runs of every measurement (default 5, or $BENCH_RUNS)")
-    ap.add_argument("--draws", type=int, default=10, help="rounds of New numbers over a page's Derive exercises (default 10)")
+    ap.add_argument("--draws", type=int, default=10, help="rounds of New numbers over a page's Derive exercises "
+                                                          "(default 10)")
     ap.add_argument("--checks", type=int, default=50, help="checks per kind for the grading round trip (default 50)")
     ap.add_argument("--build-repeats", type=int, default=5, help="Build runs after the first, per variant (default 5)")
     ap.add_argument("--budget", type=float, default=2400,

@@ -111,4 +111,9 @@ def run_figure_times(repeats: int = 50) -> dict:
             times.append((time.perf_counter() - t) * 1000)
         per[ex.id] = round(statistics.median(times), 3)
     slowest = max(per, key=lambda name: per[name]) if per else None
-    return {"max_p50_ms": per[slowest] if slowest else None, "slowest": slowest, "per_exercise_p50_ms": per, "repeats": repeats}
+    return {
+        "max_p50_ms": per[slowest] if slowest else None,
+        "slowest": slowest,
+        "per_exercise_p50_ms": per,
+        "repeats": repeats,
+    }

@@ -96,7 +96,9 @@ class Phases:
                                                          READY_TIMEOUT_MS)
                 page.close()
             page, _ = b.visit(ctx, b.site + CH9)
-            run["build_heavy"] = self.build_series(page, BUILD_HEAVY_ID, _build(BUILD_HEAVY_ID).solution, READY_TIMEOUT_MS)
+            run["build_heavy"] = self.build_series(
+                page, BUILD_HEAVY_ID, _build(BUILD_HEAVY_ID).solution, READY_TIMEOUT_MS
+            )
             page.close()
             run["grading"] = grading
         finally:
@@ -149,7 +151,8 @@ class Phases:
                                                   ("numpy", BUILD_NUMPY, NUMPY_TIMEOUT_MS))}
         # The sandbox that ran them (docs/assets/js/sandbox.js): its start, and its interpreter's memory.
         out["sandbox"] = page.evaluate("() => { const s = window.workbook.sandbox; return s && s.ready ? "
-                                       "{start_ms: s.readyAt - s.startedAt, wasm_bytes: s.startStages.wasmBytes} : null; }")
+                                       "{start_ms: s.readyAt - s.startedAt, wasm_bytes: s.startStages.wasmBytes} : "
+                                       "null; }")
         run["build"] = out
 
     def build_series(self, page, ex_id: str, code: str, first_timeout: float, label: str = "plain") -> dict:
@@ -163,7 +166,8 @@ class Phases:
                                                "timeoutMs": first_timeout if i == 0 else GRADE_TIMEOUT_MS})
             if r["state"] != STATE.correct or not r["passed"] or not all(r["passed"]):
                 msg = ex.locator(role(ROLE.feedback)).inner_text()
-                raise BenchError(f"build {ex_id} {label} run {i + 1}: state {r['state']}, tests {r['passed']}: {msg[:300]}")
+                raise BenchError(f"build {ex_id} {label} run {i + 1}: state {r['state']}, tests {r['passed']}: "
+                                 f"{msg[:300]}")
             results.append(r["ms"])
         return {"first_ms": results[0], "repeat_median_ms": statistics.median(results[1:]),
                 "repeat_ms": results[1:], "bytes": sum(e["bytes"] for e in self.b.server.since(mark))}

@@ -188,7 +188,9 @@ def render_table(metrics: dict, runs: int) -> str:
     widths = [max(len(r[i]) for r in rows) for i in range(4)]
     lines = ["| " + " | ".join(c.ljust(w) if i == 0 else c.rjust(w) for i, (c, w) in enumerate(zip(r, widths))) + " |"
              for r in rows]
-    lines.insert(1, "|" + "|".join("-" * (w + 2) if i == 0 else "-" * (w + 1) + ":" for i, w in enumerate(widths)) + "|")
+    lines.insert(
+        1, "|" + "|".join("-" * (w + 2) if i == 0 else "-" * (w + 1) + ":" for i, w in enumerate(widths)) + "|"
+    )
     return "\n".join(lines)
 
 
@@ -198,7 +200,8 @@ def render_targets(targets: list[dict]) -> str:
         mark = {True: "met", False: "NOT met", None: "n/a"}[t["met"]]
         v = t["value"]
         vs = "-" if v is None else (f"{v:.2f}" if isinstance(v, float) else str(v))
-        lines.append(f"- {t['target']}: {vs} (limit {t['limit']}) -> {mark}" + (f"  [{t['note']}]" if t["note"] else ""))
+        lines.append(f"- {t['target']}: {vs} (limit {t['limit']}) -> "
+                     f"{mark}" + (f"  [{t['note']}]" if t["note"] else ""))
     return "\n".join(lines)
 
 
@@ -236,9 +239,11 @@ def print_report(report: dict, out: Path, stamp: str, runs: int) -> None:
     booted = sorted({r[temp].get("started_from") for r in report["runs"] for temp in ("cold", "warm")
                      if isinstance(r.get(temp), dict)} - {"snapshot"}, key=str)
     if booted:
-        print(f"\nWARNING: some starts did not use the memory snapshot ({booted}): those times measure the fallback boot.")
+        print(f"\nWARNING: some starts did not use the memory snapshot ({booted}): those times measure the fallback "
+              "boot.")
     if report["external_requests"]:
-        print(f"\nWARNING: {len(report['external_requests'])} request(s) left 127.0.0.1: {report['external_requests'][:5]}")
+        print(f"\nWARNING: {len(report['external_requests'])} request(s) left 127.0.0.1: "
+              f"{report['external_requests'][:5]}")
     if report["page_errors"]:
         print(f"\nWARNING: uncaught page errors: {report['page_errors'][:5]}")
     if report["errors"]:

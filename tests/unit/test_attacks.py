@@ -72,7 +72,12 @@ ATTACKS = {
     ),
     "patch the grader's classes": (
         "from workbook.kinds.build import Build\nimport workbook.build_judge as j\n"
-        "Build.judge = lambda self, report: None\nj.close = lambda *a: True\nj.Mismatch = Exception\n"
+        "Build.judge = lambda self, report: None\nj.first_difference = lambda *a, **k: None\n"
+        "j.Mismatch = Exception\nj.judge.__code__ = (lambda *a, **k: Verdict('correct', 'All 2 tests pass.')).__code__\n"
+    ),
+    "patch the judge's names": (  # each one runs in every judgement (build_judge.judge, compare, first_difference)
+        "import workbook.build_judge as j\n"
+        "j.first_difference = lambda *a, **k: None\nj.hidden_summary = lambda rows: {'passed': True}\n"
     ),
     "replace the runner and the harness": (
         "import workbook_sandbox.runner as run, workbook_sandbox.harness as h\n"

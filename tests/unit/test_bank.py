@@ -22,7 +22,7 @@ from blocks import ExerciseBlock, parse  # docs/hooks/blocks.py
 from exercise_text import source_of  # docs/hooks/exercise_text.py
 from workbook import bank
 from workbook.answer_kinds.expression.mark import equivalent
-from workbook.contract import BUILD_FUNCTIONS, KINDS
+from workbook.contract import KINDS
 from workbook.kinds.build import Build
 from workbook.kinds.debug import Debug
 from workbook.kinds.derive import Derive
@@ -101,18 +101,7 @@ def test_pages_place_every_exercise_exactly_once():
     for ex in ALL:
         assert BLOCKS[ex.id]["prompt"].strip(), f"{ex.id} has no prompt"
         assert BLOCKS[ex.id]["solution"].strip(), f"{ex.id} has no derivation or explanation"
-        assert BLOCKS[ex.id]["page"].startswith(f"0{ex.id.split('.')[0]}-")
-
-
-def test_build_functions_follow_the_page_contract():
-    # The four of the page contract's minimum keep their signatures; the contract lists every one.
-    assert {e.id: e.signature for e in BY_KIND["build"]} == BUILD_FUNCTIONS
-    assert {k: BUILD_FUNCTIONS[k] for k in ("0.5", "4.5", "6.5", "8.4")} == {
-        "0.5": "rotate_2d(x, y, theta)",
-        "4.5": "ekf_update(x, P, z, R)",
-        "6.5": "forward_kinematics_2link(L1, L2, theta1, theta2)",
-        "8.4": "pid_step(e, e_prev, integral, Kp, Ki, Kd, dt)",
-    }
+        assert BLOCKS[ex.id]["page"].startswith(f"{int(ex.id.split('.')[0]):02d}-")  # the chapter's number on two digits
 
 
 def test_the_readme_states_the_number_of_exercises():

@@ -1,15 +1,16 @@
 // The page contract, as JavaScript names. esbuild bundles the same JSON file the
-// grading package reads (pyodide_pkg/workbook/contract.json); CONTRACT.md explains it.
+// grading package reads (pyodide_pkg/workbook/contract.json): names and limits only, so
+// the page and both workers ship no prose; CONTRACT.md explains every entry.
 import contract from "../../../pyodide_pkg/workbook/contract.json" with { type: "json" };
 
 const names = (values) => Object.freeze(Object.fromEntries(values.map((v) => [v.replace(/-(\w)/g, (_, c) => c.toUpperCase()), v])));
 
 export const ATTR = Object.freeze({ ...contract.attributes });
-export const ROLE = names(Object.keys(contract.roles));
+export const ROLE = names(contract.roles);
 export const STATE = names(contract.states);
 export const STATUS = names(contract.statuses);
-export const TAG = names(Object.keys(contract.tags));
-export const ERROR = names(Object.keys(contract.errors));
+export const TAG = names(contract.tags);
+export const ERROR = names(contract.errors);
 export const RUNTIME = names(contract.runtimeStates);
 export const OFFLINE = names(contract.offlineStates);
 export const LMS = names(contract.lmsStates); // <html data-workbook-lms>: the SCORM session (lms/session.js)
@@ -18,7 +19,7 @@ export const KINDS = Object.freeze([...contract.kinds]);
 export const ANSWER_KINDS = Object.freeze([...contract.answerKinds]);
 export const REVIEW_KINDS = Object.freeze([...contract.reviewKinds]); // the kinds that join the review queue
 /** Numbers the grader enforces too: the largest variant, steps and earlier answers a request carries, an entry's characters. */
-export const LIMIT = Object.freeze(Object.fromEntries(Object.entries(contract.limits).filter(([k]) => !k.startsWith("$"))));
+export const LIMIT = Object.freeze({ ...contract.limits });
 
 /** `[data-role="NAME"]`, optionally with more attribute tests. */
 export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;

@@ -21,7 +21,7 @@ function recordAttempt(ctx, reply, extra = {}) {
   const status = reply.ok ? reply.value.status : null;
   if (status !== STATE.correct && status !== STATE.incorrect) return;
   const before = progress.get(id);
-  const variant = ctx.variant ?? 0;
+  const { variant } = ctx;
   const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed, tag: reply.value.tag, guessable: ctx.guessable }) };
   const slip = reply.value.data?.slip; // a named slip (CONTRACT.md): counted for the class page
   if (status === STATE.incorrect && slip) patch.slips = countSlip(before.slips, slip);
@@ -32,12 +32,20 @@ function recordAttempt(ctx, reply, extra = {}) {
   progress.update(id, patch);
 }
 
-/** Send one request for this exercise and show its reply; `op` is "grade" or "run". */
-async function submit(ctx, op, payload, { limitMs, onProgress, saved = {} } = {}) {
-  setPending(ctx.el);
-  const reply = await ctx.runtime.request({ op, exercise: ctx.id, ...payload }, { limitMs, onProgress });
-  showReply(ctx.el, reply);
-  recordAttempt(ctx, reply, saved);
+/**
+ * Send one request for this exercise and show its reply, on the exercise or, with `on`, on one of
+ * its checked steps (steps.js); every request of an exercise goes through here, with the variant on
+ * screen. An exercise's graded attempt is recorded. A step's reply that comes back after new numbers
+ * were drawn is stale: it is dropped (null), and steps.js records the step's own verdicts.
+ */
+async function submit(ctx, op, payload, { limitMs, onProgress, saved = {}, on = ctx.el } = {}) {
+  const { variant } = ctx;
+  setPending(on);
+  const reply = await ctx.runtime.request({ op, exercise: ctx.id, ...payload, variant }, { limitMs, onProgress });
+  const step = on !== ctx.el;
+  if (step && variant !== ctx.variant) return null;
+  showReply(on, reply);
+  if (!step) recordAttempt(ctx, reply, saved);
   return reply;
 }
 
@@ -71,7 +79,7 @@ function initHelp(ctx) {
       }
       if (toggle(revealButton, panel, showLabel, hideLabel)) {
         const record = progress.get(id);
-        const variant = ctx.variant ?? 0;
+        const { variant } = ctx;
         if (!record.revealedIn?.includes(variant)) progress.update(id, afterReveal(record, variant, { schedule: ctx.reviewed }));
       }
     });
@@ -92,17 +100,42 @@ function replayEarlySubmit(el) {
   }
 }
 
+/**
+ * One exercise's context, with every field that any module reads or sets declared here: it is
+ * sealed, so a module can change a field but never add one. `shared` is the page's (main.js;
+ * practise.js and assignment-page.js add `start`, and the latter its own `runtime`).
+ */
+function exerciseContext(el, shared) {
+  const kind = el.getAttribute(ATTR.kind);
+  const ctx = Object.seal({
+    el,
+    id: el.getAttribute(ATTR.exercise),
+    runtime: shared.runtime, // the grader; kinds/build.js wraps it so that a run goes through the sandbox
+    progress: shared.progress,
+    renderMath: shared.renderMath,
+    start: shared.start ?? null, // a variant the page forces (a review on the Practise page, an assignment), else null
+    // The variant on screen: a Derive exercise's numbers (variants.js changes it), a Build exercise's
+    // hidden tests (a review starts a fresh seed), and what a review's answers count for.
+    variant: shared.start ?? 0,
+    remember: false, // variants.js: whether the variant on screen is kept (in the record and the address)
+    reviewed: REVIEW_KINDS.includes(kind), // Derive, Build and Debug join the review queue
+    guessable: kind === "debug", // a bug found after wrong lines is solved, not clean (review.js)
+    submit: null, // (op, payload, options) => reply: the one way a request of this exercise is sent
+    field: null, // kinds/derive.js: the answer kind's widget
+    given: null, // kinds/derive.js: () => the earlier answers this exercise builds on (carry.js)
+    steps: null, // kinds/derive.js: the checked steps (steps.js), when the exercise has them
+    step: undefined, // a step's own context (steps.js) names its step; the exercise's has none
+  });
+  ctx.submit = (op, payload, options) => submit(ctx, op, payload, options);
+  return ctx;
+}
+
 /** Start one exercise element once (pages come back with instant navigation). */
 export function initExercise(el, shared) {
   if (el.dataset.wbReady) return;
   el.dataset.wbReady = "true";
   const kind = el.getAttribute(ATTR.kind);
-  // The variant: a Derive exercise's numbers (variants.js sets it), a Build exercise's hidden
-  // tests (a review on the Practise page starts a fresh seed), and what a review's answers count for.
-  const ctx = { ...shared, el, id: el.getAttribute(ATTR.exercise), variant: shared.start ?? 0 };
-  ctx.reviewed = REVIEW_KINDS.includes(kind); // Derive, Build and Debug join the review queue
-  ctx.guessable = kind === "debug"; // a bug found after wrong lines is solved, not clean (review.js)
-  ctx.submit = (op, payload, options) => submit(ctx, op, { ...payload, variant: ctx.variant }, options);
+  const ctx = exerciseContext(el, shared);
   const saved = ctx.progress.get(ctx.id);
   const onScreen = shared.start ?? saved.variant ?? 0;
   if (onScreen === 0 && (saved.done ? saved.done.includes(0) : saved.solved)) {

@@ -9,7 +9,7 @@
 
 import { ATTR, ROLE, STATE, STATUS, findRoles, ownQuery, ownRole } from "./contract.js";
 import { backTo, showCarried as showCarriedFrom } from "./carry.js";
-import { feedbackOf, setPending, showReply } from "./feedback.js";
+import { feedbackOf, showReply } from "./feedback.js";
 import { firstControl } from "./jump.js";
 import { afterStep } from "./review.js";
 
@@ -110,12 +110,8 @@ class Steps {
     const li = this.item(name);
     const field = this.fields.get(name);
     const answer = field.value();
-    const variant = ctx.variant ?? 0;
-    setPending(li);
-    const reply = await ctx.runtime.request({ op: "grade", exercise: ctx.id, variant, step: name, answer,
-      steps: this.answers(name), given: ctx.given?.() });
-    if (variant !== (ctx.variant ?? 0)) return; // new numbers came while it was graded: this verdict is stale
-    showReply(li, reply);
+    const reply = await ctx.submit("grade", { step: name, answer, steps: this.answers(name), given: ctx.given?.() }, { on: li });
+    if (!reply) return; // new numbers came while it was graded: this verdict is stale
     field.show?.(reply);
     this.showCarried(li, reply);
     if (reply.ok) this.save(name, answer, reply.value);
@@ -138,7 +134,7 @@ class Steps {
 
   save(name, answer, verdict) {
     const { ctx } = this;
-    const variant = ctx.variant ?? 0;
+    const { variant } = ctx;
     const record = ctx.progress.get(ctx.id);
     const kept = record.stepWork?.variant === variant ? record.stepWork.steps : {};
     const carried = backTo({ ok: true, value: verdict }) ?? undefined;
@@ -152,7 +148,7 @@ class Steps {
   /** The steps kept for the variant on screen: answers and verdicts back, the panel open. */
   async restore() {
     const work = this.ctx.progress.get(this.ctx.id).stepWork;
-    if (!work || work.variant !== (this.ctx.variant ?? 0) || !Object.keys(work.steps).length) return;
+    if (!work || work.variant !== this.ctx.variant || !Object.keys(work.steps).length) return;
     await this.open();
     for (const [name, step] of Object.entries(work.steps)) {
       const li = this.item(name);

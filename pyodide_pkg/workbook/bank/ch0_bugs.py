@@ -32,7 +32,8 @@ def _bug() -> str:
     right = _lidar_point(*_SEEN)
     wrong = (x + r * math.cos(heading + beam), y + r * math.sin(heading + beam))
     return (f"The beam's angle arrives in degrees and is added to a heading in radians, and math.cos and math.sin "
-            f"read the sum as radians: {fmt(beam)} radians is {fmt(beam / (2 * math.pi))} full turns, not a quarter turn. "
+            f"read the sum as radians: {fmt(beam)} radians is {fmt(beam / (2 * math.pi))} full turns, not a quarter "
+            "turn. "
             f"A wall {fmt(r)} m to the left of a robot at the origin facing east is seen at ({prose(right[0])}, "
             f"{prose(right[1])}), but drawn at ({prose(wrong[0])}, {prose(wrong[1])}), "
             f"{fmt(math.dist(right, wrong))} m away; every beam lands somewhere else, so the map is a scatter. "

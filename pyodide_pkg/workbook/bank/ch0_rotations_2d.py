@@ -38,7 +38,8 @@ def _composed_entry(p):
         "label": f"(1,1) entry of R({fmt(a)}°)·R({fmt(b)}°)",
         "slips": (
             Slip(rot2(math.radians(a))[0][0] * rot2(math.radians(b))[0][0],
-                 "You multiplied the two (1,1) entries. A matrix product mixes a row with a column: use R(α)R(β) = R(α+β)."),
+                 "You multiplied the two (1,1) entries. A matrix product mixes a row with a column: use R(α)R(β) = "
+                 "R(α+β)."),
             Slip(det_rot2(math.radians(a + b)),
                  "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle."),
         ),
@@ -120,9 +121,11 @@ EXERCISES = (
         answer="b",
         options=(
             Option("a", "Compute the general inverse $R^{-1}$ by Gaussian elimination",
-                   "It gives the right matrix, but it does needless work: for a rotation the inverse is already known, it is the transpose."),
+                   "It gives the right matrix, but it does needless work: for a rotation the inverse is already known, "
+                   "it is the transpose."),
             Option("b", "Multiply by the transpose, $R(45°)^\\top = R(-45°)$",
-                   "Right. A rotation matrix is orthogonal, so $R^{-1} = R^\\top$, which is the rotation by the opposite angle. This holds in every dimension."),
+                   "Right. A rotation matrix is orthogonal, so $R^{-1} = R^\\top$, which is the rotation by the "
+                   "opposite angle. This holds in every dimension."),
             Option("c", "Rotate by $R(45°)$ a second time",
                    "That turns the point a further 45°, to 90° in all. Undoing a turn means turning the other way."),
             Option("d", "Negate the point's coordinates",

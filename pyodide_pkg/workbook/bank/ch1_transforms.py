@@ -46,7 +46,8 @@ def _pure_translation(p):
         "key": wx,
         "slips": (
             Slip(apply(transform2d(0, 0, 0), px, py)[0],
-                 f"That is the point in the robot frame. The robot sits at ({fmt(tx)}, {fmt(ty)}), so add its position."),
+                 f"That is the point in the robot frame. The robot sits at ({fmt(tx)}, {fmt(ty)}), so add its "
+                 "position."),
             Slip(apply(T, 0, 0)[0], f"That is the robot's own x. {ahead}: add the point too."),
         ),
         "values": {"stx": signed(tx), "sty": signed(ty), "wx": fmt(wx), "wy": fmt(wy)},
@@ -61,7 +62,8 @@ def _turn_and_shift(p):
     shifted = apply(transform2d(tx, ty, 0), d, 0)
     left_out: tuple[Slip, ...]
     if not apart(turned[1], shifted[1]):
-        left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives y = {fmt(turned[1])}, "
+        left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives y = "
+                                    f"{fmt(turned[1])}, "
                                     f"and shifting it by ({fmt(tx)}, {fmt(ty)}) without turning also gives "
                                     f"y = {fmt(shifted[1])}. T rotates first, then adds t."),)
     else:
@@ -122,7 +124,8 @@ def _inverse_steps(R, t, given):
             (column([-v for v in t]), "That is −t, the robot's position negated in world axes. T⁻¹ needs it in "
                                       "the robot's own axes: multiply by Rᵀ as well, −Rᵀt."),
             (column(matvec(RT, t)), "That is Rᵀt, without the minus: the translation of T⁻¹ is −Rᵀt. Check with "
-                                    f"the robot's own position: T⁻¹ must send ({fmt(t[0])}, {fmt(t[1])}) to the origin."),
+                                    f"the robot's own position: T⁻¹ must send ({fmt(t[0])}, {fmt(t[1])}) to the "
+                                    "origin."),
             (column([-v for v in matvec(transpose(RT), t)]),
              "That multiplies t by R, the turn forwards (or takes the columns of Rᵀ for its rows). −Rᵀt takes "
              "each row of Rᵀ times t."),

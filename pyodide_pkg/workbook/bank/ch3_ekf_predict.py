@@ -52,7 +52,8 @@ def _compass(x0: int, y0: int) -> str:
     >>> _compass(0, 0), _compass(2, -1), _compass(0, 3)
     ('the origin', '2 m east and 1 m south of the origin', '3 m north of the origin')
     """
-    parts = [f"{abs(c)} m {(pos if c > 0 else neg)}" for c, pos, neg in ((x0, "east", "west"), (y0, "north", "south")) if c]
+    parts = [f"{abs(c)} m "
+             f"{(pos if c > 0 else neg)}" for c, pos, neg in ((x0, "east", "west"), (y0, "north", "south")) if c]
     return " and ".join(parts) + " of the origin" if parts else "the origin"
 
 
@@ -93,7 +94,8 @@ def _drive_at_heading(p):
     xn, yn, _ = motion_model((0, 0, theta), v, 0, dt)
     d = v * dt
     slips = [Slip(motion_model((0, 0, theta), v, 0, 1)[1],
-                  f"You left out dt. The robot drives for {fmt(dt)} s, so it covers v·dt = {fmt(d)} m, not {fmt(v)} m.")]
+                  f"You left out dt. The robot drives for {fmt(dt)} s, so it covers v·dt = {fmt(d)} m, not {fmt(v)} "
+                  "m.")]
     if apart(xn, yn):
         slips.append(Slip(xn, "That is x′, the cosine share. The new y takes the sine: y′ = y + v·sinθ·dt."))
     even = math.isclose(abs(math.cos(theta)), abs(math.sin(theta)))
@@ -193,7 +195,8 @@ def _covariance_entry(p, given=None):
         slips = [Slip(Pm[1][1], "That is P⁻(2,2), the y variance. The question asks for the top-left entry."),
                  Slip(FPF[0][0], f"That is F P Fᵀ alone. Add the process noise Q: its (1,1) entry is {fmt(Q[0][0])}.")]
     else:
-        slips = [Slip(Pm[0][0], "That is P⁻(1,1), the x variance. The question asks for the (2,2) entry, the y variance."),
+        slips = [Slip(Pm[0][0], "That is P⁻(1,1), the x variance. The question asks for the (2,2) entry, the y "
+                                "variance."),
                  Slip(FPF[1][1], f"That is F P Fᵀ alone. Add the process noise Q: its (2,2) entry is {fmt(Q[1][1])}."),
                  Slip(add(P, Q)[1][1], "That is P + Q: you left F out. F passes the heading uncertainty into y: "
                                        f"add F₂₃²·P₃₃ = {fmt(f23 * f23 * P[2][2])}.")]
@@ -299,7 +302,8 @@ EXERCISES = (
                    "The diagonal comes from the form of the model, not from v."),
             Option("b", "Because each new coordinate is the old one plus a change, e.g. $x' = x + \\Delta x$",
                    "Right. The motion model adds a displacement to each coordinate, and the displacement does "
-                   "not depend on x, y (only on θ), so ∂x'/∂x = ∂y'/∂y = ∂θ'/∂θ = 1 and F = I plus off-diagonal terms."),
+                   "not depend on x, y (only on θ), so ∂x'/∂x = ∂y'/∂y = ∂θ'/∂θ = 1 and F = I plus off-diagonal "
+                   "terms."),
             Option("c", "Because F is a rotation matrix, and those have ones on the diagonal",
                    "F is not a rotation, and rotations have cos θ on their diagonal, not 1."),
             Option("d", "Because dt is small, so the nonlinear terms round to zero",

@@ -176,7 +176,8 @@ EXERCISES = (
         title="The whole Jacobian F facing north",
         spec=matrix(label="F"),
         vary=_VARY_37,
-        steps=(Step("move", "the move (Δx, Δy)", matrix(label="the move (Δx, Δy) = (v cos θ dt, v sin θ dt)", unit="m")),
+        steps=(Step("move", "the move (Δx, "
+                            "Δy)", matrix(label="the move (Δx, Δy) = (v cos θ dt, v sin θ dt)", unit="m")),
                Step("col", "F's θ column (F₁₃, F₂₃, F₃₃)", matrix(label="the θ column of F: F(1,3), F(2,3), F(3,3)"))),
     ),
     Derive(

@@ -35,7 +35,8 @@ def _bug() -> str:
     plain = innovation((z_range, z_bearing), h)[1]
     wrapped = _innovation(*_SEEN)[1]
     return (f"Bearings are angles: two either side of ±180° point almost the same way, yet their plain difference is "
-            f"nearly a full turn. A landmark right behind the robot is predicted at {prose(h[1])} rad and seen at {prose(z_bearing)} rad, "
+            f"nearly a full turn. A landmark right behind the robot is predicted at {prose(h[1])} rad and seen at "
+            f"{prose(z_bearing)} rad, "
             f"{fmt(abs(math.degrees(wrapped)))}° apart, but the innovation comes out as {prose(plain)} rad "
             f"({prose(math.degrees(plain))}°) instead of {prose(wrapped)} rad. The update then turns the robot's "
             f"heading hard the wrong way, and the filter can lose the robot whenever a landmark sits behind it. "

@@ -111,7 +111,8 @@ def _predicted_range(p, given=None):
         "values": {**s["values"], "remark": remark,
                    "next41": ("Exercise 4.4 compares this range with a measurement." if s["r"] == _H_PRED[0]
                               and (p["x"], p["y"], p["lx"], p["ly"]) == (0, 0, *_LANDMARK)
-                              else "Exercise 4.4 compares the range of this exercise's first numbers with a measurement.")},
+                              else "Exercise 4.4 compares the range of this exercise's first numbers with a "
+                                   "measurement.")},
     }
 
 
@@ -134,7 +135,8 @@ def _predicted_bearing(p, given=None):
         "key": deg,
         "slips": (
             Slip(math.degrees(math.atan2(dx, dy)),
-                 f"The arguments are swapped. atan2 takes (dy, dx): atan2({fmt(dy)}, {fmt(dx)}), measured from the x-axis."),
+                 f"The arguments are swapped. atan2 takes (dy, dx): atan2({fmt(dy)}, {fmt(dx)}), measured from the "
+                 "x-axis."),
         ),
         "steps": {"d": offset, "phi": {"key": phi, "slips": tuple(slips)}},
         "values": {**s["values"], "rad_rel": relation(phi), "deg": fmt(deg),
@@ -274,7 +276,8 @@ EXERCISES = (
         reference=ekf_update,
         run_figure="ekf-update",
         examples=((5.866, 0.5, 5.7, 0.2), (0.0, 1.0, 1.0, 1.0), (2.0, 1.0, 3.0, 0.0), (10.0, 0.1, 12.0, 2.0)),
-        random_args=lambda rng: (rng.uniform(-10, 10), rng.uniform(0.01, 5), rng.uniform(-10, 10), rng.uniform(0.01, 5)),
+        random_args=lambda rng: (rng.uniform(-10, 10), rng.uniform(0.01, 5),
+                                 rng.uniform(-10, 10), rng.uniform(0.01, 5)),
     ),
     Trace(
         id="4.6",

@@ -68,7 +68,8 @@ def _whole_jacobian(p, given=None):
                  "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
                  f"the range row divides by √q = {s['rq_plain']} (only the bearing row divides by q)."),
             Slip(grid([H[0], [dy / root, -dx / root, -1.0]]),
-                 f"The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = {fmt(s['q'])}."),
+                 "The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = "
+                 f"{fmt(s['q'])}."),
             Slip(grid([H[0], [H[1][0], H[1][1], 0.0]]),
                  "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
                  "it by −δθ."),
@@ -101,12 +102,14 @@ def _over_root_q(sign, top):
 _ENTRIES = {
     "2,1": ("dy", 1, "past a landmark on its left", "dy > 0",
             "swings the landmark further round to the left, so the bearing grows", "dy", (
-                (_over_q(-1, "dy"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1, and that minus cancels the one in "
+                (_over_q(-1, "dy"), "The sign is flipped. dx = lx − x, so ∂dx/∂x = −1, and that minus cancels the one "
+                                    "in "
                                     "∂atan2(dy, dx)/∂dx = −dy/q."),
                 (_over_root_q(1, "dy"), "That divides by √q, as the range row does. The derivative of atan2 divides by "
                                         "q = dx² + dy²."),
                 (_over_q(-1, "dx"), "That is H(2,2) = ∂φ/∂y. The x-derivative has dy on top."),
-                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x, from the range row. The bearing row is the second one."),
+                (_over_root_q(-1, "dx"), "That is H(1,1) = ∂r/∂x, from the range row. The bearing row is the second "
+                                         "one."),
             )),
     "2,2": ("dx", -1, "past a landmark ahead of it", "dx > 0",
             "swings the landmark round to the right, so the bearing falls", "-dx", (
@@ -115,7 +118,8 @@ _ENTRIES = {
                 (_over_root_q(-1, "dx"), "That divides by √q, as the range row does: it is H(1,1) = ∂r/∂x. The "
                                          "derivative of atan2 divides by q = dx² + dy²."),
                 (_over_q(1, "dy"), "That is H(2,1) = ∂φ/∂x. The y-derivative has dx on top."),
-                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y, from the range row. The bearing row is the second one."),
+                (_over_root_q(-1, "dy"), "That is H(1,2) = ∂r/∂y, from the range row. The bearing row is the second "
+                                         "one."),
             )),
     "1,1": ("dx", -1, "towards a landmark ahead of it", "dx > 0",
             "brings it closer, so the range falls", "-dx", (

@@ -73,7 +73,8 @@ def _odometry_error(p, given=None):
     return {
         "key": e[0],
         "slips": (
-            Slip(-e[0], "The sign is flipped: you computed (x₂ − x₁) − z₁₂. The error is measurement minus prediction."),
+            Slip(-e[0], "The sign is flipped: you computed (x₂ − x₁) − z₁₂. The error is measurement minus "
+                        "prediction."),
             Slip(d[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
         ),
         "steps": {
@@ -246,7 +247,8 @@ def _correlated_information(p, given=None):
                 Slip(grid([[s, -b], [-b, s]]), "That is the swapped and negated matrix before dividing: multiply it "
                                                f"by 1/det = 1/{fmt(det)}."),
                 Slip(grid([[s / det, b / det], [b / det, s / det]]),
-                     "The off-diagonal entries keep their sign here. The inverse negates them: [[d, −b], [−c, a]] / det."),
+                     "The off-diagonal entries keep their sign here. The inverse negates them: [[d, −b], [−c, a]] / "
+                     "det."),
                 Slip(grid([[1 / s, 0.0], [0.0, 1 / s]]),
                      "That inverts the diagonal alone, as if x and y were not correlated. The block is inverted as "
                      "a whole, with its determinant.")),
@@ -281,7 +283,8 @@ EXERCISES = (
         title="Odometry edge error",
         spec=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
         vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
-                  Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"), Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
+                  Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"),
+                  Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
         steps=(Step("d", "x₂ − x₁", matrix(label="x₂ − x₁", names=("dx|x", "dy|y", "dθ|θ"), units=("m", "m", "rad"))),
                Step("e", "e = z₁₂ − (x₂ − x₁)", matrix(label="e = z₁₂ − (x₂ − x₁)", names=("e_x|x", "e_y|y", "e_θ|θ"),
                                                       units=("m", "m", "rad")))),
@@ -306,7 +309,8 @@ EXERCISES = (
                    "all the error onto those two edges. The neighbours follow, and their neighbours too."),
             Option("c", "Every pose from $x_1$ to $x_{50}$ shifts a little, spreading the accumulated drift",
                    "Right. Gauss–Newton solves for all poses at once; the drift the loop closure reveals is shared "
-                   "out along the chain, so each odometry edge takes a small error instead of one edge taking a huge one."),
+                   "out along the chain, so each odometry edge takes a small error instead of one edge taking a huge "
+                   "one."),
             Option("d", "Nothing: the new edge contradicts 49 odometry edges and is outvoted",
                    "Edges are not votes. The loop-closure edge adds its own term to the cost, and the optimum balances "
                    "it against the odometry terms according to their information matrices."),

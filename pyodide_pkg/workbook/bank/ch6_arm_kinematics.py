@@ -273,13 +273,16 @@ EXERCISES = (
                    "Reachable, just: it is exactly $L_1 + L_2 = 3$ away, so the arm reaches it fully stretched. "
                    "The boundary belongs to the workspace, with a single IK solution."),
             Option("b", "$(1, 0)$",
-                   "Reachable, just: it is exactly $|L_1 - L_2| = 1$ away, the inner edge, reached with the elbow folded back "
+                   "Reachable, just: it is exactly $|L_1 - L_2| = 1$ away, the inner edge, reached with the elbow "
+                   "folded back "
                    "($\\theta_2 = 180°$)."),
             Option("c", "$(2, 1)$",
-                   f"Reachable: $\\sqrt{{4 + 1}} {approx(math.sqrt(5))}$ lies between 1 and 3, inside the annulus, so there are two "
+                   f"Reachable: $\\sqrt{{4 + 1}} {approx(math.sqrt(5))}$ lies between 1 and 3, inside the annulus, so "
+                   "there are two "
                    "elbow solutions."),
             Option("d", "$(3, 1)$",
-                   f"Right. $\\sqrt{{9 + 1}} = \\sqrt{{10}} {approx(math.sqrt(10))} > L_1 + L_2 = 3$: beyond full stretch. "
+                   f"Right. $\\sqrt{{9 + 1}} = \\sqrt{{10}} {approx(math.sqrt(10))} > L_1 + L_2 = 3$: beyond full "
+                   "stretch. "
                    "$\\cos\\theta_2$ would come out above 1, which no angle has."),
         ),
     ),

@@ -265,7 +265,8 @@ def _entry(r: int, c: int):
 
 # Each entry of J as a formula: its answer, its TeX, the slips a learner makes on it.
 _FORMULAS = {
-    (1, 1): ("-L1*sin(theta1) - L2*sin(theta1 + theta2)", "-L_1\\sin\\theta_1 - L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-y", (
+    (1, 1): ("-L1*sin(theta1) - L2*sin(theta1 + "
+             "theta2)", "-L_1\\sin\\theta_1 - L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-y", (
         (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][0],
          "The sign is flipped: the derivative of cos is −sin."),
         (lambda theta1, theta2, L1, L2: -L1 * math.sin(theta1),
@@ -282,7 +283,8 @@ _FORMULAS = {
          "moves link 2 only."),
         (_entry(1, 1), "That is J(2,2) = ∂y/∂θ2, from the sines of y. J(1,2) differentiates x, the cosines."),
     )),
-    (2, 1): ("L1*cos(theta1) + L2*cos(theta1 + theta2)", "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x", (
+    (2, 1): ("L1*cos(theta1) + L2*cos(theta1 + "
+             "theta2)", "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x", (
         (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[1][0],
          "The sign is flipped: the derivative of sin is +cos."),
         (lambda theta1, theta2, L1, L2: L1 * math.cos(theta1),
@@ -334,14 +336,15 @@ EXERCISES = (
         title="Jacobian at θ = (0, 90°)",
         spec=number(label="J(1,1)"),
         vary=Vary(_jacobian_entry, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("t1", 0, -45, 45, 5, unit="°")),
-        steps=(LINK2_DIRECTION,
-               Step("link2", "link 2's term", number(label="−L2·sin(θ1 + θ2), link 2's term"))),
+        steps=(LINK2_DIRECTION, Step("link2", "link 2's term", number(label="−L2·sin(θ1 + θ2), link 2's term"))),
     ),
     Derive(
         id="7.2",
         title="End-effector velocity",
         spec=number(label="ẋ", unit="m/s"),
-        vary=Vary(_tip_velocity, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))),
+        vary=Vary(
+            _tip_velocity, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))
+        ),
         uses=(Uses("7.1", "j11", "J(1,1)", variant=lambda p: 0 if p["L"] == 1 else None),),
     ),
     Derive(
@@ -362,8 +365,10 @@ EXERCISES = (
         code=_BUGGY,
         bug_line=8,
         fixed_line="    J22 = L2 * c12",
-        bug=("J(2,2) = ∂y/∂θ2. Only the second link depends on θ2, through y ∋ L2·sin(θ1 + θ2), whose "
-             "derivative is L2·cos(θ1 + θ2) = L2·c12. The line uses s12, so ẏ is wrong whenever joint 2 moves."),
+        bug=(
+            "J(2,2) = ∂y/∂θ2. Only the second link depends on θ2, through y ∋ L2·sin(θ1 + θ2), whose "
+            "derivative is L2·cos(θ1 + θ2) = L2·c12. The line uses s12, so ẏ is wrong whenever joint 2 moves."
+        ),
         notes={
             1: "imports math for sin and cos",
             2: "takes both link lengths and both joint angles",
@@ -382,10 +387,13 @@ EXERCISES = (
         id="7.6",
         title="The whole Jacobian at θ = (0, 90°)",
         spec=matrix(label="J"),
-        vary=Vary(_unit_jacobian, Param("t1", 0, -60, 60, 5, unit="°"), Param("t2", 90, -150, 150, 5, unit="°", avoid=(0,)),
-                  valid=_well_posed_jacobian),
-        steps=(LINK2_DIRECTION,
-               Step("col2", "J's second column", matrix(label="J's second column (∂x/∂θ2, ∂y/∂θ2)"))),
+        vary=Vary(
+            _unit_jacobian,
+            Param("t1", 0, -60, 60, 5, unit="°"),
+            Param("t2", 90, -150, 150, 5, unit="°", avoid=(0,)),
+            valid=_well_posed_jacobian,
+        ),
+        steps=(LINK2_DIRECTION, Step("col2", "J's second column", matrix(label="J's second column (∂x/∂θ2, ∂y/∂θ2)"))),
     ),
     Derive(
         id="7.7",

@@ -23,7 +23,8 @@ def _bug() -> str:
     f = windup_facts()
     o = f["overshoot"]
     return (f"The integral keeps growing while the actuator is already at its limit and the error pushes it "
-            f"further (winding is computed and never used). The motor cannot push harder, so the extra integral does nothing until the error "
+            "further (winding is computed and never used). The motor cannot push harder, so the extra integral does "
+            "nothing until the error "
             f"changes sign, and then it has to be unwound by pushing past the target. With Kp, Ki, Kd = "
             f"{', '.join(fmt(g) for g in f['gains'])} and the push limited to {fmt(f['u_max'])}, the step response "
             f"overshoots by {fixed(o['bug'], 1)} % instead of {fixed(o['fixed'], 1)} %. "

@@ -41,7 +41,11 @@ def _three_steps(p):
     """The terms at step 2 and the strings both derivations print."""
     errors = [p["e0"], p["e1"], p["e2"]]
     gains = {g: p[g] for g in _GAINS}
-    P, I, D = p_term(errors[2], p["Kp"]), i_term(errors, p["Ki"], p["dt"]), d_term(errors[2], errors[1], p["Kd"], p["dt"])
+    P, I, D = (
+        p_term(errors[2], p["Kp"]),
+        i_term(errors, p["Ki"], p["dt"]),
+        d_term(errors[2], errors[1], p["Kd"], p["dt"]),
+    )
     return {
         "errors": errors, "gains": gains, "P": P, "I": I, "D": D,
         "values": {"P": fmt(P), "I": fmt(I), "D": fmt(D), "S": fmt(sum(errors)), "drop": fmt(errors[1] - errors[2])},
@@ -105,7 +109,8 @@ def _pid_output(p):
             Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times),
             Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
             Slip(P + Ki * e2 * dt + D,
-                 f"The I term integrates every error so far ({fmt(e0)} + {fmt(e1)} + {fmt(e2)}), not only the current one."),
+                 f"The I term integrates every error so far ({fmt(e0)} + {fmt(e1)} + {fmt(e2)}), not only the current "
+                 "one."),
         ),
         "values": {**t["values"], "Ds": signed(D), "u": fmt(u), "pile": fmt((e0 + e1 + e2) * dt),
                    "more": _ADDS[_i_share(I, P)]},
@@ -119,13 +124,22 @@ def _falling_error_d_term(p):
     return {
         "key": D,
         "slips": (
-            Slip(-D, f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {prose(ek - ep)}. "
-                     "A falling error gives a negative D."),
+            Slip(
+                -D,
+                f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {prose(ek - ep)}. "
+                "A falling error gives a negative D.",
+            ),
             Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}."),
             Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second."),
         ),
-        "values": {"de": fmt(ek - ep), "kde": fmt(Kd * (ek - ep)), "D": fmt(D), "drop": fmt(ep - ek), "rate": fmt((ek - ep) / dt),
-                   "span": _SPANS[dt]},
+        "values": {
+            "de": fmt(ek - ep),
+            "kde": fmt(Kd * (ek - ep)),
+            "D": fmt(D),
+            "drop": fmt(ep - ek),
+            "rate": fmt((ek - ep) / dt),
+            "span": _SPANS[dt],
+        },
     }
 
 
@@ -147,7 +161,8 @@ def _pid_terms(p):
         "key": column(pid_terms(t["errors"], **t["gains"])),
         "slips": (
             Slip(column((P, p["Ki"] * e2 * p["dt"], D)),
-                 f"The I term integrates every error so far, {fmt(e0)} + {fmt(e1)} + {fmt(e2)}, not only the current one."),
+                 f"The I term integrates every error so far, {fmt(e0)} + {fmt(e1)} + {fmt(e2)}, not only the current "
+                 "one."),
             Slip(column((P, I, -D)),
                  "The D term has the wrong sign: it is Kd·(e[2] − e[1])/dt, new minus old, and the error is "
                  "shrinking."),
@@ -190,7 +205,8 @@ EXERCISES = (
                    "Too much derivative makes the output jittery, because it amplifies sensor noise; it damps motion "
                    "rather than sustaining an oscillation."),
             Option("d", "$K_p$ too low",
-                   "A weak proportional gain makes the arm sluggish, creeping toward the target; it does not overshoot."),
+                   "A weak proportional gain makes the arm sluggish, creeping toward the target; it does not "
+                   "overshoot."),
         ),
     ),
     Build(
@@ -235,11 +251,13 @@ EXERCISES = (
                    "A larger $K_p$ shrinks the leftover error, since a smaller $e$ now makes the same holding force, "
                    "but it never reaches zero, and too large a gain starts to oscillate."),
             Option("b", "Add a D term",
-                   "At rest the error is constant, so its derivative is zero and the D term contributes nothing there."),
+                   "At rest the error is constant, so its derivative is zero and the D term contributes nothing "
+                   "there."),
             Option("c", "Sample faster (smaller $dt$)",
                    "The sampling rate does not change the balance $K_p e = \\text{gravity}$; the offset stays."),
             Option("d", "Add an I term",
-                   "Right. While any error remains, the integral keeps growing and pushes harder, until the error is zero; "
+                   "Right. While any error remains, the integral keeps growing and pushes harder, until the error is "
+                   "zero; "
                    "then the integral stops changing and holds the load by itself."),
         ),
     ),

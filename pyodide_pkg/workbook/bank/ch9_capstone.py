@@ -197,7 +197,8 @@ def _updated_variance(p):
 
 
 def _command(p, given=None):
-    """9.6: the P controller's speed command from 9.4's printed x⁺ (or the learner's own, ``given``) to the drawn waypoint."""
+    """9.6: the P controller's speed command from 9.4's printed x⁺ (or the learner's own, ``given``)
+    to the drawn waypoint."""
     target, Kp = p["target"], p["Kp"]
     e = target - chains.given(given, "xu", _X_UPD)
     u = p_term(e, Kp)
@@ -228,7 +229,8 @@ EXERCISES = (
         id="9.3",
         title="Predicted range to a landmark",
         spec=number(label="predicted range r", unit="m"),
-        vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1), valid=_range_well_posed),
+        vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1),
+                  valid=_range_well_posed),
         uses=(Uses("9.2", "x", "x′"),),
         steps=(WorkStep("d", "(Δx, Δy)", matrix(label="(Δx, Δy), from the robot to the landmark", unit="m")),
                WorkStep("q", "Δx² + Δy²", number(label="Δx² + Δy²"))),

@@ -100,8 +100,10 @@ EXERCISES = (
             ((0, 0, 0), _P0, (1, 1), ((2, 0), (2, 2)), 0.0, _Q, _R, 10, 1),  # dt = 0: nothing moves, P grows
             ((0, 0, 3.0), _P0, (-2, 0.5), ((-3, -0.5), (-3, 2)), 0.5, _Q, _R, STEPS, 2),  # heading across ±π
             ((0, 0, 0), _P0, (20, 20), ((2, 1), (0, 2)), 0.5, _Q, _R, STEPS, 3),  # landmark never seen: z None
-            ((0, 0, -math.pi), _P0, (20, 20), ((-2, 0), (-2, 2)), 0.5, _Q, _R, STEPS, 4),  # heading a half-turn: π or −π
-            ((0, 0, 0), _P0, (1, 0.5), ((3.8, 0), (0, 0)), 0.5, _Q, _R, 40, 5),  # landmark seen, lost (steps 16-25), seen again
+            # heading a half-turn: π or −π
+            ((0, 0, -math.pi), _P0, (20, 20), ((-2, 0), (-2, 2)), 0.5, _Q, _R, STEPS, 4),
+            # landmark seen, lost (steps 16-25), seen again
+            ((0, 0, 0), _P0, (1, 0.5), ((3.8, 0), (0, 0)), 0.5, _Q, _R, 40, 5),
         ),
         angles=("[*][2]",),
         random_args=_run,

@@ -7,8 +7,10 @@ chapter adds the ones only it needs.
 >>> from workbook.answer_kinds.base import Slip
 >>> apart(1.0, 1.0001), apart(1.0, 1.1, 2.0)
 (False, True)
->>> slips_apart({"key": 2.0, "slips": (Slip(2.0004, "?"),)}), slips_apart({"key": ((1.0,), (2.0,)), "slips": (Slip(((1.0,), (2.1,)), "?"),)})
-(False, True)
+>>> slips_apart({"key": 2.0, "slips": (Slip(2.0004, "?"),)})
+False
+>>> slips_apart({"key": ((1.0,), (2.0,)), "slips": (Slip(((1.0,), (2.1,)), "?"),)})
+True
 """
 
 from __future__ import annotations

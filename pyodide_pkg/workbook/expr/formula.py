@@ -83,10 +83,10 @@ class Formula:
 def parse_formula(text: object, variables: Iterable[str]) -> Formula:
     """Read ``text`` as a formula over ``variables`` (ASCII names), or raise InvalidAnswer.
 
-    >>> parse_formula("2L1 + x", ["L1"])
+    >>> parse_formula("2L1 + x", ["L1"])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    workbook.expr.InvalidAnswer: Unknown name “x”. The formula may use L1, numbers, pi and the functions sqrt, sin, cos, tan, asin, acos, atan, atan2, exp, ln, log, abs.
+    workbook.expr.InvalidAnswer: Unknown name “x”. The formula may use L1, numbers, pi and the functions sqrt, ..., abs.
     >>> parse_formula("1 - 2sin²θ", ["theta"]).latex
     '1 - 2\\\\sin^{2}\\\\theta'
     """

@@ -168,12 +168,14 @@ class Parser:
             if value == "(":
                 inner = self.expr()
                 if self.is_op(self.peek(), ","):
-                    raise InvalidAnswer("One number is expected here, not a list or a vector: type just the entry asked for.")
+                    raise InvalidAnswer("One number is expected here, not a list or a vector: type just the entry "
+                                        "asked for.")
                 if not self.is_op(self.next(), ")"):
                     raise InvalidAnswer("A “(” is not closed: add the “)”.")
                 return inner
             if value in "[{":
-                raise InvalidAnswer("One number is expected here, not a list or a vector: type just the entry asked for.")
+                raise InvalidAnswer("One number is expected here, not a list or a vector: type just the entry asked "
+                                    "for.")
             if value == "√":
                 return self.call("sqrt", shown="√")
             if value == "°":

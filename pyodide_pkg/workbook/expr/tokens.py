@@ -75,7 +75,9 @@ def normalise(text: str) -> str:
     return _dms(s.translate(_AFTER_NFKC).strip())
 
 
-_DMS = re.compile(r"""([0-9]+(?:\.[0-9]*)?)\s*°\s*([0-9]+(?:\.[0-9]*)?)\s*'(?!')(?:\s*([0-9]+(?:\.[0-9]*)?)\s*(?:''|"))?""")
+_DMS = re.compile(r"""([0-9]+(?:\.[0-9]*)?)\s*°\s*"""  # degrees
+                  r"""([0-9]+(?:\.[0-9]*)?)\s*'(?!')"""  # minutes
+                  r"""(?:\s*([0-9]+(?:\.[0-9]*)?)\s*(?:''|"))?""")  # seconds, if any
 
 
 def _dms(s: str) -> str:

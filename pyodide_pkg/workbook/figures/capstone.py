@@ -156,7 +156,8 @@ def draw(p: dict[str, float]) -> dict:
 FIGURE = Figure(
     name="capstone",
     title="One robot, the whole loop",
-    caption="Grey: the true path and pose. Dashed, with a triangle: the EKF estimate the controller steers by, with its "
+    caption="Grey: the true path and pose. Dashed, with a triangle: the EKF estimate the controller steers by, with "
+            "its "
             "2σ ellipse. The wheels turn a little more than commanded, so prediction alone drifts; within "
             "1.8 m of a landmark (diamonds) the LiDAR's range and bearing pull the estimate back. Switch "
             "the updates off to watch the drift grow.",

@@ -71,7 +71,8 @@ def draw(p: dict[str, float]) -> dict:
         "K": readout_matrix(K),
         "innovation": f"({readout(z[0] - h[0])} m, {readout(math.degrees(z[1] - h[1]), 2)}°)",
         "posterior": f"({readout(x_post[0])}, {readout(x_post[1])}, {readout(math.degrees(x_post[2]), 2)}°)",
-        "ellipses": f"{readout(prior[0], 2)} × {readout(prior[1], 2)} m → {readout(post[0], 2)} × {readout(post[1], 2)} m",
+        "ellipses": f"{readout(prior[0], 2)} × {readout(prior[1], 2)} m → {readout(post[0], 2)} × "
+                    f"{readout(post[1], 2)} m",
     }}
 
 

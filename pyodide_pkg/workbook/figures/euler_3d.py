@@ -47,7 +47,9 @@ def axes_angle_deg(R) -> float:
 
 def _box_faces(R):
     hx, hy, hz = BOX
-    corners = {(sx, sy, sz): matvec(R, [sx * hx, sy * hy, sz * hz]) for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)}
+    corners = {
+        (sx, sy, sz): matvec(R, [sx * hx, sy * hy, sz * hz]) for sx in (-1, 1) for sy in (-1, 1) for sz in (-1, 1)
+    }
     faces = []
     for axis in range(3):
         for sign in (-1, 1):

@@ -56,7 +56,8 @@ def draw(p: dict[str, float]) -> dict:
     c.polyline(clipped(ts, ys, *Y_RANGE), "wb-fig-a wb-fig-thick")
     settled = m.settling_time is not None
     svg = c.svg(f"Step response with Kp = {p['Kp']:g}, Ki = {p['Ki']:g}, Kd = {p['Kd']:g}: overshoot "
-                f"{readout(100 * m.overshoot, 0)}%, " + (f"settles in {readout(m.settling_time, 2)} s" if settled else "does not settle"))
+                f"{readout(100 * m.overshoot, 0)}%, "
+                "" + (f"settles in {readout(m.settling_time, 2)} s" if settled else "does not settle"))
     return {"svg": svg, "flags": [] if settled else ["unsettled"], "readouts": {
         "overshoot": f"{readout(100 * m.overshoot, 1)} %",
         "settling": f"{readout(m.settling_time, 2)} s" if settled else f"not settled within {DURATION:g} s",

@@ -47,7 +47,8 @@ def _graph(c: Canvas, poses, cls: str, closure_cls: str) -> None:
 
 def _chart(costs, optimise: bool) -> list[str]:
     top = GRAPH_H
-    parts = [f'<line x1="40" y1="{top + CHART_H - 24}" x2="{WIDTH - 12}" y2="{top + CHART_H - 24}" class="wb-fig-axis"/>',
+    parts = [f'<line x1="40" y1="{top + CHART_H - 24}" x2="{WIDTH - 12}" y2="{top + CHART_H - 24}" '
+             'class="wb-fig-axis"/>',
              f'<text x="40" y="{top + 14}" class="wb-fig-label wb-fig-small">total cost F per iteration</text>']
     if not optimise:
         parts.append(f'<text x="{WIDTH / 2}" y="{top + CHART_H / 2 + 8}" text-anchor="middle" '

@@ -56,7 +56,10 @@ def draw(p: dict[str, float]) -> dict:
     c.label((2.3, 0), "x", "wb-fig-label wb-fig-small", toward=(-1, -1))
     c.label((0, 2.3), "y", "wb-fig-label wb-fig-small", toward=(1, -1))
     svg = c.svg(f"The point p = ({px:g}, {py:g}) turned by {p['theta']:g}° about the origin")
-    return {"svg": svg, "readouts": {"R": readout_matrix(R), "point": readout_vector((px, py)), "image": readout_vector((qx, qy))}}
+    return {
+        "svg": svg,
+        "readouts": {"R": readout_matrix(R), "point": readout_vector((px, py)), "image": readout_vector((qx, qy))},
+    }
 
 
 FIGURE = Figure(

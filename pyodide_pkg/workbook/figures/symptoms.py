@@ -106,7 +106,8 @@ def _gyro_draw(f: dict) -> str:
     ts = [k * f["dt"] for k in range(f["steps"] + 1)]
     c.polyline(list(zip(ts, f["fixed"]))[::10], "wb-fig-c wb-fig-thick")
     c.polyline(list(zip(ts, f["bug"]))[::10], "wb-fig-bad wb-fig-thick wb-fig-dash")
-    c.text((duration, f["final"]), "never renormalised", "wb-fig-label wb-fig-small wb-fig-bad", dx=-4, dy=-8, anchor="end")
+    c.text((duration, f["final"]), "never renormalised", "wb-fig-label wb-fig-small "
+                                                         "wb-fig-bad", dx=-4, dy=-8, anchor="end")
     c.text((duration, 1.0), "divided by ‖q‖", "wb-fig-label wb-fig-small wb-fig-c", dx=-4, dy=-8, anchor="end")
     return c.svg(_gyro_text(f))
 
@@ -142,7 +143,8 @@ def _windup_draw(f: dict) -> str:
     ts, ys = f["runs"]["bug"]
     k = max(range(len(ys)), key=ys.__getitem__)
     c.text((ts[k], ys[k]), "integral winds up", "wb-fig-label wb-fig-small wb-fig-bad", dx=14, dy=-4, anchor="start")
-    c.text((WINDUP_TIME / 2, 0.75), "integral held while it would wind up", "wb-fig-label wb-fig-small wb-fig-c", anchor="start")
+    c.text((WINDUP_TIME / 2, 0.75), "integral held while it would wind "
+                                    "up", "wb-fig-label wb-fig-small wb-fig-c", anchor="start")
     return c.svg(_windup_text(f))
 
 

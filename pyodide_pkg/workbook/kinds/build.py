@@ -10,8 +10,8 @@ A run has three steps, and the learner's code takes part in one of them only:
    sandbox, a Web Worker of its own that holds no grading package
    (``docs/assets/js/sandbox.js``); natively, in this process.
 3. :meth:`Build.judge`: the grader runs its reference through the same driver,
-   now that the learner's code has finished, compares, and writes the verdict
-   (``workbook.build_judge``). The report is data: it can at most claim outputs
+   now that the learner's code has finished, and ``workbook.build_judge`` reads
+   the report, compares and writes the verdict. The report is data: it can at most claim outputs
    for the learner's own function.
 
 :meth:`Build.check` does all three in process (tests, the golden transcript).
@@ -34,8 +34,9 @@ from workbook_sandbox import harness, runner
 from workbook_sandbox.restore import STDLIB_HOMES, Restore
 from workbook_sandbox.values import show
 
-from ..build_judge import Case, Report, compare, hidden_summary, read_report
-from ..contract import ROLE, TAG
+from .. import build_judge
+from ..build_judge import Case, read_report
+from ..contract import ROLE
 from ..figures import runs
 from ..variants import check_seed
 from ..verdict import Verdict
@@ -74,7 +75,8 @@ class Build(Exercise):
     run_figure: str = ""
     angles: tuple[str, ...] = ()  # index paths of outputs compared as angles (π and −π agree): "[2]", "[*][2]"
     seed: int = 0  # which hidden cases: 0 the exercise's own, any other a fresh draw (a review, new cases)
-    values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)  # the chapter's {{name}}s (from the reference)
+    # the chapter's {{name}}s (from the reference)
+    values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)
     kind: ClassVar[str] = "build"
     op: ClassVar[str] = "run"
     reveal_label: ClassVar[str] = "Show solution"
@@ -122,7 +124,8 @@ class Build(Exercise):
         figure = runs.trace_job(self)
         read = read_report(report, len(arguments), len(figure["cases"]) if figure else 0)
         cases = self.cases(arguments)
-        verdict = _verdict(self, read, cases)
+        verdict = build_judge.judge(read, cases, self.signature, len(self.examples), self.rel_tol, self.abs_tol,
+                                    self.angles)
         if self.run_figure and read.load is None and not read.missing:
             try:
                 verdict.data["figure"] = runs.draw_run(self, read, cases, arguments)
@@ -159,11 +162,13 @@ class Build(Exercise):
         if not self.run_figure:
             return ""
         return (
-            f'<figure class="wb-figure wb-run-figure" {role_attr(ROLE.run_figure)} data-figure="{escape(self.run_figure)}" '
+            f'<figure class="wb-figure wb-run-figure" {role_attr(ROLE.run_figure)} '
+            f'data-figure="{escape(self.run_figure)}" '
             f'aria-labelledby="{base}-run-title" hidden>'
             f'<figcaption class="wb-run-title" id="{base}-run-title">Your function, drawn</figcaption>'
             f'<p class="wb-run-readout" {role_attr(ROLE.readout)} aria-live="polite"></p>'
-            f'<div class="wb-fig-canvas" {role_attr(ROLE.run_canvas)} role="img" aria-describedby="{base}-run-desc"></div>'
+            f'<div class="wb-fig-canvas" {role_attr(ROLE.run_canvas)} role="img" '
+            f'aria-describedby="{base}-run-desc"></div>'
             f'<p class="wb-run-description" id="{base}-run-desc" {role_attr(ROLE.run_description)}></p>'
             f'<div class="wb-run-steps">'
             f'<button type="button" class="md-button" {role_attr(ROLE.run_previous)}>Previous case</button>'
@@ -196,35 +201,3 @@ def _grader_objects() -> list[object]:
         if name.startswith("workbook.bank.ch"):
             out += [ex for ex in getattr(mod, "EXERCISES", ()) if hasattr(ex, "__dict__")]
     return out
-
-
-def _verdict(ex: Build, report: Report, cases: list[Case]) -> Verdict:
-    def verdict(status: str, message: str, tag: str = "", error: dict | None = None, rows: list | None = None):
-        return Verdict(status, message, tag=tag, data={"tests": rows or [], "stdout": report.stdout, "error": error})
-
-    load = report.load
-    if load is not None and load["phase"] == "syntax":
-        return verdict("incorrect", f"Syntax error on line {load['line']}: {load['message']}.", TAG.syntax,
-                       _error_data(load))
-    if load is not None:
-        what = "ran out of memory" if report.stopped == "memory" else f"raised {load['type']}"
-        return verdict("incorrect", f"Your code {what} while loading.", TAG.exception, _error_data(load))
-    if report.missing:
-        return verdict("incorrect", f"Define a function named {ex.signature}.", TAG.missing)
-    rows = compare(report, cases, ex.rel_tol, ex.abs_tol, ex.angles)
-    shown = len(ex.examples)
-    rows = rows[:shown] + [hidden_summary(rows[shown:])]
-    passed = sum(1 for r in rows if r["passed"])
-    if passed == len(rows):
-        return verdict("correct", f"All {len(rows)} tests pass.", rows=rows)
-    failing = next((r for r in rows if r.get("line")), None)
-    error = {"line": failing["line"], "traceback": failing["message"]} if failing else None
-    message = f"{passed} of {len(rows)} tests pass."
-    if report.stopped == "memory":
-        stop = next((r["input"] for r in rows if r["actual"] == "raised MemoryError"), "a test")
-        message = f"Your code ran out of memory on {stop}; the sandbox was restarted. {message}"
-    return verdict("incorrect", message, TAG.exception if error else TAG.failed, error, rows)
-
-
-def _error_data(error: dict[str, Any]) -> dict[str, Any]:
-    return {key: error[key] for key in ("type", "message", "line", "traceback")}

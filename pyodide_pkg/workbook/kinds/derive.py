@@ -137,7 +137,8 @@ class Derive(Exercise):
         for name, kind in kinds.items():
             key = stepwise.placeholder(name)
             if key in values:
-                raise VariantError(f"exercise {self.id}: {{{{{key}}}}} is filled by the step's answer kind, not by make()")
+                raise VariantError(f"exercise {self.id}: {{{{{key}}}}} is filled by the step's answer kind, not by "
+                                   "make()")
             values[key] = kind.worked_tex()
         return kinds
 

@@ -52,8 +52,11 @@ class Design(Exercise):
             return Verdict("correct", "Correct: every step is in place.", data={"in_place": in_place})
         first = next(i for i, (a, b) in enumerate(zip(order, solution)) if a != b)
         text = {s.key: s.text for s in self.steps}[order[first]]
-        message = f"{in_place} of {len(solution)} steps are in place. The first one out of place is step {first + 1}, “{text}”."
-        return Verdict("incorrect", message, data={"in_place": in_place, "first_wrong": first + 1, **math_data(message)})
+        message = (f"{in_place} of {len(solution)} steps are in place. "
+                   f"The first one out of place is step {first + 1}, “{text}”.")
+        return Verdict(
+            "incorrect", message, data={"in_place": in_place, "first_wrong": first + 1, **math_data(message)}
+        )
 
     def widget(self, base: str, page: Page) -> str:
         text = {s.key: s.text for s in self.steps}
@@ -61,13 +64,16 @@ class Design(Exercise):
             f'<li class="wb-step" {role_attr(ROLE.step)} {ATTR.step}="{escape(key)}" draggable="true">'
             f'<span class="wb-step-handle" aria-hidden="true">⋮⋮</span>'
             f'<span class="wb-step-text">{page.inline(text[key])}</span><span class="wb-step-moves">'
-            f'<button type="button" class="wb-move" {role_attr(ROLE.move_up)} aria-label="Move “{escape(text[key])}” up">▲</button>'
-            f'<button type="button" class="wb-move" {role_attr(ROLE.move_down)} aria-label="Move “{escape(text[key])}” down">▼</button>'
+            f'<button type="button" class="wb-move" {role_attr(ROLE.move_up)} aria-label="Move “{escape(text[key])}” '
+            'up">▲</button>'
+            f'<button type="button" class="wb-move" {role_attr(ROLE.move_down)} aria-label="Move “{escape(text[key])}” '
+            'down">▼</button>'
             f"</span></li>"
             for key in self.shown
         )
         return form(self.kind, (
-            f'<p class="wb-label" id="{base}-steps-label">Put the steps in order: drag them, or use the arrow buttons.</p>'
+            f'<p class="wb-label" id="{base}-steps-label">Put the steps in order: drag them, or use the arrow '
+            'buttons.</p>'
             f'<ol class="wb-steps" {role_attr(ROLE.steps)} aria-labelledby="{base}-steps-label" '
             f'aria-describedby="{base}-feedback">{rows}</ol>{check_button()}'
         ))

@@ -139,7 +139,8 @@ def measurement_jacobian(state, landmark) -> Matrix:
     dx, dy = landmark[0] - x, landmark[1] - y
     q = dx * dx + dy * dy
     if q == 0:
-        raise ValueError(f"landmark ({landmark[0]:g}, {landmark[1]:g}) is at the robot's position: its bearing is undefined")
+        raise ValueError(f"landmark ({landmark[0]:g}, {landmark[1]:g}) is at the robot's position: its bearing is "
+                         "undefined")
     r = math.sqrt(q)
     return [[-dx / r, -dy / r, 0.0],
             [dy / q, -dx / q, -1.0]]
@@ -289,10 +290,10 @@ def kalman_gain(P: Matrix, H: Matrix, R: Matrix) -> Matrix:
 
     P = R = 0 leaves nothing to weigh:
 
-    >>> kalman_gain([[0.0]], [[1]], [[0.0]])
+    >>> kalman_gain([[0.0]], [[1]], [[0.0]])  # doctest: +ELLIPSIS
     Traceback (most recent call last):
     ...
-    ValueError: the innovation covariance S = H P Hᵀ + R is singular (P and R are both zero along some measurement): matrix is singular (all its entries are 0)
+    ValueError: the innovation covariance S = H P Hᵀ + R is singular (P and R are both zero ...): matrix is singular ...
     """
     Ht = transpose(H)
     S = add(matmul(matmul(H, P), Ht), R)

@@ -115,7 +115,8 @@ def inverse(a: Matrix) -> Matrix:
     for c in range(n):
         p = max(range(c, n), key=lambda r: abs(m[r][c]))
         if abs(m[p][c]) <= PIVOT_RTOL * size:
-            raise ValueError(f"matrix is singular (a pivot is {abs(m[p][c]) / size:.3g} times its largest entry {size:g})")
+            raise ValueError(f"matrix is singular (a pivot is {abs(m[p][c]) / size:.3g} times its largest entry "
+                             f"{size:g})")
         m[c], m[p] = m[p], m[c]
         piv = m[c][c]
         m[c] = [x / piv for x in m[c]]

@@ -111,9 +111,11 @@ def edge_error_relative(xi: Pose, xj: Pose, z: Pose) -> list[float]:
     and 0.05 m to its left (at (1.95, 2.1) in the world), turned 0.02 rad more;
     odometry said (1, 0, 0).
 
-    >>> [round(v, 4) + 0.0 for v in edge_error_relative((2, 1, math.pi / 2), (1.95, 2.1, math.pi / 2 + 0.02), (1, 0, 0))]
+    >>> [round(v, 4) + 0.0
+    ...  for v in edge_error_relative((2, 1, math.pi / 2), (1.95, 2.1, math.pi / 2 + 0.02), (1, 0, 0))]
     [-0.1, -0.05, -0.02]
-    >>> edge_error_relative((0, 0, 0), (1.1, 0.05, 0.02), (1, 0, 0)) == edge_error_simple((0, 0, 0), (1.1, 0.05, 0.02), (1, 0, 0))
+    >>> a, b = (0, 0, 0), (1.1, 0.05, 0.02)
+    >>> edge_error_relative(a, b, (1, 0, 0)) == edge_error_simple(a, b, (1, 0, 0))
     True
     """
     h = relative_pose(xi, xj)

@@ -54,7 +54,8 @@ def widget(ans: FormulaAnswer, base: str) -> str:
         f'<label class="wb-label" for="{base}-answer">{label_html(ans)}</label>'
         f'<span class="wb-answer-row"><input id="{base}-answer" class="wb-answer wb-formula" '
         f'{role_attr(ROLE.answer)} type="text" inputmode="text" autocomplete="off" autocapitalize="off" '
-        f'spellcheck="false" placeholder="{escape(placeholder(ans))}" aria-describedby="{base}-reading {base}-feedback">'
+        f'spellcheck="false" placeholder="{escape(placeholder(ans))}" aria-describedby="{base}-reading '
+        f'{base}-feedback">'
         f"{check_button()}</span>"
         f'<p class="wb-reading" id="{base}-reading" aria-live="polite"></p>'
     ))

@@ -29,7 +29,8 @@ def _half(r: Reading) -> float | None:
 
 
 def differs(ans: MatrixAnswer, readings: list[list[Reading]], target, values=None) -> list[Position]:
-    """1-based ``[row, col]`` of every entry that does not count as ``target``'s (``values`` overrides the readings' values)."""
+    """1-based ``[row, col]`` of every entry that does not count as ``target``'s
+    (``values`` overrides the readings' values)."""
     out = []
     for i, (row, want) in enumerate(zip(readings, target), 1):
         for j, (r, w) in enumerate(zip(row, want), 1):

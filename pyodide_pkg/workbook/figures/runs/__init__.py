@@ -201,7 +201,9 @@ def as_angles(got: Any, want: Any, angles: tuple[str, ...], at: str = "") -> Any
     if not angles or got is None or want is None:
         return got
     if isinstance(got, (list, tuple)) and isinstance(want, (list, tuple)):
-        return [as_angles(g, w, angles, f"{at}[{i}]") for i, (g, w) in enumerate(zip(got, want))] + list(got[len(want):])
+        return [as_angles(g, w, angles, f"{at}[{i}]") for i, (g, w) in enumerate(zip(got, want))] + list(
+            got[len(want) :]
+        )
     if isinstance(got, float) and math.isfinite(got) and abs(got) <= math.pi + 1e-9 and angle_at(at, angles):
         return want + math.remainder(got - want, 2 * math.pi)
     return got

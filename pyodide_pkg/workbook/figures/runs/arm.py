@@ -47,7 +47,8 @@ def frame(d: Drawn) -> tuple[str, str]:
         c.line(tip, shown, "wb-fig-bad wb-fig-thin")
         c.line(elbow, shown, f"{YOURS} wb-fig-thin")
         c.dot(shown, 5, f"{YOURS} wb-fig-solid")
-        c.label(shown, "your tip", f"wb-fig-label wb-fig-small {YOURS}", toward=(shown[0] - elbow[0], shown[1] - elbow[1]))
+        c.label(shown, "your tip", "wb-fig-label wb-fig-small "
+                                   f"{YOURS}", toward=(shown[0] - elbow[0], shown[1] - elbow[1]))
     c.label(tip, "true tip", "wb-fig-label wb-fig-small wb-fig-c", toward=(tip[0] - elbow[0], tip[1] - elbow[1]))
     below = message(c, said)
     pose = (f"links {compact(L1)} and {compact(L2)} at θ1 = {compact(math.degrees(t1))}°, "
@@ -56,7 +57,8 @@ def frame(d: Drawn) -> tuple[str, str]:
              else "your function gave no tip to draw")
     description = f"{d.label}: {pose}; the true tip is at ({compact(tip[0])}, {compact(tip[1])}); {where}."
     description = with_message(description, said)
-    return c.svg(f"forward_kinematics_2link, {d.label}: the arm, its true tip and yours", extra_height=below), description
+    return c.svg(f"forward_kinematics_2link, {d.label}: the arm, its true tip and "
+                 "yours", extra_height=below), description
 
 
 RUN = RunFigure(name="arm", title="Your forward kinematics, drawn", unit="m", frame=frame, points=True)

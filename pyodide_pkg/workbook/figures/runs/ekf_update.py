@@ -63,7 +63,8 @@ def frame(d: Drawn) -> tuple[str, str]:
                    f"z = {compact(z)} with variance {compact(R)}; the reference gives x = {compact(want[0])} with "
                    f"variance {compact(want[1])}; {yours}.")
     description = with_message(description, said)
-    return c.svg(f"ekf_update, {d.label}: the estimate before and after, yours and the reference", extra_height=below), description
+    return c.svg(f"ekf_update, {d.label}: the estimate before and after, yours and the "
+                 "reference", extra_height=below), description
 
 
 RUN = RunFigure(name="ekf-update", title="Your Kalman update, drawn", unit="", frame=frame)

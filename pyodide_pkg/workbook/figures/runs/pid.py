@@ -48,7 +48,8 @@ def frame(d: Drawn) -> tuple[str, str]:
     description = (f"{d.label}: a step to 1 under {gains}, every {compact(dt)} s for {compact(duration)} s; "
                    f"with the reference the output ends at {ref_end}; {yours}.")
     description = with_message(description, d.message)
-    return c.svg(f"pid_step, {d.label} ({gains}): step response, yours over the reference's", extra_height=below), description
+    return c.svg(f"pid_step, {d.label} ({gains}): step response, yours over the "
+                 "reference's", extra_height=below), description
 
 
 RUN = RunFigure(name="pid", title="Your PID controller in a closed loop", unit="", frame=frame,
