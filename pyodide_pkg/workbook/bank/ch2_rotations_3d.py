@@ -281,8 +281,10 @@ EXERCISES = (
         title="Multiply two quaternions",
         spec=matrix(label="q₁ ⊗ q₂ = (w, x, y, z)ᵀ", names=("w", "x", "y", "z")),
         vary=Vary(_quat_product,
-                  Param("w1", 1, 1, 3, 1), Param("x1", 2, -2, 2, 1), Param("y1", 0, -2, 2, 1), Param("z1", -1, -2, 2, 1),
-                  Param("w2", 2, 1, 3, 1), Param("x2", -1, -2, 2, 1), Param("y2", 1, -2, 2, 1), Param("z2", 0, -2, 2, 1),
+                  Param("w1", 1, 1, 3, 1), Param("x1", 2, -2, 2, 1),
+                  Param("y1", 0, -2, 2, 1), Param("z1", -1, -2, 2, 1),
+                  Param("w2", 2, 1, 3, 1), Param("x2", -1, -2, 2, 1),
+                  Param("y2", 1, -2, 2, 1), Param("z2", 0, -2, 2, 1),
                   valid=_fair_product),
     ),
 )
