@@ -8,6 +8,20 @@ from ..kinds.debug import Debug
 from ..number_format import fmt
 from ..reference.arm import end_effector_velocity, jacobian_2link
 
+# 7.5 (in ch7_jacobians.py): J22 written with s12 where it needs c12.
+JACOBIAN_SIGN_BUG = """\
+import math
+def jacobian_2link(L1, L2, t1, t2):
+    s1, c1 = math.sin(t1), math.cos(t1)
+    s12, c12 = math.sin(t1 + t2), math.cos(t1 + t2)
+    J11 = -L1 * s1 - L2 * s12
+    J12 = -L2 * s12
+    J21 = L1 * c1 + L2 * c12
+    J22 = L2 * s12
+    return [[J11, J12], [J21, J22]]
+"""
+
+
 _VELOCITY = """\
 import math
 def tip_velocity(L1, L2, t1, t2, w1, w2):

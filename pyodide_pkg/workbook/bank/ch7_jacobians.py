@@ -25,19 +25,8 @@ from ..tolerance import agrees, clean
 from ..variants import Choice, Param, Vary
 from . import column, grid
 from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
+from .ch7_bugs import JACOBIAN_SIGN_BUG
 from .checks import apart, kept_slips
-
-_BUGGY = """\
-import math
-def jacobian_2link(L1, L2, t1, t2):
-    s1, c1 = math.sin(t1), math.cos(t1)
-    s12, c12 = math.sin(t1 + t2), math.cos(t1 + t2)
-    J11 = -L1 * s1 - L2 * s12
-    J12 = -L2 * s12
-    J21 = L1 * c1 + L2 * c12
-    J22 = L2 * s12
-    return [[J11, J12], [J21, J22]]
-"""
 
 
 def _angle(deg: float, tex: bool = False) -> str:
@@ -362,7 +351,7 @@ EXERCISES = (
     Debug(
         id="7.5",
         title="Find the bug in the Jacobian",
-        code=_BUGGY,
+        code=JACOBIAN_SIGN_BUG,
         bug_line=8,
         fixed_line="    J22 = L2 * c12",
         bug=(
