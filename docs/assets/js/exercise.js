@@ -33,9 +33,9 @@ function recordAttempt(ctx, reply, extra = {}) {
 }
 
 /** Send one request for this exercise and show its reply; `op` is "grade" or "run". */
-async function submit(ctx, op, payload, { limitMs, onProgress, saved = {} } = {}) {
+async function submit(ctx, op, payload, { limitMs, onProgress, onWait, saved = {} } = {}) {
   setPending(ctx.el);
-  const reply = await ctx.runtime.request({ op, exercise: ctx.id, ...payload }, { limitMs, onProgress });
+  const reply = await ctx.runtime.request({ op, exercise: ctx.id, ...payload }, { limitMs, onProgress, onWait });
   showReply(ctx.el, reply);
   recordAttempt(ctx, reply, saved);
   return reply;
