@@ -67,7 +67,8 @@ function progressMeter(indexURL, files, onProgress) {
     let done = 0;
     for (const [name, size] of expected) done += Math.min(loaded.get(name) || 0, size || Infinity);
     const total = [...expected.values()].reduce((a, b) => a + b, 0);
-    if (phase === "download" && done >= total) phase = "start"; // every file is in: Python starts
+    // Every file is in, or Python has started and imports (a file left uncounted must not hold the phase back).
+    if (phase === "download" && (done >= total || step === BOOT_STEP.import)) phase = "start";
     const shown = phase === "start" && step === BOOT_STEP.download ? BOOT_STEP.compile : step;
     onProgress({ phase, loaded: Math.min(done, total), total, step: shown });
   };
@@ -266,7 +267,8 @@ function patchWasm(url, meter, compiledStep) {
 export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null, lockFileURL = null,
   quiet = false, linkSpeed: knownSpeed = null }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
-  const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "pyodide-lock.json", fileIn(indexURL, stdLibURL)];
+  const lock = lockFileURL ? fileIn(indexURL, lockFileURL) : "pyodide-lock.json"; // the lock this start reads
+  const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", lock, fileIn(indexURL, stdLibURL)];
   if (snapshotURL) files.push(fileIn(indexURL, snapshotURL));
   const meter = progressMeter(indexURL, files, onProgress);
   meter.phase("download");

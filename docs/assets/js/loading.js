@@ -85,7 +85,7 @@ function update(who, { phase, loaded = 0, total = 0, step }) {
 function position(start, now) {
   if (start.phase === BOOT_PHASE.ready) return 1;
   let real, end, ms;
-  if (start.phase === BOOT_PHASE.download || !SPAN[start.step]) {
+  if (!SPAN[start.step]) {
     real = start.total ? (Math.min(start.loaded, start.total) / start.total) * DOWNLOAD_SHARE : 0;
     [end, ms] = [DOWNLOAD_SHARE, DOWNLOAD_CREEP_MS];
   } else {
@@ -99,7 +99,7 @@ function position(start, now) {
 function describe(who, start, now) {
   const { phase, step, loaded, total } = start;
   if (phase === BOOT_PHASE.ready) return [WHO[who].ready, ""];
-  if (phase === BOOT_PHASE.download) {
+  if (phase === BOOT_PHASE.download && !SPAN[step]) {
     const text = total ? `Downloading the Python runtime · ${formatSize(loaded)} of ${formatSize(total)}` : "Downloading the Python runtime…";
     return [text, ""];
   }
