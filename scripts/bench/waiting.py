@@ -40,21 +40,31 @@ def first_build(page) -> dict:
     return {"ms": round(res["ms"], 1), "ready_to_verdict_ms": round(after, 1), "sandbox": box}
 
 
+ON_TIME_MS = 600  # a longer gap between two samples: the main thread was busy (nothing on the page could move)
+
+
 def still_stretches(samples: list) -> dict:
     """From the bar's samples while it waited (not after "ready"): the longest time its value and text
-    stayed the same, and the longest gap between two samples (the main thread was busy: nothing moved)."""
+    stayed the same (``still_max_ms``, as the learner saw it), the same over samples that came on time
+    only (``still_on_time_max_ms``: what the page's updates did, a busy main thread left out), and the
+    longest gap between two samples (the main thread was busy: nothing moved)."""
     waiting = [s for s in samples if s[4] != "ready"]
-    longest = gap = 0.0
+    longest = on_time = gap = 0.0
     if waiting:
-        since = waiting[0]
+        since = since_on_time = waiting[0]
         for before, sample in zip(waiting, waiting[1:]):
             gap = max(gap, sample[0] - before[0])
-            if (sample[1], sample[3]) != (since[1], since[3]):
-                since = sample
+            if sample[0] - before[0] > ON_TIME_MS:
+                since_on_time = sample
+            changed = (sample[1], sample[3]) != (since[1], since[3])
+            since = sample if changed else since
+            longest = longest if changed else max(longest, sample[0] - since[0])
+            if (sample[1], sample[3]) != (since_on_time[1], since_on_time[3]):
+                since_on_time = sample
             else:
-                longest = max(longest, sample[0] - since[0])
-    return {"still_max_ms": round(longest), "sample_gap_max_ms": round(gap), "samples": len(waiting),
-            "texts": sorted({s[3] for s in waiting})}
+                on_time = max(on_time, sample[0] - since_on_time[0])
+    return {"still_max_ms": round(longest), "still_on_time_max_ms": round(on_time), "sample_gap_max_ms": round(gap),
+            "samples": len(waiting), "texts": sorted({s[3] for s in waiting})}
 
 
 def slow_first_visit(b: Browsers) -> dict:
