@@ -133,7 +133,7 @@ const setText = (node, text) => node.textContent !== text && (node.textContent =
 function draw(box, now = performance.now()) {
   const who = box.dataset.wbWaitsFor;
   const start = starts[who];
-  box.setAttribute(ATTR.phase, start.phase);
+  if (box.getAttribute(ATTR.phase) !== start.phase) box.setAttribute(ATTR.phase, start.phase);
   setText(box.querySelector(".wb-loading-title"), WHO[who].title());
   const [text, time] = describe(who, start, now);
   const [line, clock] = box.querySelector(".wb-loading-detail").children;
@@ -141,6 +141,8 @@ function draw(box, now = performance.now()) {
   setText(clock, time);
   findRole(box, ROLE.runtimeProgress).value = position(start, now) * SCALE;
   const at = STEPS.findIndex(([phase]) => phase === start.phase);
+  if (box.dataset.wbAt === String(at)) return; // the steps' marks change with the phase only
+  box.dataset.wbAt = String(at);
   box.querySelectorAll("li").forEach((item, i) => {
     if (i === at) item.setAttribute("aria-current", "step");
     else item.removeAttribute("aria-current");
