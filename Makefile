@@ -101,9 +101,11 @@ build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_std
 	$(BIN)/python scripts/sandbox_files.py  # the sandbox's Python: the core without the grading package
 	touch $@
 
-# The worker's memory snapshot: Node boots the vendored Pyodide with the package imported.
+# The workers' memory snapshots: Node boots the vendored Pyodide with the package imported
+# (the grader's), and with the sandbox's own Python and its runner (the sandbox's).
 build/snapshot.stamp: build/stdlib.stamp scripts/build_snapshot.mjs
 	node scripts/build_snapshot.mjs
+	node scripts/build_snapshot.mjs --sandbox
 	touch $@
 
 # The page's JavaScript (esbuild); contract.js imports contract.json, the worker's boot

@@ -1,4 +1,5 @@
-// Make the Pyodide memory snapshot the page's worker starts from.
+// Make the Pyodide memory snapshots the page's workers start from: the grader's
+// (by default) and, with --sandbox, the sandbox's (docs/assets/js/sandbox.js).
 //
 // A fresh Pyodide spends most of its start-up booting the interpreter and
 // importing modules. Here, at build time, Node boots the same vendored Pyodide
@@ -12,7 +13,12 @@
 // Output: <vendor>/workbook.snapshot.gz (zero pages left out, see sparse(), then
 // gzip: the service worker or the worker inflates it with DecompressionStream) and build/snapshot.json (sizes, hashes, the core it was made with).
 //
-// Usage: node scripts/build_snapshot.mjs [vendor-dir]
+// The sandbox's: the same Pyodide with the sandbox's own standard library and lock
+// (scripts/sandbox_files.py: no grading package), workbook_sandbox imported and one
+// small run made through it (nothing of a learner's: a function of its own, here);
+// output <vendor>/sandbox.snapshot.gz and build/sandbox-snapshot.json.
+//
+// Usage: node scripts/build_snapshot.mjs [--sandbox] [vendor-dir]
 import { createHash } from "node:crypto";
 import { mkdirSync, readFileSync, writeFileSync } from "node:fs";
 import { createRequire } from "node:module";
@@ -21,11 +27,14 @@ import path from "node:path";
 import { fileURLToPath } from "node:url";
 
 const root = path.resolve(path.dirname(fileURLToPath(import.meta.url)), "..");
-const vendor = path.resolve(process.argv[2] || path.join(root, "docs/assets/vendor/pyodide")) + "/";
+const args = process.argv.slice(2);
+const forSandbox = args.includes("--sandbox");
+const vendor = path.resolve(args.find((a) => a !== "--sandbox") || path.join(root, "docs/assets/vendor/pyodide")) + "/";
 const require = createRequire(import.meta.url);
 const { loadPyodide } = require(vendor + "pyodide.js");
 
-const core = readFileSync(vendor + "python_stdlib.core.zip"); // run scripts/split_stdlib.py first
+const stdlibName = forSandbox ? "python_stdlib.sandbox.zip" : "python_stdlib.core.zip"; // scripts/split_stdlib.py, sandbox_files.py
+const core = readFileSync(vendor + stdlibName);
 
 // Everything imported here is in the snapshot; nothing may hold a JavaScript
 // object (Pyodide refuses to snapshot those), so the warm-up goes through JSON.
@@ -49,6 +58,19 @@ for kind, ex in sorted(kinds.items()):
     assert reply["ok"], reply
 # Leave no trace of this machine or this script: loadPyodide puts "" back on
 # sys.path after a restore, and Node's "_" names the build script.
+import gc, os, sys
+os.environ.pop("_", None)
+while "" in sys.path:
+    sys.path.remove("")
+gc.collect()
+`;
+// The sandbox's: its runner imported and used once (what a first run would import and compile).
+const SANDBOX_WARM_UP = `
+import json
+from workbook_sandbox import runner
+job = {"function": "f", "harness": "call", "cases": [[1.5], [0]]}
+report = json.loads(runner.run_in_sandbox(json.dumps(job), "def f(x):\\n    return (1 / x, [x])\\n")[0])
+assert "value" in report["cases"][0] and report["cases"][1]["error"]["type"] == "ZeroDivisionError", report
 import gc, os, sys
 os.environ.pop("_", None)
 while "" in sys.path:
@@ -87,17 +109,20 @@ function sparse(bytes) {
 }
 
 const t0 = performance.now();
-// The worker's own start: the core standard library, which holds the package too (scripts/split_stdlib.py).
-const stdLibURL = vendor + "python_stdlib.core.zip";
-const py = await loadPyodide({ indexURL: vendor, stdLibURL, _makeSnapshot: true, stdout: () => {}, stderr: () => {} });
-py.runPython(WARM_UP);
+// The worker's own start: the core standard library, which holds the package too (scripts/split_stdlib.py);
+// the sandbox's: its own standard library and lock.
+const stdLibURL = vendor + stdlibName;
+const lock = forSandbox ? { lockFileURL: vendor + "pyodide-lock.sandbox.json" } : {};
+const py = await loadPyodide({ indexURL: vendor, stdLibURL, ...lock, _makeSnapshot: true, stdout: () => {}, stderr: () => {} });
+py.runPython(forSandbox ? SANDBOX_WARM_UP : WARM_UP);
 const snapshot = py.makeMemorySnapshot();
 const packed = sparse(snapshot);
 const gz = gzipSync(packed, { level: 9 });
-writeFileSync(vendor + "workbook.snapshot.gz", gz);
+writeFileSync(vendor + (forSandbox ? "sandbox.snapshot.gz" : "workbook.snapshot.gz"), gz);
 const sha256 = (b) => createHash("sha256").update(b).digest("hex");
 const info = {
   pyodide: py.version,
+  stdlib: stdlibName,
   stdlib_core_sha256: sha256(core),
   bytes: snapshot.length,
   sparse_bytes: packed.length,
@@ -105,6 +130,6 @@ const info = {
   sha256: sha256(snapshot),
 };
 mkdirSync(path.join(root, "build"), { recursive: true });
-writeFileSync(path.join(root, "build/snapshot.json"), JSON.stringify(info, null, 2) + "\n");
+writeFileSync(path.join(root, forSandbox ? "build/sandbox-snapshot.json" : "build/snapshot.json"), JSON.stringify(info, null, 2) + "\n");
 const mb = (n) => (n / 1e6).toFixed(1) + " MB";
-console.log(`snapshot: ${mb(info.bytes)} (${mb(info.gzip_bytes)} gzip) in ${((performance.now() - t0) / 1000).toFixed(1)} s`);
+console.log(`${forSandbox ? "sandbox " : ""}snapshot: ${mb(info.bytes)} (${mb(info.gzip_bytes)} gzip) in ${((performance.now() - t0) / 1000).toFixed(1)} s`);

@@ -41,8 +41,8 @@ def parse_args(argv=None) -> argparse.Namespace:
                     help="comma-separated network profiles, each NAME or NAME:RUNS, of "
                          f"{', '.join(PROFILES)} (default {DEFAULT_PROFILES}: localhost --runs times, "
                          + ", ".join(f"{p.name} {p.runs}" for p in PROFILES.values() if p.runs) + " times at most)")
-    ap.add_argument("--phases", default="startup,first_feedback,baseline,class_page",
-                    help="comma-separated subset of startup,first_feedback,baseline,class_page (default: all); "
+    ap.add_argument("--phases", default="startup,first_feedback,baseline,class_page,waiting",
+                    help="comma-separated subset of startup,first_feedback,baseline,class_page,waiting (default: all); "
                          "'ready' alone measures the cold and warm start-up only (for A/B comparisons)")
     ap.add_argument("--site", type=Path, default=SITE, help="the built site to serve (default site/)")
     ap.add_argument("--out", type=Path, default=ROOT / "bench-results", help="output folder (default bench-results/)")

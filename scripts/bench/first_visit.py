@@ -1,7 +1,8 @@
 """A learner's first visit on a network profile, next to the baseline's.
 
 Ours: open chapter 0 in a new profile, wait until the runtime is ready, grade
-one Derive answer at once (the first grade right after ready), then wait
+one Derive answer at once (the first grade right after ready), run one Build
+exercise at once (the first Build run right after ready: waiting.py), then wait
 (bounded) until the service worker has stored the site for offline use and the
 link is quiet. The baseline: open its page, wait until ``workbook.api`` is
 imported, then until the link is quiet. Both: time to ready, bytes on the wire
@@ -12,7 +13,7 @@ from __future__ import annotations
 
 from workbook.contract import ATTR, DATA, ROLE, STATE
 
-from . import pagejs
+from . import pagejs, waiting
 from .browser import BenchError, Browsers
 from .config import CH0, DERIVE_INPUT, GRADE_TIMEOUT_MS, GRADED, Profile
 from .pagejs import exercise, role
@@ -47,10 +48,13 @@ def ours(b: Browsers, profile: Profile) -> dict:
         mark = b.server.mark()
         page, rec = b.visit(ctx, b.site + CH0, timeout_ms=profile.ready_timeout_ms, settle=False)
         first_grade = grade_once(page)
+        first_build = waiting.first_build(page)
         offline = wait_offline(page, profile.precache_timeout_ms)
         quiet = b.server.wait_quiet(2.0, 60.0)
         out = _numbers(b, page, mark, rec)
         out.update(first_grade_ms=first_grade["ms"], first_grade_state=first_grade["state"],
+                   first_build_ms=first_build["ms"], first_build_after_ready_ms=first_build["ready_to_verdict_ms"],
+                   first_build_sandbox=first_build["sandbox"],
                    offline=offline, quiet=quiet, sw=pagejs.run(page, "snapshot")["sw"])
         page.close()
         return out

@@ -16,7 +16,7 @@ JS_DIR = Path(__file__).with_name("js")
 
 # The roles the bench's scripts touch.
 _ROLES = (ROLE.answer, ROLE.choice, ROLE.line, ROLE.check, ROLE.run, ROLE.editor, ROLE.feedback, ROLE.test_result,
-          ROLE.new_variant)
+          ROLE.new_variant, ROLE.runtime_status, ROLE.runtime_progress)
 
 
 def role(name: str) -> str:
@@ -33,7 +33,7 @@ def contract() -> dict:
     """``C``: the names the page scripts need, from the contract."""
     return {
         "attr": {"exercise": ATTR.exercise, "state": ATTR.state, "runtime": ATTR.runtime, "passed": ATTR.passed,
-                 "offline": ATTR.offline, "variant": ATTR.variant},
+                 "offline": ATTR.offline, "variant": ATTR.variant, "phase": ATTR.phase},
         "sel": {name: role(name) for name in _ROLES},
         "state": {"pending": STATE.pending, "unanswered": STATE.unanswered},
     }
@@ -48,9 +48,9 @@ def source(name: str) -> str:
     return "\n".join(lines)
 
 
-def init_script() -> str:
-    """The instrumentation, as an init script: ``js/init.js`` called with ``C``."""
-    return f"({source('init').strip()})({json.dumps(contract())});"
+def init_script(name: str = "init") -> str:
+    """The instrumentation, as an init script: ``js/init.js`` (or ``js/NAME.js``) called with ``C``."""
+    return f"({source(name).strip()})({json.dumps(contract())});"
 
 
 def run(page, name: str, args: dict | None = None):

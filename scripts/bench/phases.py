@@ -14,7 +14,7 @@ from workbook.contract import ATTR, ROLE, STATE
 from workbook.kinds.build import Build
 from workbook.kinds.derive import Derive
 
-from . import class_page, first_visit, pagejs
+from . import class_page, first_visit, pagejs, waiting
 from .browser import BenchError, Browsers
 from .config import (
     BUILD_HEAVY_ID,
@@ -53,7 +53,7 @@ def _answer(ex_id: str) -> Any:
     return ex.answer
 
 
-LOCAL_PHASES = ("startup", "first_feedback", "baseline", "ready", "class_page")
+LOCAL_PHASES = ("startup", "first_feedback", "baseline", "ready", "class_page", "waiting")
 
 
 class Phases:
@@ -230,6 +230,10 @@ class Phases:
     # -- the class page: 200 hand-ins read and re-graded (class_page.py) -----------
     def class_page(self, run: dict) -> None:
         run["class_page"] = class_page.measure(self.b)
+
+    # -- a first visit through Chromium's throttling: what the learner waits for (waiting.py)
+    def waiting(self, run: dict) -> None:
+        run["waiting"] = waiting.slow_first_visit(self.b)
 
     # -- a first visit on this profile's link, ours and the baseline's --------------
     def first_visit(self, run: dict) -> None:

@@ -77,12 +77,9 @@ def test_the_core_standard_library_holds_the_package_as_it_is():
         assert {n[:-3].replace("/", ".").removesuffix(".__init__") for n in z.namelist() if n.endswith(".py")} == rest
 
 
-def test_snapshot_was_made_from_the_core_the_site_ships():
-    """The snapshot holds the grading package's code: a stale one would grade with old keys."""
-    vendor = VENDOR
-    info = json.loads((SITE.parent / "build/snapshot.json").read_text())
-    assert info["stdlib_core_sha256"] == hashlib.sha256((vendor / "python_stdlib.core.zip").read_bytes()).hexdigest()
-    packed = gzip.decompress((vendor / "workbook.snapshot.gz").read_bytes())
+def snapshot_memory(name: str, info: dict) -> bytes:
+    """The interpreter's memory a snapshot file holds (zero pages put back), checked against its build record."""
+    packed = gzip.decompress((VENDOR / name).read_bytes())
     assert packed[:8] == b"WBSPARSE" and len(packed) == info["sparse_bytes"] < info["bytes"]
     total, runs = struct.unpack_from("<II", packed, 8)
     memory, data = bytearray(total), 16 + 8 * runs
@@ -92,6 +89,29 @@ def test_snapshot_was_made_from_the_core_the_site_ships():
         data += length
     assert data == len(packed)
     assert hashlib.sha256(memory).hexdigest() == info["sha256"] and len(memory) == info["bytes"]
+    return bytes(memory)
+
+
+GRADER_MODULES = (b"workbook.api", b"workbook/api.py", b"workbook.kinds", b"workbook/reference")
+
+
+def test_snapshot_was_made_from_the_core_the_site_ships():
+    """The snapshot holds the grading package's code: a stale one would grade with old keys."""
+    info = json.loads((SITE.parent / "build/snapshot.json").read_text())
+    assert info["stdlib_core_sha256"] == hashlib.sha256((VENDOR / "python_stdlib.core.zip").read_bytes()).hexdigest()
+    memory = snapshot_memory("workbook.snapshot.gz", info)
+    assert all(name in memory for name in GRADER_MODULES)
+
+
+def test_the_sandbox_snapshot_was_made_from_its_own_python_without_the_grading_package():
+    """The sandbox starts from a snapshot of its own Python (its standard library, its runner imported):
+    made from the files the site ships, and holding nothing of the grading package."""
+    info = json.loads((SITE.parent / "build/sandbox-snapshot.json").read_text())
+    assert info["stdlib"] == "python_stdlib.sandbox.zip"
+    assert info["stdlib_core_sha256"] == hashlib.sha256((VENDOR / "python_stdlib.sandbox.zip").read_bytes()).hexdigest()
+    memory = snapshot_memory("sandbox.snapshot.gz", info)
+    assert b"workbook_sandbox.runner" in memory
+    assert not [name for name in GRADER_MODULES if name in memory]
 
 
 def test_the_sandbox_holds_no_grading_package():

@@ -73,7 +73,8 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     for needed in ("./", "chapters/00-rotations-2d/", "progress/", "search/search_index.json", "assets/exercises.json",
                    "assets/vendor/pyodide/pyodide.asm.wasm", "assets/vendor/pyodide/pyodide-lock.json",
                    "assets/vendor/pyodide/workbook.snapshot.gz", "assets/vendor/pyodide/python_stdlib.core.zip",
-                   "assets/vendor/pyodide/python_stdlib.rest.zip",
+                   "assets/vendor/pyodide/python_stdlib.rest.zip", "assets/vendor/pyodide/sandbox.snapshot.gz",
+                   "assets/vendor/pyodide/python_stdlib.sandbox.zip", "assets/vendor/pyodide/pyodide-lock.sandbox.json",
                    "assets/vendor/katex/katex.min.js", "assets/dist/workbook.js", "assets/dist/worker.js",
                    "assets/workbook.css"):
         assert needed in urls, needed
@@ -96,6 +97,7 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     build = exercise(fresh, "0.5")
     set_editor(fresh, build, ROTATE_NUMPY)
     assert run_build(build, timeout=LONG) == "correct", feedback(build)
+    assert fresh.evaluate("workbook.sandbox.startStages.from") == "snapshot"  # the sandbox's own, stored too
 
     # Every precached file is served with the network gone.
     missing = fresh.evaluate("""async (urls) => {

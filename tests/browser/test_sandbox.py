@@ -205,21 +205,26 @@ def test_attacks_change_no_stored_byte_and_plant_no_page(page, site_url):
 IDLE = "() => new Promise((resolve) => requestIdleCallback(resolve, {timeout: 2000}))"
 
 
-def test_the_sandbox_starts_only_near_build_code(page, site_url):
+def test_the_sandbox_starts_from_its_snapshot_near_build_code_once_the_grader_is_ready(page, site_url):
     page.goto(site_url + "progress/")  # no Build exercise: no sandbox, ever
     page.wait_for_function("() => window.workbook && window.workbook.progress", timeout=LONG)
     page.evaluate(IDLE)
     assert page.evaluate("'sandbox' in window.workbook") is False
-    open_chapter(page, site_url, 0)  # read from the top, 0.5 far below: no sandbox yet
+    open_chapter(page, site_url, 0)  # read from the top, 0.5 more than a screen and a half below: no sandbox yet
     ex = exercise(page, "0.5")
-    assert page.evaluate("el => el.getBoundingClientRect().top - innerHeight", ex.element_handle()) > 600
+    assert page.evaluate("el => el.getBoundingClientRect().top - 2.5 * innerHeight", ex.element_handle()) > 0
     page.evaluate(IDLE)
     assert page.evaluate("'sandbox' in window.workbook") is False
-    ex.scroll_into_view_if_needed()  # near the viewport: the sandbox starts once the page is idle, before any Run
+    ex.scroll_into_view_if_needed()  # near the viewport: it starts once the page is idle, before any Run
     page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
-    assert exercise(page, "0.5").get_attribute("data-state") == "unanswered"
+    assert ex.get_attribute("data-state") == "unanswered"
+    # after the grader was ready (it never competes with the grader's start), from a snapshot of its own
+    assert page.evaluate("workbook.sandbox.startedAt >= workbook.runtime.readyAt")
     stages = page.evaluate("workbook.sandbox.startStages")
+    assert stages["from"] == "snapshot"
     assert 0 < stages["booted"] <= stages["ready"] and stages["wasmBytes"] > 1_000_000
+    set_editor(page, ex, GOOD)
+    assert run_build(ex, LONG) == "correct"
 
 
 def test_runs_that_queue_up_are_sent_one_at_a_time(lab):

@@ -1,19 +1,22 @@
 // Starting Pyodide in a worker: the one place that knows how.
 //
-//   const { py, from, why, stages } = await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
+//   const { py, from, why, stages, step } = await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
 //
 // Both workers start here: the grader (worker.js: the core standard library and a
 // snapshot) and the sandbox for learners' code (sandbox.js: its own standard
-// library and lock file, no snapshot, Python's output silenced: `lockFileURL`,
+// library, lock file and snapshot, Python's output silenced: `lockFileURL`,
 // `quiet`).
 // - `stdLibURL`: the standard library zip to start with (the grader: the small
 //   core of scripts/split_stdlib.py, which holds the grading package too).
 // - `snapshotURL`: a memory snapshot made at build time (scripts/build_snapshot.mjs)
-//   to restore instead of booting; null boots plainly (a second worker, e.g. a
-//   sandbox for learners' code, can start that way with a stdlib of its own).
-// - `onProgress({phase, loaded, total})`: phase "download" (bytes of the runtime
+//   to restore instead of booting; null boots plainly.
+// - `linkSpeed`: the link's speed in bytes per ms when the caller knows it (the
+//   sandbox: the grader measured it on the same link), else measured here.
+// - `onProgress({phase, loaded, total, step})`: phase "download" (bytes of the runtime
 //   files, counted as they arrive), "start" (Python starting), then the caller
-//   says "ready". Sizes come from the build (scripts/bundle.mjs: BOOT_SIZES).
+//   says "ready"; `step` (boot-steps.js) what is happening now: the start's steps
+//   are told as they begin, and `step(name)` in the result tells the caller's own
+//   (its imports). Sizes come from the build (scripts/bundle.mjs: BOOT_SIZES).
 //
 // It relies on Pyodide 0.27 internals beyond the public API, each named in
 // pyodide-internals.json (beside this file; PYODIDE_INTERNALS below), which a
@@ -24,6 +27,7 @@
 // docs/performance.md has the measurements behind each step.
 /* global loadPyodide, BOOT_SIZES */
 import internals from "./pyodide-internals.json";
+import { BOOT_STEP, STEP_ORDER } from "./boot-steps.js";
 
 export const PYODIDE_INTERNALS = Object.freeze(internals.internals.map((entry) => entry.name));
 
@@ -53,6 +57,7 @@ function progressMeter(indexURL, files, onProgress) {
   const loaded = new Map(); // file name -> bytes so far
   const expected = new Map(files.map((name) => [name, SIZES[name] || 0]));
   let phase = "download";
+  let step = BOOT_STEP.download;
   let last = 0;
   const report = (force) => {
     if (!onProgress) return;
@@ -62,8 +67,10 @@ function progressMeter(indexURL, files, onProgress) {
     let done = 0;
     for (const [name, size] of expected) done += Math.min(loaded.get(name) || 0, size || Infinity);
     const total = [...expected.values()].reduce((a, b) => a + b, 0);
-    if (phase === "download" && done >= total) phase = "start"; // every file is in: Python starts
-    onProgress({ phase, loaded: Math.min(done, total), total });
+    // Every file is in, or Python has started and imports (a file left uncounted must not hold the phase back).
+    if (phase === "download" && (done >= total || step === BOOT_STEP.import)) phase = "start";
+    const shown = phase === "start" && step === BOOT_STEP.download ? BOOT_STEP.compile : step;
+    onProgress({ phase, loaded: Math.min(done, total), total, step: shown });
   };
   return {
     /** Count `response`'s body as it arrives (a clone: the original goes on untouched). */
@@ -96,6 +103,12 @@ function progressMeter(indexURL, files, onProgress) {
       phase = next;
       report(true);
     },
+    /** What the worker does now (never an earlier step than the one told before). */
+    step(next) {
+      if (STEP_ORDER.indexOf(next) <= STEP_ORDER.indexOf(step)) return;
+      step = next;
+      report(true);
+    },
     fileName: (url) => fileIn(indexURL, url),
   };
 }
@@ -123,7 +136,7 @@ function linkSpeed(indexURL) {
   return ms > 0 ? size / ms : null;
 }
 
-function snapshotDownload(url, indexURL, meter) {
+function snapshotDownload(url, indexURL, meter, knownSpeed) {
   let fromCache = null;
   let decide;
   const decided = new Promise((resolve) => (decide = resolve)); // the response, or null: skipped
@@ -146,7 +159,7 @@ function snapshotDownload(url, indexURL, meter) {
     /** Whether to use the snapshot (asked when Pyodide wants it, synchronously; decided once). */
     worthIt() {
       if (use !== null) return use;
-      const speed = fromCache ? null : linkSpeed(indexURL);
+      const speed = fromCache ? null : knownSpeed > 0 ? knownSpeed : linkSpeed(indexURL);
       use = speed === null || SNAPSHOT_BYTES / speed < BOOT_COST_MS;
       if (!use) meter.drop(meter.fileName(url));
       else if (!fromCache) decide(networkFetch(url).then((r) => meter.watch(meter.fileName(url), r)));
@@ -208,7 +221,7 @@ function checkSnapshot(bytes) {
 // (compiling early then competed with the downloads and was slower), and its
 // bytes are counted for the progress bar. If the compile here fails, Pyodide
 // compiles after all.
-function patchWasm(url, meter) {
+function patchWasm(url, meter, compiledStep) {
   const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
   const stored = isStored(url);
@@ -228,36 +241,42 @@ function patchWasm(url, meter) {
   WebAssembly.instantiateStreaming = async (source, imports) => {
     const response = await source;
     restore();
+    const instantiated = (result) => {
+      meter.step(compiledStep()); // compiled: Python starts now
+      return result;
+    };
     if (response !== standIn) {
       stages.wasm = "compiled by Pyodide";
-      return realInstantiate(response, imports);
+      return realInstantiate(response, imports).then(instantiated);
     }
     let module;
     try {
       module = await compiled;
     } catch {
       stages.wasm = "compiled by Pyodide";
-      return realInstantiate(realFetch(url), imports);
+      return realInstantiate(realFetch(url), imports).then(instantiated);
     }
     stages.wasm = "precompiled";
     meter.done(meter.fileName(url));
-    return { module, instance: await WebAssembly.instantiate(module, imports) };
+    return instantiated({ module, instance: await WebAssembly.instantiate(module, imports) });
   };
   return restore; // undo, for a start without Pyodide's usual calls (the fallback boot)
 }
 
 // ---- The start ----------------------------------------------------------------------------
 export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null, lockFileURL = null,
-  quiet = false }) {
+  quiet = false, linkSpeed: knownSpeed = null }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
-  const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", "pyodide-lock.json", fileIn(indexURL, stdLibURL)];
+  const lock = lockFileURL ? fileIn(indexURL, lockFileURL) : "pyodide-lock.json"; // the lock this start reads
+  const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", lock, fileIn(indexURL, stdLibURL)];
   if (snapshotURL) files.push(fileIn(indexURL, snapshotURL));
   const meter = progressMeter(indexURL, files, onProgress);
   meter.phase("download");
-  const download = snapshotURL ? snapshotDownload(snapshotURL, indexURL, meter) : null;
+  const download = snapshotURL ? snapshotDownload(snapshotURL, indexURL, meter, knownSpeed) : null;
   const snapshot = download ? readSnapshot(download) : null; // rejects without DecompressionStream where the file is still gzipped
   snapshot?.then(() => mark("snapshot"), () => {}); // handled below
-  const unpatch = patchWasm(wasmURL, meter);
+  let skipped = !download;
+  const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore));
   importScripts(indexURL + "pyodide.js");
   meter.done("pyodide.js");
   mark("pyodide.js");
@@ -265,7 +284,6 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
   // (not enumerable, so that loadPyodide's copy of its options does not read it earlier).
   const plain = { indexURL, stdLibURL, ...(lockFileURL && { lockFileURL }), ...(quiet && { stdout: () => {}, stderr: () => {} }) };
   const options = { ...plain };
-  let skipped = !download;
   Object.defineProperty(options, "_loadSnapshot", {
     enumerable: false,
     get() {
@@ -276,19 +294,22 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
       return undefined;
     },
   });
+  const step = (name) => meter.step(name);
   try {
     const py = await loadPyodide(options);
     if (skipped) {
       mark("booted");
-      return { py, from: "boot", stages };
+      return { py, from: "boot", stages, step };
     }
     mark("restored");
     py.runPython("import random; random.seed()"); // the snapshot's generator state is everyone's
-    return { py, from: "snapshot", stages };
+    return { py, from: "snapshot", stages, step };
   } catch (err) {
     if (skipped) throw err;
     unpatch();
+    skipped = true;
+    meter.step(BOOT_STEP.boot);
     const py = await loadPyodide(plain);
-    return { py, from: "boot", why: String((err && err.message) || err), stages };
+    return { py, from: "boot", why: String((err && err.message) || err), stages, step };
   }
 }

@@ -38,10 +38,10 @@ function recordAttempt(ctx, reply, extra = {}) {
  * screen. An exercise's graded attempt is recorded. A step's reply that comes back after new numbers
  * were drawn is stale: it is dropped (null), and steps.js records the step's own verdicts.
  */
-async function submit(ctx, op, payload, { limitMs, onProgress, saved = {}, on = ctx.el } = {}) {
+async function submit(ctx, op, payload, { limitMs, onProgress, onWait, saved = {}, on = ctx.el } = {}) {
   const { variant } = ctx;
   setPending(on);
-  const reply = await ctx.runtime.request({ op, exercise: ctx.id, ...payload, variant }, { limitMs, onProgress });
+  const reply = await ctx.runtime.request({ op, exercise: ctx.id, ...payload, variant }, { limitMs, onProgress, onWait });
   const step = on !== ctx.el;
   if (step && variant !== ctx.variant) return null;
   showReply(on, reply);

@@ -68,6 +68,7 @@ export class Runtime {
     const worker = early ? early.worker : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL);
     this.worker = worker;
     this.spawns = (this.spawns || 0) + 1; // workers started, the first included
+    this.reportBoot({ phase: BOOT_PHASE.download, loaded: 0, total: 0, step: null }); // a new start: nothing yet
     // A worker that was replaced is not heard any more: a late message or error of a
     // terminated one (its Python stopped mid-run) must not fail or answer for its successor.
     worker.onmessage = (event) => {
@@ -98,16 +99,17 @@ export class Runtime {
     this.worker.postMessage({ type: "page", ids });
   }
 
-  /** The worker's start, as it goes: {phase, loaded, total} (boot.js); a "workbook:boot" event each time. */
+  /** The worker's start, as it goes: {phase, loaded, total, step} (boot.js, boot-steps.js); an event each
+   *  time: "workbook:boot" for the grader's, "workbook:sandbox-boot" for the sandbox's (loading.js shows both). */
   reportBoot(boot) {
     this.boot = boot;
-    if (this.role !== "grader") return; // the page's loading message is the grader's start
-    document.dispatchEvent(new CustomEvent("workbook:boot", { detail: boot }));
+    const name = this.role === "grader" ? "workbook:boot" : `workbook:${this.role}-boot`;
+    document.dispatchEvent(new CustomEvent(name, { detail: boot }));
   }
 
   receive(data) {
     if (data.type === "boot") {
-      this.reportBoot({ phase: data.phase, loaded: data.loaded, total: data.total });
+      this.reportBoot({ phase: data.phase, loaded: data.loaded, total: data.total, step: data.step });
       return;
     }
     if (data.type === "ready") {
@@ -116,7 +118,7 @@ export class Runtime {
       this.startedFrom = data.from; // "snapshot", or "boot" when the snapshot could not be used
       this.startStages = data.stages;
       if (data.why) console.warn("Python runtime: booted without the snapshot:", data.why);
-      this.reportBoot({ phase: BOOT_PHASE.ready, loaded: this.boot?.total || 0, total: this.boot?.total || 0 });
+      this.reportBoot({ phase: BOOT_PHASE.ready, loaded: this.boot?.total || 0, total: this.boot?.total || 0, step: null });
       this.setState(RUNTIME.ready);
       for (const entry of this.pending.values()) this.send(entry);
       return;

@@ -5,9 +5,13 @@
 //   sandbox {op: "run", job, code}           -> the report (JSON text), as data
 //   grader  {op: "judge", exercise, outputs} -> the verdict
 //
-// The sandbox (sandbox.js) is one worker per tab, started lazily (when a Build
-// exercise comes near the viewport and the page is idle after the grader is
-// ready, when the learner moves into one, or at the first Run) from a blob: URL, so that it inherits the page's Content-Security-Policy.
+// The sandbox (sandbox.js) is one worker per tab, started on a page with a Build
+// exercise once the grader is ready and the page is idle (or when the learner
+// moves into one, or at the first Run, if that comes first), from a blob: URL, so
+// that it inherits the page's Content-Security-Policy. It starts from a memory
+// snapshot of its own when that is stored or the link is fast (the grader's
+// measure of the link is passed on). A Run that has to wait for its start says so
+// (`onWait`: the exercise shows the start's progress, loading.js).
 // It is driven by the same Runtime class as the grader, so time limits work
 // the same way (interrupt when cross-origin isolated, else terminate and start
 // afresh), the limit starting when the code starts. It is replaced after every
@@ -19,12 +23,15 @@ import { Runtime } from "./runtime.js";
 const ACK_MS = 5_000; // a sandbox that has not acknowledged a request by then is gone
 let sandbox = null;
 
+/** The link's speed the grader measured as it started (bytes per ms), if it did (boot.js). */
+const linkSpeedOf = (grader) => (typeof grader?.startStages?.link === "number" ? grader.startStages.link : null);
+
 /** The tab's sandbox, started now if it is not running yet (or again, if it could not start). */
-export function startSandbox(graderURL) {
+export function startSandbox(graderURL, linkSpeed = null) {
   if (sandbox?.failure) sandbox.worker.terminate();
   if (!sandbox || sandbox.failure) {
     const script = new URL("sandbox.js", graderURL).href;
-    const settings = { indexURL: new URL("../vendor/pyodide/", script).href };
+    const settings = { indexURL: new URL("../vendor/pyodide/", script).href, linkSpeed };
     const source = `self.WB_SANDBOX = ${JSON.stringify(settings)};\nimportScripts(${JSON.stringify(script)});\n`;
     const url = URL.createObjectURL(new Blob([source], { type: "text/javascript" }));
     sandbox = new Runtime(() => new Worker(url, { name: "sandbox" }), null, { role: "sandbox", ackMs: ACK_MS });
@@ -37,7 +44,8 @@ async function runBuild(grader, { code, ...request }, options) {
   const cases = await grader.request({ ...request, op: "cases", code });
   if (!cases.ok) return cases;
   const { job, plain, limit } = cases.value;
-  const box = startSandbox(grader.workerURL);
+  const box = startSandbox(grader.workerURL, linkSpeedOf(grader));
+  if (!box.ready && !box.failure) options.onWait?.();
   const { interrupts, restarts } = box;
   const ran = await box.request({ op: "run", job, code }, { ...options, limitMs: limit * 1000 || options.limitMs });
   // Replace the sandbox after code that may have left a trace, and after a run it stopped
@@ -56,6 +64,6 @@ export function withSandbox(grader) {
   return {
     request: (request, options = {}) => (request.op === "run" ? runBuild(grader, request, options) : grader.request(request, options)),
     /** Start the sandbox ahead of the first run (a page without a grader has none). */
-    prepare: () => grader instanceof Runtime && startSandbox(grader.workerURL),
+    prepare: () => grader instanceof Runtime && startSandbox(grader.workerURL, linkSpeedOf(grader)),
   };
 }

@@ -5,7 +5,11 @@
 // strings, and nothing fetched, imported or connected outside the site's origin.
 // Its Python holds no grading package: the whole standard library and
 // workbook_sandbox only (python_stdlib.sandbox.zip, scripts/sandbox_files.py);
-// its lock file names NumPy and nothing else. Once Pyodide has started, and
+// its lock file names NumPy and nothing else. It starts from a memory snapshot
+// of its own (sandbox.snapshot.gz, scripts/build_snapshot.mjs --sandbox: that
+// Python with workbook_sandbox imported and one run made) when it is stored or
+// the link is fast enough (boot.js decides, with the link speed the grader
+// measured), and reports its start as the grader does. Once Pyodide has started, and
 // before any learner code runs, tame() strips the worker's global scope down to
 // what computing needs (ALLOWED): no network, storage, workers, channels,
 // postMessage or close, no code from strings. Two capabilities stay, held in
@@ -15,12 +19,13 @@
 // ever this file's: the report of a run, which the grader reads as data.
 //
 // Messages in: {type: "interrupt-buffer", buffer}; {id, op: "run", job, code}.
-// Out: {type: "ready"|"failed"}; per request {id, type: "received"} at once,
+// Out: {type: "boot", phase, loaded, total, step} as it starts (boot.js), {type: "ready"|"failed"}; per request {id, type: "received"} at once,
 // {type: "progress"}, {type: "started"} when the code starts (the page's time
 // limit starts then) and {type: "reply", reply}: {ok: true, value: REPORT,
 // recycle} or {ok: false, error}.
 import { startPyodide } from "./boot.js";
 import { ERROR } from "./contract.js";
+import { BOOT_STEP } from "./boot-steps.js";
 
 const post = self.postMessage.bind(self);
 const networkFetch = self.fetch.bind(self);
@@ -29,6 +34,7 @@ delete self.WB_SANDBOX;
 const { indexURL } = settings;
 const STDLIB = indexURL + "python_stdlib.sandbox.zip";
 const LOCK = indexURL + "pyodide-lock.sandbox.json";
+const SNAPSHOT = indexURL + "sandbox.snapshot.gz";
 
 // Failures are told by this file's own messages ("failed", or a reply): the browser's
 // report of an uncaught error here (Pyodide's, when a download fails) would reach the
@@ -80,8 +86,12 @@ const mark = (name) => (stages[name] = Math.round(performance.now() - started));
 
 const ready = (async () => {
   const lock = networkFetch(LOCK).then((r) => r.json());
-  const { py } = await startPyodide({ indexURL, stdLibURL: STDLIB, lockFileURL: LOCK, quiet: true });
+  const reportBoot = (progress) => post({ type: "boot", ...progress });
+  const { py, from, step } = await startPyodide({ indexURL, stdLibURL: STDLIB, lockFileURL: LOCK, snapshotURL: SNAPSHOT,
+    quiet: true, onProgress: reportBoot, linkSpeed: settings.linkSpeed });
   mark("booted");
+  stages.from = from;
+  step(BOOT_STEP.import);
   const runner = py.pyimport("workbook_sandbox.runner");
   const allowed = new Set(Object.values((await lock).packages).map((p) => new URL(p.file_name, indexURL).href));
   tame(self, guardedFetch(allowed));

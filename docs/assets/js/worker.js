@@ -6,6 +6,7 @@
 // when the runtime itself fails.
 import { ERROR } from "./contract.js";
 import { mark, stages, startPyodide } from "./boot.js";
+import { BOOT_STEP } from "./boot-steps.js";
 
 const indexURL = new URL("../vendor/pyodide/", self.location.href).href;
 let handle = null;
@@ -45,6 +46,7 @@ const ready = (async () => {
   const t0 = performance.now();
   const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE, snapshotURL: SNAPSHOT, onProgress: reportBoot });
   pyodide = started.py;
+  started.step(BOOT_STEP.import); // the grading package and this page's exercises
   lazyStdlib = pyodide.pyimport("workbook.lazy_stdlib");
   lazyStdlib.install(STDLIB_REST).destroy();
   handle = pyodide.pyimport("workbook.api").handle;

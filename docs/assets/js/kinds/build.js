@@ -10,6 +10,7 @@ import { ATTR, ROLE, RUNTIME, ownRole } from "../contract.js";
 import { renderTests, setPending, showMessage } from "../feedback.js";
 import { runFigure } from "../run-figure.js";
 import { withSandbox } from "../sandbox-client.js";
+import { showSandboxStart } from "../loading.js";
 
 const runtimeSettled = new Promise((resolve) => {
   const done = () => document.documentElement.getAttribute(ATTR.runtime) !== RUNTIME.loading;
@@ -17,6 +18,13 @@ const runtimeSettled = new Promise((resolve) => {
   const onChange = () => done() && (document.removeEventListener("workbook:runtime", onChange), resolve());
   document.addEventListener("workbook:runtime", onChange);
   setTimeout(resolve, 8000); // a slow start should not keep the editor away for long
+});
+// The grader ready (not merely given up on): the sandbox's start must not compete with the grader's.
+const graderReady = new Promise((resolve) => {
+  const ready = () => document.documentElement.getAttribute(ATTR.runtime) === RUNTIME.ready;
+  if (ready()) return resolve();
+  const onChange = () => ready() && (document.removeEventListener("workbook:runtime", onChange), resolve());
+  document.addEventListener("workbook:runtime", onChange);
 });
 const whenIdle = () => new Promise((resolve) => (self.requestIdleCallback ? requestIdleCallback(resolve, { timeout: 1500 }) : setTimeout(resolve, 50)));
 
@@ -87,15 +95,18 @@ function lazyEditor(ctx, host, onRun) {
 
 export function init(ctx) {
   ctx.runtime = withSandbox(ctx.runtime); // ctx.submit("run", ...) goes through the sandbox
-  // The sandbox is a second Python: started when a Build exercise comes near the
-  // viewport (then when the browser is idle), when the learner moves into it, or at
-  // the first Run. A chapter read from the top never pays for it up front.
+  // The sandbox is a second Python (about 21 MB): it starts once a Build exercise is within a
+  // screen and a half of the viewport, the grader is ready and the browser idle, so that it
+  // is ready by the time the learner reaches the code (from its snapshot it takes about a
+  // second; sandbox-client.js); at once if the learner moves into a Build exercise or runs
+  // one. A page read elsewhere never pays for it. A Run that still has to wait for it shows
+  // its start, as a Check shows the grader's.
   const prepare = () => ctx.runtime.prepare();
   const nearSandbox = new IntersectionObserver((entries) => {
     if (!entries.some((entry) => entry.isIntersecting)) return;
     nearSandbox.disconnect();
-    runtimeSettled.then(whenIdle).then(prepare);
-  }, { rootMargin: "400px 0px" });
+    graderReady.then(whenIdle).then(prepare);
+  }, { rootMargin: "150% 0px" });
   nearSandbox.observe(ctx.el);
   ctx.el.addEventListener("focusin", prepare, { once: true });
   const host = ownRole(ctx.el, ROLE.editor);
@@ -109,7 +120,8 @@ export function init(ctx) {
     runButton.disabled = true;
     const ed = await editor.latest();
     ed.markLine(null);
-    const reply = await ctx.submit("run", { code: ed.getCode() }, { limitMs, onProgress: (text) => showMessage(ctx.el, text) });
+    const reply = await ctx.submit("run", { code: ed.getCode() }, {
+      limitMs, onProgress: (text) => showMessage(ctx.el, text), onWait: () => showSandboxStart(ctx.el) });
     runButton.disabled = false;
     renderTests(ctx.el, reply);
     figure.show(reply);
