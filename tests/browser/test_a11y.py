@@ -103,8 +103,11 @@ def test_axe_finds_no_violation_on_any_page(page, site_url, scheme):
     assert found == {}, "\n".join(f"{p}:\n  " + "\n  ".join(v) for p, v in found.items())
 
 
-def test_exercise_feedback_states_pass_the_audit(page, site_url):
-    """Right, wrong and invalid feedback and a Build test table, in both palettes."""
+@pytest.mark.parametrize("width", [1280, 360])
+def test_exercise_feedback_states_pass_the_audit(page, site_url, width):
+    """After interaction: right, wrong and invalid feedback, a Build test table, a wrongly chosen
+    Debug line, hints, derivations and steps open, in both palettes, at 1280 and 360 px."""
+    page.set_viewport_size({"width": width, "height": 800})
     open_ready(page, site_url, 0)
     ex = exercise(page, "0.1")
     ex.locator(role("answer")).fill("2")
@@ -116,6 +119,14 @@ def test_exercise_feedback_states_pass_the_audit(page, site_url):
     build.locator(role("run")).click()
     settle(build, timeout=120_000)
     assert build.locator(role("test-result")).count() > 0
+    debug = exercise(page, "0.8")
+    wrong = next(n for n in range(1, 50) if n != bank.get("0.8").bug_line)
+    debug.locator("form[data-wb-ready]").wait_for(state="attached")
+    debug.locator(role("line", f'[data-line="{wrong}"]')).click()
+    debug.locator(role("check")).click()
+    assert settle(debug) == "incorrect"
+    settle_page(page)
+    open_all_help(page)
     audit(page)  # loads axe and stops colour transitions before the palette changes
     for scheme in ("light", "dark"):
         page.emulate_media(color_scheme=scheme)
