@@ -6,7 +6,8 @@
   theme's instant navigation), and "Back to exercise N" focuses that exercise's answer
   with its heading below the sticky header.
 - Tabbing through the code editor leaves the code as it was; Tab indents once the
-  learner types; Esc then Tab leaves. Long lines wrap (a phone shows them whole).
+  learner types; Esc then Tab leaves. On a phone the editor takes the whole width
+  (a longer line scrolls: listings never wrap).
 - A ?variant= link for an exercise of another chapter links to it there.
 """
 
@@ -115,17 +116,36 @@ def test_tabbing_through_the_editor_leaves_the_code_and_tab_indents_once_typing(
     assert editor_code(ex) == indented
 
 
-def test_the_editor_wraps_long_lines_on_a_phone(page, site_url):
+COLUMNS = """el => {
+  const line = [...el.querySelectorAll('.cm-line')].find((l) => l.textContent.trim()), pad = getComputedStyle(line);
+  const text = document.createRange();
+  text.selectNodeContents(line);
+  const char = text.getBoundingClientRect().width / line.textContent.length;
+  const room = el.closest('.cm-scroller').getBoundingClientRect().right - line.getBoundingClientRect().left
+    - parseFloat(pad.paddingLeft) - parseFloat(pad.paddingRight);
+  return Math.floor(room / char);
+}"""
+
+
+def test_the_editor_takes_a_phone_s_whole_width_and_never_wraps(page, site_url):
     page.set_viewport_size({"width": 360, "height": 740})
     open_chapter(page, site_url, int(BUILD.split(".")[0]))
     ex = exercise(page, BUILD)
     open_editor(ex)
+    host = ex.locator(role("editor"))
+    host.scroll_into_view_if_needed()
+    box = host.evaluate("el => { const r = el.getBoundingClientRect(); return [r.left, r.right]; }")
+    assert box == [0, 360], f"the editor spans {box}, not the screen's 0 to 360 px"
+    # as many columns of code beside the line numbers as the screen holds (the page's margins left 27)
+    columns = ex.locator(".cm-content").evaluate(COLUMNS)
+    assert columns >= 32, columns
+    # A longer line scrolls sideways, on one line: the code's columns stay as they are
     ex.evaluate("el => el.querySelector('[data-role=editor]').wbEditor.setCode('x = ' + '1 + '.repeat(40) + '1\\n')")
     scroller = ex.locator(".cm-scroller")
-    scroller.scroll_into_view_if_needed()
     sizes = scroller.evaluate("el => [el.scrollWidth, el.clientWidth]")
-    assert sizes[0] <= sizes[1], f"the editor scrolls sideways: {sizes}"
-    assert ex.locator(".cm-lineWrapping").count() == 1
+    assert sizes[0] > sizes[1], f"a 165-character line does not scroll: {sizes}"
+    assert ex.locator(".cm-lineWrapping").count() == 0
+    assert page.evaluate("() => document.documentElement.scrollWidth") == 360
 
 
 def test_a_variant_link_for_another_chapter_links_to_it_there(page, site_url):

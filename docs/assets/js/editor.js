@@ -4,7 +4,8 @@
 // clicked in it since the focus came in): a keyboard user passing through moves on
 // and the code stays as it was. The way out (Escape, then Tab) is written under the
 // editor, for everyone to see, and the editor draws a focus ring (workbook.css).
-// Long lines wrap, so a phone shows the whole line.
+// Lines never wrap (Python's columns matter): on a phone the editor takes the
+// screen's whole width (workbook.css) and a longer line scrolls.
 
 import { indentLess, indentMore } from "@codemirror/commands";
 import { python } from "@codemirror/lang-python";
@@ -79,7 +80,6 @@ export function createEditor(host, doc, { onChange, onRun }) {
             if (event.key === "Enter" || (event.key.length === 1 && !event.ctrlKey && !event.metaKey && !event.altKey)) working = true;
           },
         }),
-        EditorView.lineWrapping,
         syntaxHighlighting(paletteHighlight),
         basicSetup,
         python(),
