@@ -23,6 +23,13 @@ MARK = "() => { for (const el of document.querySelectorAll('[data-exercise-id]')
 KEPT = "() => [...document.querySelectorAll('[data-exercise-id]')].every((el) => el.wbKept === true)"
 
 
+# The theme's table of contents marks the section the page is at (and, with navigation.tracking,
+# writes it in the address): true once that is `t` in both. It marks the section before a
+# heading that stops too low under the header, and the address follows it.
+TOC_AT = """t => location.hash === '#' + t && [...document.querySelectorAll('.md-sidebar--secondary .md-nav__link--active')]
+  .map((a) => a.hash).join() === '#' + t"""
+
+
 def fill(ex, rows):
     for i, row in enumerate(rows, 1):
         for j, v in enumerate(row, 1):
@@ -60,11 +67,15 @@ def test_in_page_links_keep_every_verdict_and_back_to_exercise_focuses_its_answe
     heading_top = page.evaluate("() => document.getElementById('ex-3-7-title').getBoundingClientRect().top")
     assert header_bottom <= heading_top < 800, (header_bottom, heading_top)
 
-    # The table of contents, twice: still the same exercises, the same verdicts
+    # The theme's table of contents agrees: 3.7's section is the one reached (and named in the address)
+    page.wait_for_function(TOC_AT, arg="ex-3-7-title")
+
+    # The table of contents, twice: still the same exercises, the same verdicts, and the section
+    # reached is the one clicked (the theme marks it and puts it in the address once the page stops)
     for target in ("ex-3-8-title", "ex-3-7-title"):
         link = page.locator(f'.md-sidebar--secondary a[href$="#{target}"]').first
         link.click()
-        page.wait_for_function("t => location.hash === '#' + t", arg=target)
+        page.wait_for_function(TOC_AT, arg=target)
         assert page.evaluate(KEPT), f"the exercises were rebuilt after the link to {target}"
         assert first.locator(role("feedback")).inner_text() == first_says
         assert later.locator(role("feedback")).inner_text() == later_says
