@@ -123,9 +123,10 @@ site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TE
 
 site: site/.stamp
 
+# scripts/serve.py ends cleanly on Ctrl-C or SIGTERM (no "make: *** ... Terminated").
 serve: site
 	@echo "Serving the workbook at http://$(HOST):$(PORT)/  (Ctrl-C stops)"
-	$(BIN)/python -m http.server --bind $(HOST) --directory site $(PORT)
+	$(BIN)/python scripts/serve.py $(HOST) $(PORT) site
 
 # Live-reloading server for authors (rebuilds pages on save).
 dev: $(RUNTIME_STAMPS)

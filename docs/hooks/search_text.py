@@ -19,7 +19,9 @@ from pylatexenc.latex2text import LatexNodes2Text, MacroTextSpec, get_default_la
 
 INDEX = "search/search_index.json"
 MATH = re.compile(r"\\\((.+?)\\\)|\\\[(.+?)\\\]", re.S)
-# Operator names, read with a space after them ("cos θ", not "cosθ"); pylatexenc's defaults
+# Relations and binary operators stand between spaces ("θ = π/6", "3 × 3"), however the TeX spaced them.
+SPACED = "=≠≈≤≥<>→×·"
+# Operator names, read with a space either side ("v cos θ", not "vcos θ"); pylatexenc's defaults
 # lack some of them (it would drop "det" from "\det R").
 OPERATORS = ("det", "tr", "rank", "diag", "arg", "sgn", "sin", "cos", "tan", "exp", "log", "ln", "min", "max")
 
@@ -28,8 +30,18 @@ def _converter() -> LatexNodes2Text:
     context = get_default_latex_context_db().filter_context()
     context.add_context_category(
         "workbook-operators", prepend=True,
-        macros=[MacroTextSpec(name, simplify_repl=name + " ") for name in OPERATORS])
+        macros=[MacroTextSpec(name, simplify_repl=f" {name} ") for name in OPERATORS])
     return LatexNodes2Text(latex_context=context, math_mode="text", strict_latex_spaces=False)
+
+
+def spaced(plain: str) -> str:
+    """A formula's Unicode reading with one space around each relation and operator name, none inside brackets."""
+    plain = re.sub(f"\\s*([{SPACED}])\\s*", r" \1 ", plain)
+    plain = " ".join(plain.split())
+    plain = re.sub(r"([(\[{]) ", r"\1", plain)  # "(cos x)", not "( cos x)"
+    plain = re.sub(r" ([,;)\]}])", r"\1", plain)
+    plain = re.sub(rf"\b({'|'.join(OPERATORS)}) \(", r"\1(", plain)  # "sin(θ)" as written
+    return re.sub(r"(^|[(\[{]|[=<>≤≥≠≈→] )- (?=\S)", r"\1-", plain)  # a leading minus: "-sin θ", "= -1"
 
 
 def math_as_text(text: str, convert=None) -> str:
@@ -42,7 +54,7 @@ def math_as_text(text: str, convert=None) -> str:
             plain = convert(tex)
         except Exception:  # a formula pylatexenc cannot read: keep its source rather than fail the build
             return match.group(0)
-        return html.escape(re.sub(r" ([,;)])", r"\1", " ".join(plain.split())), quote=False)
+        return html.escape(spaced(plain), quote=False)
 
     return MATH.sub(one, text)
 

@@ -10,11 +10,12 @@ never ships it."""
 from __future__ import annotations
 
 import pytest
-from playwright.sync_api import Page, expect
+from playwright.sync_api import Locator, Page, expect
 
 from conftest import ROOT
-from helpers import CHAPTERS, exercise, open_chapter, role, settle, wait_runtime
+from helpers import CHAPTERS, exercise, fill_matrix, open_chapter, role, settle, wait_runtime
 from workbook import bank
+from workbook.number_format import fmt
 
 SPREAD = True  # its tests share nothing: the two test processes share them out (conftest.py)
 AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
@@ -59,7 +60,8 @@ def wait_practise_card(page: Page) -> None:
 def open_all_help(page: Page) -> None:
     """Open every hint, derivation and "Work it in steps" panel."""
     for button in page.locator(role("hint") + ', ' + role("reveal") + ', ' + role("work-steps-open")).all():
-        button.click()
+        if button.get_attribute("aria-expanded") != "true":  # a panel opened already stays open
+            button.click()
     for panel in ("solution-panel", "work-steps"):
         page.wait_for_function("sel => [...document.querySelectorAll(sel)].every(s => !s.hidden)", arg=role(panel))
 
@@ -117,19 +119,58 @@ def test_axe_finds_no_violation_on_any_page(page, site_url, path):
     assert found == {}, "\n".join(f"{s}:\n  " + "\n  ".join(v) for s, v in found.items())
 
 
-def test_exercise_feedback_states_pass_the_audit(page, site_url):
-    """Right, wrong and invalid feedback and a Build test table, in both palettes."""
-    open_ready(page, site_url, 0)
-    ex = exercise(page, "0.1")
-    ex.locator(role("answer")).fill("2")
-    ex.locator(role("check")).click()
-    settle(ex)
-    trace = exercise(page, "0.3")
-    trace.locator(role("check")).click()  # nothing chosen: invalid
-    build = exercise(page, "0.5")
+def grid(rows) -> list[list[str]]:
+    return [[fmt(v) for v in row] for row in rows]
+
+
+def check_and_settle(page: Page, target: Locator, check_role: str) -> str:
+    """Press `target`'s own Check (an exercise's or a step's) and return its state after the reply."""
+    target.locator(role(check_role)).first.click()
+    page.wait_for_function("el => el.dataset.state !== 'pending'", arg=target.element_handle(), timeout=SLOW)
+    return target.get_attribute("data-state")
+
+
+@pytest.mark.parametrize("width", [1280, 360])
+def test_exercise_feedback_states_pass_the_audit(page, site_url, width):
+    """After interaction, in both palettes, at 1280 and 360 px, on chapter 3 (it has every kind
+    of exercise and checked steps): a wrong answer; a wrong matrix and an answer carried from it
+    (with its "Back to exercise" link); an invalid Trace; a wrong step and a step carried from it;
+    a Build run's test table; a wrongly chosen Debug line; every hint, derivation and steps panel open."""
+    page.set_viewport_size({"width": width, "height": 800})
+    open_ready(page, site_url, 3)
+    wrong = exercise(page, "3.1")
+    wrong.locator(role("answer")).fill(fmt(bank.get("3.1").answer.key + 7))
+    assert check_and_settle(page, wrong, "check") == "incorrect"
+    F = [list(row) for row in bank.get("3.7").answer.cleaned]
+    F[0][2] = -2.0  # a wrong F(1,3), carried into 3.8
+    first, later = exercise(page, "3.7"), exercise(page, "3.8")
+    fill_matrix(first, grid(F))
+    assert check_and_settle(page, first, "check") == "incorrect"
+    fill_matrix(later, grid(bank.get("3.8").carried_answer({"F": tuple(map(tuple, F))}).cleaned))
+    assert check_and_settle(page, later, "check") == "incorrect"
+    expect(later.locator(role("carried-from"))).to_have_count(1)
+    trace = exercise(page, "3.6")
+    assert check_and_settle(page, trace, "check") == "invalid"  # nothing chosen
+    # 3.8 in steps: a wrong step 1 (a named slip) and a step 2 that follows from it
+    later.locator(role("work-steps-open")).click()
+    steps = bank.get("3.8")
+    slip = steps.step_answers["FP"].slips[0].value
+    for name, rows in (("FP", slip), ("FPF", steps.carried_steps({"FP": slip})["FPF"].key)):
+        li = later.locator(role("work-step", f'[data-step-name="{name}"]'))
+        fill_matrix(li, grid(rows))
+        assert check_and_settle(page, li, "work-step-check") == "incorrect", name
+    build = exercise(page, "3.10")
     build.locator(role("run")).click()
-    settle(build, timeout=120_000)
+    settle(build, timeout=SLOW)
     assert build.locator(role("test-result")).count() > 0
+    debug = exercise(page, "3.5")
+    line = next(n for n in range(1, 50) if n != bank.get("3.5").bug_line)
+    debug.locator("form[data-wb-ready]").wait_for(state="attached")
+    debug.locator(role("line", f'[data-line="{line}"]')).click()
+    assert check_and_settle(page, debug, "check") == "incorrect"
+    assert debug.locator(role("line", f'[data-line="{line}"]')).get_attribute("aria-selected") == "true"
+    settle_page(page)
+    open_all_help(page)
     audit(page)  # loads axe and stops colour transitions before the palette changes
     for scheme in ("light", "dark"):
         set_scheme(page, scheme)

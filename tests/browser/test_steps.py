@@ -127,6 +127,13 @@ def test_work_3_8_in_steps_with_a_wrong_step_then_solve_it(page, site_url):
     expect(el.locator(role("work-steps"))).to_be_visible()
     page.wait_for_function("() => document.activeElement?.dataset.role === 'entry'")
     assert focused_step(page) == "FP"
+    # the offer is gone while the steps are open (never beside "Hide the steps"), and back once closed
+    expect(el.locator(role("work-steps-open"))).to_have_text("Hide the steps")
+    expect(offer).to_be_hidden()
+    el.locator(role("work-steps-open")).click()
+    expect(offer).to_be_visible()
+    el.locator(role("work-steps-open")).click()
+    expect(offer).to_be_hidden()
 
     # both palettes pass the audit with the steps open, a carried step and the offer shown
     for scheme, palette in (("light", "default"), ("dark", "slate")):

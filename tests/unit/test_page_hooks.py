@@ -104,3 +104,27 @@ def test_search_text_reads_formulas_as_unicode_and_keeps_the_rest():
     assert out.startswith("Turn ") and out.endswith("&amp; done")
     # Text that comes out with markup characters is escaped again for the index's HTML.
     assert search_text.math_as_text(r"\(a < b\)") == "a &lt; b"
+
+
+@pytest.mark.parametrize("tex, text", [
+    (r"v\cos\theta\,dt", "v cos θ dt"),
+    (r"3\times3", "3 × 3"),
+    (r"3 \times 3", "3 × 3"),
+    (r"\theta = \pi/6", "θ = π/6"),
+    (r"\theta=\pi/6", "θ = π/6"),
+    (r"2\sin\theta\cos\theta", "2 sin θ cos θ"),
+    (r"-\sin\theta", "-sin θ"),
+    (r"y = -\cos x", "y = -cos x"),
+    (r"f(\cos x)", "f(cos x)"),
+    (r"\sin(\theta)", "sin(θ)"),
+    (r"x \le y", "x ≤ y"),
+    (r"a\cdot b", "a · b"),
+    (r"x \to 0", "x → 0"),
+    (r"(x, y)", "(x, y)"),
+    (r"a - b", "a - b"),
+])
+def test_search_text_spaces_formulas_as_they_are_read(tex, text):
+    import search_text  # docs/hooks/search_text.py
+
+    assert search_text.math_as_text(rf"\({tex}\)") == text
+    assert search_text.math_as_text(rf"see \[{tex}\] here") == f"see {text} here"

@@ -1,9 +1,13 @@
 // The Build exercises' code editor: CodeMirror 6 with Python, 4-space indents,
 // Ctrl/Cmd-Enter to run, colours taken from the Material palette (light/dark).
-// Tab indents, so the way out (Escape, then Tab) is written under the editor,
-// for everyone to see, and the editor draws a focus ring (workbook.css).
+// Tab indents once the learner works in the editor (has typed, pressed Enter or
+// clicked in it since the focus came in): a keyboard user passing through moves on
+// and the code stays as it was. The way out (Escape, then Tab) is written under the
+// editor, for everyone to see, and the editor draws a focus ring (workbook.css).
+// Lines never wrap (Python's columns matter): on a phone the editor takes the
+// screen's whole width (workbook.css) and a longer line scrolls.
 
-import { indentWithTab } from "@codemirror/commands";
+import { indentLess, indentMore } from "@codemirror/commands";
 import { python } from "@codemirror/lang-python";
 import { HighlightStyle, indentUnit, syntaxHighlighting } from "@codemirror/language";
 import { EditorState, StateEffect, StateField } from "@codemirror/state";
@@ -52,16 +56,30 @@ const paletteHighlight = HighlightStyle.define([
 ]);
 
 let hints = 0;
-const HINT = "Tab indents. To leave the editor, press Esc, then Tab. Ctrl+Enter (⌘+Enter on a Mac) runs the tests.";
+const HINT = "Tab indents once you type here. To leave the editor, press Esc, then Tab. Ctrl+Enter (⌘+Enter on a Mac) runs the tests.";
 
 export function createEditor(host, doc, { onChange, onRun }) {
+  // Whether this visit of the focus works in the editor: until then, Tab moves on.
+  let working = false;
+  const tab = (command) => (view) => (working ? command(view) : false);
   const hint = Object.assign(document.createElement("p"), { className: "wb-editor-hint", id: `wb-editor-hint-${++hints}`, textContent: HINT });
   const view = new EditorView({
     parent: host,
     state: EditorState.create({
       doc,
       extensions: [
-        keymap.of([{ key: "Mod-Enter", run: () => (onRun(), true) }, indentWithTab]),
+        keymap.of([
+          { key: "Mod-Enter", run: () => (onRun(), true) },
+          { key: "Tab", run: tab(indentMore), shift: tab(indentLess) },
+          { key: "Escape", run: () => ((working = false), false) },
+        ]),
+        EditorView.domEventHandlers({
+          blur: () => { working = false; },
+          mousedown: () => { working = true; },
+          keydown: (event) => {
+            if (event.key === "Enter" || (event.key.length === 1 && !event.ctrlKey && !event.metaKey && !event.altKey)) working = true;
+          },
+        }),
         syntaxHighlighting(paletteHighlight),
         basicSetup,
         python(),
@@ -71,6 +89,7 @@ export function createEditor(host, doc, { onChange, onRun }) {
         errorLine,
         EditorView.contentAttributes.of({ "aria-label": "Python code editor", "aria-describedby": hint.id, tabindex: "0" }),
         EditorView.updateListener.of((update) => {
+          if (update.transactions.some((tr) => tr.isUserEvent("input") || tr.isUserEvent("delete"))) working = true;
           if (update.docChanged) onChange(update.state.doc.toString());
         }),
       ],

@@ -6,6 +6,12 @@
 //
 // The same list and the page's table of contents name each exercise by its
 // title, which new numbers may change: retitle() keeps them all in step.
+//
+// Every link to a place on this same page (the table of contents, a heading's
+// permalink, a carried answer's "Back to exercise 3.7") is followed here, not by
+// the theme's instant navigation, which would fetch the page again and rebuild
+// it, losing every verdict, run and open hint on it: moving inside a page
+// changes nothing on it. A link to an exercise itself brings the focus to its answer.
 
 import { ATTR, ROLE, ownRole } from "./contract.js";
 
@@ -27,26 +33,57 @@ export function firstControl(exercise) {
   return [...exercise.querySelectorAll(FOCUSABLE)].find(visible) || null;
 }
 
-function jumpTo(id) {
+function jumpTo(id, url = null) {
   const exercise = document.querySelector(`[${ATTR.exercise}="${CSS.escape(id)}"]`);
   if (!exercise) return false;
   const name = document.getElementById(exercise.getAttribute("aria-labelledby"));
   const heading = name?.closest("h1, h2, h3, h4, h5, h6") || name || exercise;
   heading.scrollIntoView({ block: "start" });
   firstControl(exercise)?.focus({ preventScroll: true });
-  history.replaceState(history.state, "", `#${heading.id}`);
+  if (url) history.pushState(null, "", url.href);
+  else history.replaceState(history.state, "", `#${heading.id}`);
+  return true;
+}
+
+/** The address `link` leads to if it is a place on this page (same path, an anchor), else null. */
+function inPage(link) {
+  if (!link.href || link.target || link.hasAttribute("download")) return null;
+  const url = new URL(link.href, location.href);
+  if (url.origin !== location.origin || url.pathname !== location.pathname || url.hash.length < 2) return null;
+  return url;
+}
+
+/** Follow a link to `url`, a place on this page, without reloading or rebuilding anything. */
+function moveTo(url) {
+  let target;
+  try {
+    target = document.getElementById(decodeURIComponent(url.hash.slice(1)));
+  } catch {
+    return false;
+  }
+  if (!target) return false;
+  const drawer = document.querySelector('input[data-md-toggle="drawer"]');
+  if (drawer?.checked) drawer.click(); // a link in the phone's menu: close it, as a page change would
+  if (target.hasAttribute(ATTR.exercise)) return jumpTo(target.getAttribute(ATTR.exercise), url);
+  history.pushState(null, "", url.href);
+  target.scrollIntoView({ block: "start" });
   return true;
 }
 
 function onClick(event) {
   if (event.defaultPrevented || event.button !== 0 || event.metaKey || event.ctrlKey || event.shiftKey || event.altKey) return;
-  const link = event.target.closest?.("a[data-wb-jump], a[data-wb-skip]");
+  const link = event.target.closest?.("a[href]");
   if (!link) return;
   if (link.hasAttribute("data-wb-skip")) {
     const first = document.querySelector("#wb-exercises a");
     if (!first) return;
     first.focus();
-  } else if (!jumpTo(link.dataset.wbJump)) return;
+  } else if (link.hasAttribute("data-wb-jump")) {
+    if (!jumpTo(link.dataset.wbJump)) return;
+  } else {
+    const url = inPage(link);
+    if (!url || !moveTo(url)) return;
+  }
   // The theme's instant navigation would handle the link too: it is done.
   event.preventDefault();
   event.stopPropagation();

@@ -13,8 +13,10 @@ import { registerOffline } from "./offline.js";
 import { checkScrollRegionsNow, initScrollRegions } from "./a11y.js";
 import { initLoading } from "./loading.js";
 import { initJumps } from "./jump.js";
+import { initDrawer } from "./drawer.js";
 import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
-import { strayVariantLinks } from "./variants.js";
+import { strayVariantLinks, strayVariantTargets } from "./variants.js";
+import { loadManifest } from "./progress-view.js";
 import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
 import { findApi } from "./lms/api.js";
 import { renderMath } from "./math.js";
@@ -65,7 +67,22 @@ const shared = {
   renderMath,
 };
 
+// A ?variant= for an exercise of another chapter: the notice links to it there.
+async function linkStray(box) {
+  const ids = [...exercises()].map((el) => el.getAttribute(ATTR.exercise));
+  const targets = strayVariantTargets(ids, await loadManifest(siteRoot), siteRoot);
+  if (!box?.isConnected || !targets.length) return;
+  const list = document.createElement("ul");
+  for (const { href, text } of targets) {
+    const li = document.createElement("li");
+    li.append(Object.assign(document.createElement("a"), { href, textContent: text }));
+    list.append(li);
+  }
+  box.append(list);
+}
+
 function initPage() {
+  initDrawer(); // the page's menu is new after an instant navigation
   renderMath(document);
   for (const el of exercises()) {
     try {
@@ -81,7 +98,7 @@ function initPage() {
   else if (runtime.failure) showRuntimeProblem(runtime.failure);
   showProgressProblems(progress);
   const stray = strayVariantLinks([...exercises()].map((el) => el.getAttribute(ATTR.exercise)));
-  if (stray.length && exercises().length) showNotice("variant-link", "This link", stray.join(" "));
+  if (stray.length && exercises().length) linkStray(showNotice("variant-link", "This link", stray.join(" ")));
   initProgressPage(progress, siteRoot);
   initPractise(shared, siteRoot);
   initCourse(shared, siteRoot);

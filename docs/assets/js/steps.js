@@ -76,6 +76,7 @@ class Steps {
     this.panel.hidden = false;
     this.button.setAttribute("aria-expanded", "true");
     this.button.textContent = "Hide the steps";
+    this.showOffer();
     if (focus) this.focus(focus);
   }
 
@@ -83,6 +84,13 @@ class Steps {
     this.panel.hidden = true;
     this.button.setAttribute("aria-expanded", "false");
     this.button.textContent = "Work it in steps";
+    this.showOffer();
+  }
+
+  /** The offer to start the steps stands only while they are closed (never beside "Hide the steps"). */
+  showOffer() {
+    const offer = ownRole(this.ctx.el, ROLE.workStepsOffer);
+    if (offer) offer.parentElement.hidden = this.isOpen();
   }
 
   /** Open the steps and put the focus in step `name`'s input. */
@@ -184,6 +192,7 @@ class Steps {
     const p = document.createElement("p");
     p.append(button);
     ownRole(this.ctx.el, ROLE.feedback).append(p);
+    this.showOffer();
   }
 }
 

@@ -47,6 +47,26 @@ export function strayVariantLinks(ids, href = location.href) {
     : `The address's “variant=${quote(v).slice(1, -1)}” does not name an exercise: a link to new numbers reads like “variant=0.4-1234” (exercise 0.4, set 1234).`));
 }
 
+/**
+ * The ?variant= values that name an exercise of another page, each as a link to
+ * it on its chapter page with the same numbers (the chapters from `manifest`,
+ * assets/exercises.json; urls relative to `siteRoot`).
+ */
+export function strayVariantTargets(ids, manifest, siteRoot, href = location.href) {
+  const here = new Set(ids);
+  const out = [];
+  for (const value of new URL(href).searchParams.getAll(PARAM)) {
+    const id = idOf(value);
+    const chapter = id && !here.has(id) && numberIn(value) !== null && manifest?.chapters?.find((c) => c.ids.includes(id));
+    if (!chapter) continue;
+    const url = new URL(chapter.url, siteRoot);
+    url.searchParams.append(PARAM, value);
+    url.hash = `ex-${id.replaceAll(".", "-")}`;
+    out.push({ id, href: url.href, text: `Open exercise ${id} with these numbers (${chapter.title})` });
+  }
+  return out;
+}
+
 /** `href` with exercise `id` at variant `n` (0 drops it) and its anchor. */
 export function variantHref(id, n, anchor, href = location.href) {
   const url = new URL(href);
