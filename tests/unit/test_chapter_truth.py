@@ -32,10 +32,11 @@ CH5 = (CHAPTERS / "05-pose-graph-slam.md").read_text(encoding="utf-8")
 PROSE5 = CH5.split("## Exercises")[0]
 TEXTS = load_all(ROOT)
 
-# H Δx = ±b as TeX (page and templates): \Delta with or without \mathbf{x}, b bold or not
+# H Δx = ±b as TeX (page and templates): \Delta with or without \mathbf{x}, b bold or not;
+# b = Σ JᵀΩe may sit in an aligned block (&=)
 SYSTEM_TEX = re.compile(r"H\s*\\,\s*\\Delta(?:\\mathbf\{x\})?\s*=\s*(-?)\s*(?:\\mathbf\{b\}|b\b)")
 SYSTEM_TEXT = re.compile(r"H Δx? = ([−-]?)b\b")  # in the reference's docstrings
-B_DEFINED = re.compile(r"\\mathbf\{b\}\s*=\s*\\sum_\{\(i,j\)\}\s*J_\{ij\}\^\\top\s*(?:\\,)?\s*\\Omega_\{ij\}\s*(?:\\,)?\s*\\mathbf\{e\}_\{ij\}")
+B_DEFINED = re.compile(r"\\mathbf\{b\}\s*&?=\s*\\sum_\{\(i,j\)\}\s*J_\{ij\}\^\\top\s*(?:\\,)?\s*\\Omega_\{ij\}\s*(?:\\,)?\s*\\mathbf\{e\}_\{ij\}")
 
 
 def test_chapter_5_defines_b_and_writes_one_sign_everywhere():
