@@ -21,7 +21,7 @@ sys.path.insert(0, str(ROOT / "scripts"))
 
 from find_browser import find_browser  # noqa: E402  (from scripts/, on the path above)
 from helpers import go_instantly, keep_to_origin, open_chapter, record_leaving  # noqa: E402
-from site_server import SUBPATH, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
+from site_server import SUBPATH, Link, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 
 
 @pytest.fixture(scope="session")
@@ -30,6 +30,14 @@ def site_url():
         pytest.fail("site/ is not built: run `make site` (make test does)")
     with SiteServer(SITE) as server:
         yield server.url
+
+
+@pytest.fixture
+def slow_site():
+    """The site behind an emulated 8 Mbps link with a 40 ms round trip (gzip as GitHub Pages sends it)."""
+    with SiteServer(SITE, link=Link("test-8mbps", 8e6, 40)) as server:
+        server.precompress()
+        yield server
 
 
 @pytest.fixture(scope="session")

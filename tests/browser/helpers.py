@@ -48,6 +48,17 @@ def go_instantly(page: Page, site_url: str, n: int) -> None:
     wait_runtime(page)
 
 
+def check_while_loading(page: Page, site_url: str) -> Locator:
+    """Open chapter 0 and press Check on 0.1 (answered 3) while the grader is still loading;
+    returns the exercise."""
+    page.goto(site_url + CHAPTERS[0], wait_until="commit")
+    ex = exercise(page, "0.1")
+    ex.locator(role("answer")).fill("3", timeout=180_000)  # a slow link: the page takes a while
+    assert page.evaluate("a => document.documentElement.getAttribute(a)", ATTR.runtime) == "loading"
+    ex.locator(role("check")).click()
+    return ex
+
+
 def wait_runtime(page: Page, state: str = "ready", timeout: float = 120_000) -> None:
     # Generous: on a 2-core machine busy with other work, booting Python can take over a minute.
     page.wait_for_function(

@@ -14,12 +14,10 @@ from __future__ import annotations
 import json
 import re
 
-import pytest
 from playwright.sync_api import expect
 
 from conftest import SITE
-from helpers import exercise, role, wait_runtime
-from site_server import Link, SiteServer
+from helpers import check_while_loading, role, wait_runtime
 from workbook.contract import ATTR, DATA
 
 LONG = 180_000
@@ -57,24 +55,12 @@ def version_cache_entries(page) -> int:
       return n; }""")
 
 
-@pytest.fixture
-def slow_site():
-    """The site behind an emulated 8 Mbps link with a 40 ms round trip (gzip as GitHub Pages sends it)."""
-    with SiteServer(SITE, link=Link("test-8mbps", 8e6, 40)) as server:
-        server.precompress()
-        yield server
-
-
 def test_a_check_before_the_grader_is_ready_shows_the_loading_progress(browser, slow_site):
     context = browser.new_context()
     context.add_init_script(RECORD)
     page = context.new_page()
     try:
-        page.goto(slow_site.url + "chapters/00-rotations-2d/", wait_until="commit")
-        ex = exercise(page, "0.1")
-        ex.locator(role("answer")).fill("3", timeout=LONG)
-        assert page.evaluate("a => document.documentElement.getAttribute(a)", ATTR.runtime) == "loading"
-        ex.locator(role("check")).click()
+        ex = check_while_loading(page, slow_site.url)
         status = ex.locator(role("runtime-status"))
         expect(status).to_be_visible()
         expect(status).to_contain_text("Loading the grader")

@@ -23,12 +23,9 @@ of them for the claim to mean something.
 
 from __future__ import annotations
 
-import pytest
 from playwright.sync_api import expect
 
-from conftest import SITE
-from helpers import exercise, role, set_editor, wait_runtime
-from site_server import Link, SiteServer
+from helpers import check_while_loading, exercise, role, set_editor, wait_runtime
 from workbook import bank
 from workbook.contract import ATTR, DATA
 
@@ -117,14 +114,6 @@ def test_the_first_build_run_shows_the_sandbox_starting_then_the_verdict(browser
         context.close()
 
 
-@pytest.fixture
-def slow_site():
-    """The site behind an emulated 8 Mbps link with a 40 ms round trip (gzip as GitHub Pages sends it)."""
-    with SiteServer(SITE, link=Link("test-8mbps", 8e6, 40)) as server:
-        server.precompress()
-        yield server
-
-
 def longest_still(samples: list) -> tuple[float, int]:
     """The longest time (ms) the value and the text stayed the same, over samples that came on time;
     and how many samples came on time after another."""
@@ -147,11 +136,7 @@ def test_the_loading_bar_measures_the_whole_start_and_never_stands_still(browser
     context.add_init_script(SAMPLE)
     page = context.new_page()
     try:
-        page.goto(slow_site.url + "chapters/00-rotations-2d/", wait_until="commit")
-        ex = exercise(page, "0.1")
-        ex.locator(role("answer")).fill("3", timeout=LONG)
-        assert page.evaluate("a => document.documentElement.getAttribute(a)", ATTR.runtime) == "loading"
-        ex.locator(role("check")).click()
+        ex = check_while_loading(page, slow_site.url)
         page.wait_for_function("el => el.dataset.state === 'correct'", arg=ex.element_handle(), timeout=LONG)
         samples = page.evaluate("window.__wbSamples")
         steps = page.evaluate("window.__wbSteps")
