@@ -12,6 +12,7 @@ from pathlib import Path
 
 import pytest
 
+from markdown_table import table_after
 from workbook import bank
 from workbook.api import handle
 from workbook.contract import DATA, KINDS, OPS
@@ -47,14 +48,7 @@ def test_contract_md_explains_every_name():
 
 def _table(heading: str) -> list[list[str]]:
     """The rows of the first Markdown table after the line that starts with ``heading``."""
-    lines = CONTRACT_MD[CONTRACT_MD.index(heading):].splitlines()
-    start = next(i for i, line in enumerate(lines) if line.startswith("| "))
-    rows = []
-    for line in lines[start + 2:]:
-        if not line.startswith("| "):
-            break
-        rows.append([cell.strip() for cell in line.strip("|").split(" | ")])
-    return rows
+    return table_after(CONTRACT_MD, heading)
 
 
 def test_the_build_functions_in_contract_md_are_the_banks():

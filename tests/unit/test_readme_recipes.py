@@ -20,6 +20,8 @@ from pathlib import Path
 
 import pytest
 
+from markdown_table import table_after
+
 ROOT = Path(__file__).resolve().parents[2]
 README = (ROOT / "README.md").read_text(encoding="utf-8")
 STEP = re.compile(
@@ -103,13 +105,7 @@ def build(root: Path, exercise: str) -> dict:
 def contract_builds(root: Path) -> dict[str, str]:
     """CONTRACT.md's table of Build functions in the copy: id -> signature."""
     text = (root / "CONTRACT.md").read_text(encoding="utf-8")
-    lines = text[text.index("The Build exercises' functions"):].splitlines()
-    start = next(i for i, line in enumerate(lines) if line.startswith("| "))
-    rows = []
-    for line in lines[start + 2:]:
-        if not line.startswith("| "):
-            break
-        rows.append([cell.strip() for cell in line.strip("|").split(" | ")])
+    rows = table_after(text, "The Build exercises' functions")
     return {row[0]: row[1].strip("`") for row in rows}
 
 
