@@ -118,6 +118,9 @@ def lab(browser, site_url):
     open_chapter(page, site_url, 0)
     exercise(page, "0.5").scroll_into_view_if_needed()  # the sandbox starts near a Build exercise
     page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
+    # The offline copy fetches every file of the site (the package's wheel too) in the background;
+    # it must be done before an attack's requests are counted, or its fetches look like an escape.
+    page.wait_for_function("() => document.documentElement.dataset.workbookOffline === 'ready'", timeout=LONG)
     yield page, requests
     assert blocked == [] and errors == []
     context.close()
