@@ -54,6 +54,16 @@ def browser_type_launch_args(browser_type_launch_args):
     }
 
 
+@pytest.fixture(scope="session")
+def browser_context_args(browser_context_args):
+    """Contexts made by the ``context`` and ``page`` fixtures run no service worker, so no offline
+    copy (the whole site, fetched in the background after ready) competes with what a test does
+    and times. The offline tests, and any test that reads the offline state, opt back in with
+    ``@pytest.mark.browser_context_args(service_workers="allow")`` (or a module's ``pytestmark``);
+    contexts a test makes itself with ``browser.new_context()`` keep the browser's default."""
+    return {**browser_context_args, "service_workers": "block"}
+
+
 def pytest_configure(config):
     config.addinivalue_line("markers", "uncached: route every request (no HTTP cache), as the offline tests need")
     config.addinivalue_line("markers", "xdist_group(name): run in one test process (pytest-xdist's mark)")
@@ -103,7 +113,7 @@ def page(page, external_requests):
 @pytest.fixture(scope="module")
 def _tour_tab(browser, site_url):
     """The one tab of a test module's ``tour``, with the checks the ``page`` fixture makes."""
-    context = browser.new_context()
+    context = browser.new_context(service_workers="block")  # no offline copy (see browser_context_args)
     leaving = (keep_to_origin if os.environ.get("WORKBOOK_ROUTE_ALL") else record_leaving)(context, site_url)
     tab = context.new_page()
     tab.set_default_timeout(30_000)

@@ -99,6 +99,7 @@ def test_the_policy_is_enforced_and_reported(page, site_url, violations):
     assert any("script-src" in v for v in violations), violations
 
 
+@pytest.mark.browser_context_args(service_workers="allow")  # the offline copy is made under the policy too
 def test_no_violation_on_any_page_while_using_the_site(page, site_url, violations):
     pages = site_pages()
     assert CHAPTERS[0] in pages and "progress/" in pages and "" in pages

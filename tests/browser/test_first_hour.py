@@ -25,7 +25,6 @@ from helpers import (
     set_editor,
     wait_runtime,
 )
-from test_a11y import PAGES, open_all_help
 from workbook import bank
 from workbook.contract import ATTR, ROLE
 
@@ -57,72 +56,6 @@ def test_one_numbering_on_home_menu_titles_progress_and_practise(page, site_url)
     source = page.locator(".wb-practise-from a")
     expect(source).to_be_visible()
     assert source.inner_text().strip() in home
-
-
-# ---- Wide formulas ----------------------------------------------------------------
-# Every typeset formula (display or inline) is checked against the nearest box
-# that clips it. Cut means: its ink reaches past that box's edge. A cut formula
-# passes only if the box scrolls, takes the keyboard focus, and shows its cue on
-# that side (data-wb-overflow, with the drawn arrow visible).
-CLIPPED = """() => {
-  const bad = [];
-  let cued = 0;
-  for (const f of document.querySelectorAll('.md-content .katex')) {
-    if (!f.getClientRects().length || f.closest('[hidden]')) continue;
-    const r = f.getBoundingClientRect();
-    let box = f.parentElement;
-    while (box && box !== document.body && getComputedStyle(box).overflowX === 'visible') box = box.parentElement;
-    if (!box || box === document.body) continue;
-    const b = box.getBoundingClientRect();
-    const left = r.left < b.left + box.clientLeft - 0.5, right = r.right > b.left + box.clientLeft + box.clientWidth + 0.5;
-    if (!left && !right) continue;
-    const sides = (box.dataset.wbOverflow || '').split(' ');
-    const shown = (side, pseudo) => !sides.includes(side) || getComputedStyle(box, pseudo).visibility === 'visible';
-    const ok = /auto|scroll/.test(getComputedStyle(box).overflowX) && box.tabIndex === 0
-      && (!left || sides.includes('start')) && (!right || sides.includes('end'))
-      && shown('start', '::before') && shown('end', '::after');
-    if (ok) cued++;
-    else bad.push(`${f.textContent.slice(0, 40)} (${left ? 'left ' : ''}${right ? 'right' : ''} of ${box.tagName.toLowerCase()}.${box.className}, cue "${box.dataset.wbOverflow ?? ''}")`);
-  }
-  return { bad, cued };
-}"""
-
-
-def formulas_ready(page: Page) -> None:
-    page.wait_for_function("() => [...document.querySelectorAll('.md-content .arithmatex')].every(e => e.dataset.rendered || e.closest('[hidden]'))")
-
-
-def check_formulas(page: Page) -> dict:
-    """The formulas' state once the page's scroll boxes are marked (a11y.js does it a moment after a
-    change, when the page is idle; the page is asked to do it now)."""
-    page.evaluate("() => window.workbook?.checkScrollRegionsNow?.()")
-    result = page.evaluate(CLIPPED)
-    for _ in range(40):
-        if not result["bad"]:
-            break
-        page.wait_for_timeout(250)
-        result = page.evaluate(CLIPPED)
-    return result
-
-
-@pytest.mark.parametrize("width", [360, 1280])
-def test_no_formula_is_cut_without_its_cue_on_any_page(page, site_url, width):
-    page.set_default_timeout(120_000)  # a dozen pages, each booting Python meanwhile, on a machine maybe busy
-    page.set_viewport_size({"width": width, "height": 800})
-    problems, cued = {}, 0
-    for path in [*PAGES, "practise/", "performance/"]:
-        page.goto(site_url + path)
-        formulas_ready(page)
-        page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)")
-        open_all_help(page)
-        formulas_ready(page)
-        result = check_formulas(page)
-        cued += result["cued"]
-        if result["bad"]:
-            problems[path or "home"] = result["bad"]
-    assert problems == {}, "\n".join(f"{p}:\n  " + "\n  ".join(v) for p, v in problems.items())
-    if width == 360:
-        assert cued >= 10, f"expected many wide formulas at 360 px, found {cued}"
 
 
 def test_the_cue_follows_the_scroll(page, site_url):

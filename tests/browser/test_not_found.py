@@ -9,6 +9,7 @@ service worker points at its own scope."""
 
 from __future__ import annotations
 
+import pytest
 from playwright.sync_api import expect
 
 from helpers import network_is_off
@@ -33,6 +34,7 @@ def assert_styled_404(page, site_url, header_colour: str) -> None:
     assert page.evaluate("a => document.documentElement.getAttribute(a)", ATTR.runtime) in ("loading", "ready")
 
 
+@pytest.mark.browser_context_args(service_workers="allow")  # offline, the service worker serves it
 def test_unknown_deep_address_shows_the_styled_404_online_and_offline(page, context, site_url):
     page.goto(site_url)
     page.wait_for_function("a => document.documentElement.getAttribute(a) === 'ready'", arg=ATTR.offline,

@@ -35,7 +35,8 @@ from helpers import (
 )
 from site_server import SiteServer
 
-pytestmark = pytest.mark.uncached  # the offline copy must not lean on the HTTP cache
+# The offline copy must not lean on the HTTP cache; it needs its service worker.
+pytestmark = [pytest.mark.uncached, pytest.mark.browser_context_args(service_workers="allow")]
 
 ROTATE_NUMPY = (
     "import numpy as np\n\n"

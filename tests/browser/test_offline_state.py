@@ -25,7 +25,8 @@ from conftest import ROOT, SITE
 from helpers import keep_to_origin
 from workbook.contract import ATTR, DATA
 
-pytestmark = pytest.mark.uncached  # the offline copy must not lean on the HTTP cache
+# The offline copy must not lean on the HTTP cache; it needs its service worker.
+pytestmark = [pytest.mark.uncached, pytest.mark.browser_context_args(service_workers="allow")]
 
 LONG = 120_000
 STATES = DATA["offlineStates"]

@@ -35,19 +35,22 @@ def export_of(exercises: dict) -> str:
 
 # A tab "answers" as exercise.js does: a patch computed from what the tab holds in
 # memory (which may lag the other tab), handed to progress.update. Both tabs are
-# armed to write in the same millisecond, T, of the system clock: a timer to just
-# before T, then a spin to T itself.
-ARM = """([id, v, at]) => {
-  window.__fired = null;
-  const go = () => {
-    while (Date.now() < at) { /* spin to the instant: the one system clock both tabs read */ }
-    const started = Date.now();
-    const r = workbook.progress.get(id);
-    workbook.progress.update(id, { done: [...(r.done || []), v], attempts: (r.attempts || 0) + 1 });
-    window.__fired = started;
-  };
-  setTimeout(go, Math.max(0, at - Date.now() - 60));
+# armed to write in the same millisecond of the system clock, for a batch of such
+# instants at once: for each, a timer to just before it, then a spin to the instant.
+ARM = """(writes) => {
+  window.__fired = writes.map(() => null);
+  writes.forEach(([id, v, at], k) => {
+    const go = () => {
+      while (Date.now() < at) { /* spin to the instant: the one system clock both tabs read */ }
+      const started = Date.now();
+      const r = workbook.progress.get(id);
+      workbook.progress.update(id, { done: [...(r.done || []), v], attempts: (r.attempts || 0) + 1 });
+      window.__fired[k] = started;
+    };
+    setTimeout(go, Math.max(0, at - Date.now() - 40));
+  });
 }"""
+BATCH, SPACING = 10, 120  # instants armed at once, and the milliseconds between them
 
 CONVERGED = """([ids, expected]) => {
   const mem = workbook.progress.all();
@@ -67,16 +70,19 @@ def test_two_tabs_answering_within_a_millisecond_fifty_times_lose_nothing(contex
     # one of them late, so this goes on until 50 pairs began in the same millisecond
     # (at most 200 pairs: every pair is a real test of the merge all the same).
     while sum(g == 0 for g in gaps) < 50 and len(gaps) < 200:
-        n = len(gaps)
-        ex = ids[n % len(ids)]
-        va, vb = 2 * n + 1, 2 * n + 2
-        expected[ex] += [va, vb]
-        at = int(time.time() * 1000) + 150
-        a.evaluate(ARM, [ex, va, at])
-        b.evaluate(ARM, [ex, vb, at])
+        start = int(time.time() * 1000) + 150
+        batch = []
+        for k in range(BATCH):
+            n = len(gaps) + k
+            ex = ids[n % len(ids)]
+            expected[ex] += [2 * n + 1, 2 * n + 2]
+            batch.append((ex, 2 * n + 1, 2 * n + 2, start + k * SPACING))
+        a.evaluate(ARM, [[ex, va, at] for ex, va, _, at in batch])
+        b.evaluate(ARM, [[ex, vb, at] for ex, _, vb, at in batch])
         for tab in (a, b):
-            tab.wait_for_function("() => window.__fired !== null")
-        gaps.append(abs(a.evaluate("window.__fired") - b.evaluate("window.__fired")))
+            tab.wait_for_function("() => window.__fired.every(t => t !== null)")
+        fired_a, fired_b = a.evaluate("window.__fired"), b.evaluate("window.__fired")
+        gaps += [abs(x - y) for x, y in zip(fired_a, fired_b, strict=True)]
     # The tabs exchange what they wrote until both hold everything, in memory and in storage.
     for tab in (a, b):
         tab.wait_for_function(CONVERGED, arg=[ids, expected])

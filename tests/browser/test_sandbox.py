@@ -106,8 +106,11 @@ MESSAGES = {
 
 @pytest.fixture(scope="module")
 def lab(browser, site_url):
-    """One page of chapter 0 for every attack (each leaves the sandbox replaced, or as it was)."""
-    context = browser.new_context()
+    """One page of chapter 0 for every attack (each leaves the sandbox replaced, or as it was).
+    No service worker: the offline copy would fetch every file of the site (the package's wheel
+    too) in the background, and its requests would look like an attack's (the attacks under the
+    service worker are test_attacks_change_no_stored_byte_and_plant_no_page's)."""
+    context = browser.new_context(service_workers="block")
     blocked = keep_to_origin(context, site_url)
     requests: list[str] = []
     context.on("request", lambda request: requests.append(request.url))
@@ -118,9 +121,6 @@ def lab(browser, site_url):
     open_chapter(page, site_url, 0)
     exercise(page, "0.5").scroll_into_view_if_needed()  # the sandbox starts near a Build exercise
     page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
-    # The offline copy fetches every file of the site (the package's wheel too) in the background;
-    # it must be done before an attack's requests are counted, or its fetches look like an escape.
-    page.wait_for_function("() => document.documentElement.dataset.workbookOffline === 'ready'", timeout=LONG)
     yield page, requests
     assert blocked == [] and errors == []
     context.close()
@@ -169,6 +169,7 @@ def test_a_sandbox_that_died_is_replaced_and_the_run_goes_on(lab):
     assert page.evaluate("workbook.sandbox.lost") == lost + 1
 
 
+@pytest.mark.browser_context_args(service_workers="allow")
 def test_attacks_change_no_stored_byte_and_plant_no_page(page, site_url):
     """With the service worker serving the site, every attack runs once; nothing is solved, the
     storage holds only the workbook's own record, the caches are as stored, and the page that
