@@ -20,7 +20,7 @@ SITE = ROOT / "site"
 sys.path.insert(0, str(ROOT / "scripts"))
 
 from find_browser import find_browser  # noqa: E402  (from scripts/, on the path above)
-from helpers import go_instantly, keep_to_origin, open_chapter, record_leaving  # noqa: E402
+from helpers import CHAPTERS, go_instantly, keep_to_origin, open_chapter, record_leaving  # noqa: E402
 from site_server import SUBPATH, Link, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 
 
@@ -127,16 +127,17 @@ def _tour_tab(browser, site_url):
 @pytest.fixture
 def tour(_tour_tab, site_url):
     """``tour(n)`` opens chapter n in the test module's one tab and returns the page: the first
-    chapter by loading it, the next ones by instant navigation, so the module's tests share one
-    booted grader instead of booting Python each. Only for tests that change nothing another test
-    reads (no grading: the tab's progress would carry over); each test still fails on an uncaught
-    error in the page or a request that leaves the site's origin, as with ``page``."""
+    chapter by loading it, the next ones by instant navigation (chapter n again, if the tab is on
+    it, by loading it), so the module's tests share one booted grader instead of booting Python
+    each. Only for tests that change nothing another test reads (what one grades stays in the
+    tab's progress: no test of the module may read those records); each test still fails on an
+    uncaught error in the page or a request that leaves the site's origin, as with ``page``."""
     tab = _tour_tab
     tab.js_errors.clear()
     tab.leaving.clear()
 
     def visit(n: int):
-        if tab.url.startswith(site_url):
+        if tab.url.startswith(site_url) and tab.url != site_url + CHAPTERS[n]:
             go_instantly(tab, site_url, n)
         else:
             open_chapter(tab, site_url, n)

@@ -103,10 +103,10 @@ def test_an_import_while_another_tab_answers_loses_nothing(context, site_url):
         file = export_of({ex: {"done": [500 + n], "clean": [500 + n], "updated": 1_700_000_000_000 + n},
                           "1.1": {"done": [700 + n], "updated": 1_700_000_000_000 + n}})
         # The other tab answers the same exercise just as the file is read.
-        answerer.evaluate(ARM, [ex, 900 + n, time.time() * 1000 + 40])
+        answerer.evaluate(ARM, [[ex, 900 + n, time.time() * 1000 + 40]])
         message = import_file(importer, file)
         assert "Import refused" not in message, message
-        answerer.wait_for_function("() => window.__fired !== null")
+        answerer.wait_for_function("() => window.__fired.every(t => t !== null)")
     expected = {ex: [] for ex in IDS}
     for n in range(14):
         expected[IDS[n % len(IDS)]] += [500 + n, 900 + n]

@@ -5,6 +5,7 @@
 
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
+import { renderMath } from "./math.js";
 import { dueLine, el, listPage, reviewedIds } from "./progress-view.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
@@ -76,6 +77,7 @@ export async function initPractise(shared, siteRoot) {
       const from = el("p", { className: "wb-practise-from" }, "From ",
         el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }), FRESH[node.getAttribute(ATTR.kind)] ?? ".");
       card.replaceChildren(heading, from, node);
+      renderMath(node); // the chapter page's formulas arrive as TeX: typeset them as the page does its own
       initExercise(node, { ...shared, start: freshVariant() });
     } catch (err) {
       card.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Try the next one, or reload when you are online.` }));
