@@ -6,7 +6,7 @@ from ..kinds.build import Build
 from ..number_format import fmt
 from ..reference.pose_graph import compose_pose, edge_error_relative, relative_pose, wrap_angle
 from ..reference.pose_graph_step import gauss_newton_se2
-from .pose_graph_slips import diagnose
+from .pose_graph_slips import diagnose, step_with, unwrapped_error
 
 _SOLUTION = '''import numpy as np
 
@@ -122,19 +122,35 @@ def _describe(poses, edges) -> str:
 
 def _told():
     """What the chapter's paragraph after the solution says, from the reference: how far the corner's
-    loop closure disagrees, and what each edge keeps of it after the step.
+    loop closure disagrees, how far the step moves poses 1 and 2 and what each edge keeps of the
+    disagreement (a third each, as on exercise 5.8's line); then the western example's headings, its
+    first edge's angle error wrapped and not, and how far pose 2 would land without the wrap.
 
     >>> v = _told(); v["gap"], v["left"], v["moved1"], v["moved2"]
     ('0.2', '0.06667', '0.06667', '0.1333')
+    >>> v["plain"], v["wrapped"], v["raw_error"], v["error"], v["swing"], v["legs"], v["closure"]
+    ('-6.1', '0.1832', '6.3', '0.01681', '11.1171', '1, 1', '1, 1.2')
     """
     poses, edges = _CORNER
     after = gauss_newton_se2(poses, edges)
-    before = [edge_error_relative(poses[i], poses[j], z) for i, j, z, _ in edges]
-    left = [edge_error_relative(after[i], after[j], z) for i, j, z, _ in edges]
-    return {"gap": fmt(abs(before[2][1])), "left": fmt(max(abs(v) for e in left for v in e[:2])),
-            "moved1": fmt(after[1][1] - poses[1][1]), "moved2": fmt(after[2][1] - poses[2][1]),
-            "plain": fmt(_WEST[0][1][2] - _WEST[0][0][2]),
-            "wrapped": fmt(wrap_angle(_WEST[0][1][2] - _WEST[0][0][2]))}
+    gap = abs(edge_error_relative(poses[0], poses[2], edges[2][2])[1])
+    left = [max(abs(v) for v in edge_error_relative(after[i], after[j], z)) for i, j, z, _ in edges]
+    moved = [math.dist(a[:2], p[:2]) for a, p in zip(after, poses)]
+    if len({fmt(v) for v in left}) != 1 or fmt(3 * left[0]) != fmt(gap) or fmt(2 * moved[1]) != fmt(moved[2]):
+        raise ValueError("5.10's solution says each edge keeps a third of the gap; the reference disagrees")
+    legs = compose_pose(compose_pose(poses[0], edges[0][2]), edges[1][2])
+    if not math.isclose(legs[0], edges[2][2][0]) or fmt(edges[2][2][1] - legs[1]) != fmt(gap):
+        raise ValueError("5.10's solution says the legs and the loop closure differ in y only")
+    said = {"legs": f"{fmt(legs[0])}, {fmt(legs[1])}", "closure": f"{fmt(edges[2][2][0])}, {fmt(edges[2][2][1])}"}
+    poses, edges = _WEST
+    (i, j, z, _), plain = edges[0], poses[1][2] - poses[0][2]
+    wrong = step_with(poses, edges, unwrapped_error)
+    once = gauss_newton_se2(poses, edges)
+    said["again"] = fmt(math.dist(gauss_newton_se2(once, edges)[2][:2], once[2][:2]))
+    return {**said, "gap": fmt(gap), "left": fmt(left[0]), "moved1": fmt(moved[1]), "moved2": fmt(moved[2]),
+            "plain": fmt(plain), "wrapped": fmt(wrap_angle(plain)), "raw_error": fmt(z[2] - plain),
+            "error": fmt(edge_error_relative(poses[i], poses[j], z)[2]),
+            "swing": fmt(math.dist(wrong[2][:2], once[2][:2]))}
 
 
 EXERCISES = (

@@ -44,13 +44,13 @@ def _same(a: Any, b: Any) -> bool:
     return first_difference(a, b, TOL, TOL, angles=ANGLES) is None
 
 
-def _unwrapped_error(xi, xj, z) -> list[float]:
+def unwrapped_error(xi, xj, z) -> list[float]:
     """The edge error with its angle left as the plain difference z_θ − (θj − θi)."""
     e = edge_error_relative(xi, xj, z)
     return [e[0], e[1], z[2] - (xj[2] - xi[2])]
 
 
-def _step_with(poses, edges, error: Callable = edge_error_relative) -> list[list[float]]:
+def step_with(poses, edges, error: Callable = edge_error_relative) -> list[list[float]]:
     return moved(poses, anchored_step(*linear_system(poses, edges, error)))
 
 
@@ -88,16 +88,16 @@ def diagnose(args: tuple, got: Any, want: Any) -> str:
     if not _same(got[0], poses[0]):
         said.insert(0, ANCHOR)
     rest, free = got[1:], poses[1:]
-    if _same(want[1:], free):
-        return " ".join(said)  # the reference takes no step: no slip of the step can show
-    if _same(rest, free):
-        said.append(UNMOVED.format(poses=_others(len(poses))))
-        return " ".join(said)
-    slips = [(OPPOSITE, [[2 * p[0] - w[0], 2 * p[1] - w[1], 2 * p[2] - w[2]] for p, w in zip(free, want[1:])])]
+    slips = []
+    if not _same(want[1:], free):  # the reference steps: taking none, or its opposite, can show
+        if _same(rest, free):
+            said.append(UNMOVED.format(poses=_others(len(poses))))
+            return " ".join(said)
+        slips.append((OPPOSITE, [[2 * p[0] - w[0], 2 * p[1] - w[1], 2 * p[2] - w[2]] for p, w in zip(free, want[1:])]))
     edge = _unwrapped_edge(poses, edges)
     if edge:
-        slips.append((UNWRAPPED.format(edge=edge), _step_with(poses, edges, _unwrapped_error)[1:]))
+        slips.append((UNWRAPPED.format(edge=edge), step_with(poses, edges, unwrapped_error)[1:]))
     unit = [(i, j, z, [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]) for i, j, z, _ in edges]
-    slips.append((UNWEIGHTED, _step_with(poses, unit)[1:]))
+    slips.append((UNWEIGHTED, step_with(poses, unit)[1:]))
     said += [sentence for sentence, theirs in slips if not _same(theirs, want[1:]) and _same(rest, _wrapped(theirs))]
     return " ".join(said)

@@ -93,4 +93,6 @@ def gauss_newton_se2(poses: Sequence[Pose], edges: Sequence[Edge]) -> list[list[
     """
     poses = [tuple(float(v) for v in p) for p in poses]
     H, b = linear_system(poses, edges)
-    return moved(poses, anchored_step(H, b))
+    after = moved(poses, anchored_step(H, b))
+    after[0] = list(poses[0])  # the anchor, exactly as given (no round trip through the wrap)
+    return after
