@@ -45,43 +45,46 @@ def gauss_newton_se2(poses, edges):
     return new.tolist()
 '''
 
-_I = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]
 _W = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 10.0]]
 _CORRELATED = [[4.0, 1.0, 0.0], [1.0, 2.0, 0.0], [0.0, 0.0, 20.0]]
 
+Pose = tuple[float, float, float]
+Edge = tuple[int, int, Pose, list[list[float]]]
+Graph = tuple[tuple[Pose, ...], tuple[Edge, ...]]
+
 # The chapter's example: two odometry legs of 1 m turning 90° each, a loop closure that puts pose 2
 # 0.2 m further from pose 0 than the odometry does.
-_CORNER = ([[0.0, 0.0, 0.0], [1.0, 0.0, math.pi / 2], [1.0, 1.0, math.pi]],
-           [[0, 1, [1.0, 0.0, math.pi / 2], _W], [1, 2, [1.0, 0.0, math.pi / 2], _W], [0, 2, [1.0, 1.2, math.pi], _W]])
+_CORNER: Graph = (((0.0, 0.0, 0.0), (1.0, 0.0, math.pi / 2), (1.0, 1.0, math.pi)),
+                  ((0, 1, (1.0, 0.0, math.pi / 2), _W), (1, 2, (1.0, 0.0, math.pi / 2), _W),
+                   (0, 2, (1.0, 1.2, math.pi), _W)))
 # Driving west, headings either side of ±π: θ1 − θ0 = −6.1 rad as plain numbers, 0.18 rad once wrapped.
-_WEST = ([[2.0, 1.0, 3.0], [1.0, 1.1, -3.1], [0.0, 1.05, -3.0]],
-         [[0, 1, [1.0, 0.0, 0.2], _W], [1, 2, [1.0, 0.0, 0.1], _W], [2, 0, [-1.95, 0.3, -0.3], _CORRELATED]])
+_WEST: Graph = (((2.0, 1.0, 3.0), (1.0, 1.1, -3.1), (0.0, 1.05, -3.0)),
+                ((0, 1, (1.0, 0.0, 0.2), _W), (1, 2, (1.0, 0.0, 0.1), _W), (2, 0, (-1.95, 0.3, -0.3), _CORRELATED)))
 
 
-def _consistent():
+def _consistent() -> Graph:
     """Three poses that agree with every edge exactly (loop closure included): the step is zero."""
     z01, z12 = (1.2, 0.3, 0.8), (0.9, -0.2, 2.0)
     p0 = (1.0, -2.0, 2.5)
     p1 = compose_pose(p0, z01)
     p2 = compose_pose(p1, z12)
-    return ([list(p0), list(p1), list(p2)],
-            [[0, 1, list(z01), _CORRELATED], [1, 2, list(z12), _W], [0, 2, list(relative_pose(p0, p2)), _W]])
+    return ((p0, p1, p2), ((0, 1, z01, _CORRELATED), (1, 2, z12, _W), (0, 2, relative_pose(p0, p2), _W)))
 
 
-_EDGE_CASES = (
+_EDGE_CASES: tuple[Graph, ...] = (
     # already at the optimum: every edge agrees, so b = 0 and nothing moves
     _consistent(),
     # a loop closure across the ±π wrap: θ2 − θ0 is 6.08 rad as plain numbers, −0.2 once wrapped
-    ([[0.0, 0.0, 3.05], [-1.0, 0.1, -3.1], [-2.1, 0.2, -3.0]],
-     [[0, 1, [1.0, -0.1, 0.15], _W], [1, 2, [1.0, 0.0, 0.1], _W], [2, 0, [-2.0, 0.2, -0.2], _CORRELATED]]),
+    (((0.0, 0.0, 3.05), (-1.0, 0.1, -3.1), (-2.1, 0.2, -3.0)),
+     ((0, 1, (1.0, -0.1, 0.15), _W), (1, 2, (1.0, 0.0, 0.1), _W), (2, 0, (-2.0, 0.2, -0.2), _CORRELATED))),
     # a heading pushed past π by the step: the result's angle must come back into (−π, π]
-    ([[0.0, 0.0, 3.0], [-1.0, 0.1, 3.1], [-2.0, 0.3, 3.12]],
-     [[0, 1, [1.0, -0.1, 0.25], [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 50.0]]],
-      [1, 2, [1.0, 0.0, 0.2], _W]]),
+    (((0.0, 0.0, 3.0), (-1.0, 0.1, 3.1), (-2.0, 0.3, 3.12)),
+     ((0, 1, (1.0, -0.1, 0.25), [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 50.0]]),
+      (1, 2, (1.0, 0.0, 0.2), _W))),
     # no edge from pose 0 to pose 1: pose 1 hangs on pose 2; edges written backwards; pose 0 turned, off the origin
-    ([[3.0, 1.0, math.pi], [1.2, 0.8, -2.0], [2.0, 1.1, 2.8]],
-     [[2, 1, [1.0, -0.5, 1.2], _CORRELATED], [2, 0, [-1.0, 0.2, 0.4], [[5.0, -2.0, 0.5], [-2.0, 3.0, 0.0],
-                                                                          [0.5, 0.0, 8.0]]]]),
+    (((3.0, 1.0, math.pi), (1.2, 0.8, -2.0), (2.0, 1.1, 2.8)),
+     ((2, 1, (1.0, -0.5, 1.2), _CORRELATED),
+      (2, 0, (-1.0, 0.2, 0.4), [[5.0, -2.0, 0.5], [-2.0, 3.0, 0.0], [0.5, 0.0, 8.0]]))),
 )
 
 

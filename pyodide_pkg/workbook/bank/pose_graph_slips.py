@@ -7,14 +7,18 @@ step with one named slip (an edge's angle error left unwrapped, every Ω taken a
 recomputed here from the reference's own parts. A sentence is said only when it is true of
 the numbers, so a correct step never gets one, and a slip the list does not know gets none.
 
->>> import math
+Two edges in a row, the second turning pose 2 past π, and the step of a program that forgot to wrap
+the result's angles; then one that moved the anchor and took no step:
+
+>>> from workbook.reference.pose_graph_step import gauss_newton_se2
 >>> W = [[1, 0, 0], [0, 1, 0], [0, 0, 1]]
 >>> args = ([[1, 0, 0], [2, 0, 0], [3, 0, 3.0]], [[0, 1, [1, 0, 0], W], [1, 2, [1, 0, 3.2], W]])
->>> want = [[1.0, 0.0, 0.0], [2.0, 0.0, 0.0], [3.0, 0.0, 3.2 - 2 * math.pi]]
+>>> want = gauss_newton_se2(*args)
 >>> diagnose(args, [[1.0, 0.0, 0.0], [2.0, 0.0, 0.0], [3.0, 0.0, 3.2]], want)
 'The angle of pose 2, 3.2, lies outside (−π, π]; wrapped, it agrees with the reference.'
->>> diagnose(args, [[1.5, 0.0, 0.0], [2.0, 0.0, 0.0], [3.0, 0.0, 3.0]], want)
-'Pose 0 moved: it is the anchor, so it comes back exactly as given. Poses 1 and 2 came back just as given: no step was applied.'
+>>> print(diagnose(args, [[1.5, 0.0, 0.0], [2.0, 0.0, 0.0], [3.0, 0.0, 3.0]], want))
+Pose 0 moved: it is the anchor, so it comes back exactly as given.
+Poses 1 and 2 came back just as given: no step was applied.
 """
 
 from __future__ import annotations
