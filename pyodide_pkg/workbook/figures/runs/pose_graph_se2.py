@@ -31,6 +31,7 @@ def _triangle(c: Canvas, pose, size: float, cls: str) -> None:
     tip = (x + size * math.cos(t), y + size * math.sin(t))
     back = [(x + 0.6 * size * math.cos(t + a), y + 0.6 * size * math.sin(t + a)) for a in (2.5, -2.5)]
     c.polygon([tip, back[0], back[1]], cls)
+    c.keep_clear([tip, back[0], back[1], tip])  # the pose numbers keep off it
 
 
 def _graph(c: Canvas, poses, edges, size: float, cls: str, name: str, numbered: bool) -> str:
@@ -41,6 +42,7 @@ def _graph(c: Canvas, poses, edges, size: float, cls: str, name: str, numbered: 
         i, j = int(i), int(j)
         closure = abs(i - j) != 1
         c.line(at[i], at[j], f"{cls.split()[0]} wb-fig-thin" + (" wb-fig-dash" if closure else ""))
+        c.keep_clear([at[i], at[j]])
     for k, p in enumerate(poses):
         _triangle(c, (*at[k], p[2]), size, cls + (" wb-fig-face" if numbered else ""))
         if numbered:
