@@ -20,6 +20,7 @@ from __future__ import annotations
 import json
 import math
 import re
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -35,11 +36,14 @@ UNREADABLE = "The sandbox's report on this run could not be read; run it again."
 
 @dataclass
 class Case:
-    """One test as the grader knows it: how it is shown and the expected value (numbers, maybe nested)."""
+    """One test as the grader knows it: how it is shown and the expected value (numbers, maybe nested).
+    ``diagnose``, when the exercise has one, names what is wrong with a value that disagrees (the learner's
+    numbers, shaped as ``want``) in a sentence, or gives "" when it cannot say (``Build.diagnose``)."""
 
     name: str
     input: str
     want: Any
+    diagnose: Callable[[Any], str] | None = field(default=None, compare=False, repr=False)
 
     @property
     def expected(self) -> str:
@@ -234,7 +238,22 @@ def row(case: Case, outcome: dict[str, Any], rel_tol: float, abs_tol: float,
     found = first_difference(got, case.want, rel_tol, abs_tol, angles=angles)
     message = "" if found is None or not found[0] else (
         f"first difference at {found[0]}: expected {show(_rounded(found[2]))}, got {show(_rounded(found[1]))}")
+    said = _diagnosis(case, got) if found is not None else ""
+    if said:
+        message = said + (f" ({message})" if message else "")
     return {**out, "actual": show(_rounded(got)), "passed": found is None, "message": message}
+
+
+def _diagnosis(case: Case, got: Any) -> str:
+    """What the exercise's own diagnosis names about a disagreeing value ("" when it names nothing, or fails:
+    a fault of the diagnosis must never cost the learner the row)."""
+    if case.diagnose is None:
+        return ""
+    try:
+        said = case.diagnose(got)
+    except Exception:
+        return ""
+    return said if isinstance(said, str) else ""
 
 
 def compare(report: Report, cases: list[Case], rel_tol: float, abs_tol: float,

@@ -21,6 +21,9 @@ WRONG = {
              "heading = theta + omega * dt / (dt * v)"),
     "5.8": (("x[1] + d1, x[2] + d2", "x[1] - d1, x[2] - d2"),
             ("if det == 0:\n        return None", ""), "d1 = (-b[1] * h22 + b[2] * h12) / det"),
+    "5.10": (("        e[2] = wrap(e[2])\n", ""),
+             ("np.linalg.solve(H[3:, 3:], -b[3:])", "np.linalg.solve(H, -b[3:])"),
+             "dx[3:] = np.linalg.solve(H, -b[3:])  # pose 0's rows and columns dropped"),
     "6.7": (("if elbow_up:", "if not elbow_up:"),
             ("\n    c2 = max(-1.0, min(1.0, c2))  # round-off at the edge can put c2 a hair past 1 or -1", ""),
             "theta2 = math.acos(c2)"),
@@ -72,3 +75,14 @@ def test_code_the_robot_in_the_page(page, site_url, ex_id):
     assert f"line {number}" in ex.locator(role("tests")).inner_text()
     marked = ex.locator(".cm-line.wb-error-line")
     assert marked.count() == 1 and line_text.strip() in marked.inner_text()
+
+
+def test_a_slip_of_5_10_is_named_in_its_row(page, site_url):
+    """The sentence the grader says about a known slip (workbook.bank.pose_graph_slips) reaches the page."""
+    ex_data = bank.get("5.10")
+    open_chapter(page, site_url, 5)
+    ex = exercise(page, "5.10")
+    set_editor(page, ex, changed(ex_data, "    new[:, 2] = wrap(new[:, 2])\n", "    new[0] = 0.0\n    new[:, 2] = wrap(new[:, 2])\n"))
+    assert run_build(ex) == "incorrect"
+    assert ex.locator(role("test-result", '[data-passed="false"]')).count() >= 1
+    assert "Pose 0 moved: it is the anchor, so it comes back exactly as given." in ex.locator(role("tests")).inner_text()

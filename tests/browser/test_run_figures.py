@@ -1,4 +1,4 @@
-"""Run figures in the page: after a run of 6.5 and 8.4 the Build widget draws the learner's
+"""Run figures in the page: after a run of 6.5, 8.4 and 5.10 the Build widget draws the learner's
 function beside the reference (role run-figure); the keyboard steps through the cases; the
 picture is named and described for screen readers; a wrong run shows its largest error."""
 
@@ -17,7 +17,7 @@ def figure(ex):
     return ex.locator(role("run-figure"))
 
 
-@pytest.mark.parametrize("chapter, ex_id", [(6, "6.5"), (8, "8.4")])
+@pytest.mark.parametrize("chapter, ex_id", [(6, "6.5"), (8, "8.4"), (5, "5.10")])
 def test_a_correct_run_draws_the_learners_function(page: Page, site_url, chapter, ex_id):
     open_chapter(page, site_url, chapter)
     ex = exercise(page, ex_id)

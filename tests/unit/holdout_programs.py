@@ -8,6 +8,7 @@ some input) and RIGHT ones (correct rewrites in another style). A program is eit
 from __future__ import annotations
 
 import holdout_programs_ekf
+import holdout_programs_se2
 
 ROT = "import math\n\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n"
 EKF = "def ekf_update(x, P, z, R):\n"
@@ -349,3 +350,4 @@ def nav_step(x, P, u, z, landmark, waypoint, dt, Q, R):
 }
 
 WRONG["4.10"], RIGHT["4.10"] = holdout_programs_ekf.WRONG, holdout_programs_ekf.RIGHT
+WRONG["5.10"], RIGHT["5.10"] = holdout_programs_se2.WRONG, holdout_programs_se2.RIGHT

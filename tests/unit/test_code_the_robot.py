@@ -1,4 +1,4 @@
-"""The "Code the robot" Build exercises (1.7, 2.8, 3.10, 5.8, 6.7, 7.8, 8.8, 9.9): the model solution
+"""The "Code the robot" Build exercises (1.7, 2.8, 3.10, 5.8, 5.10, 6.7, 7.8, 8.8, 9.9): the model solution
 passes, NumPy results pass, the starter fails, and each classic slip of the algorithm fails with a verdict
 that names the failing case, what was expected and what came back."""
 
@@ -13,7 +13,7 @@ import pytest
 from workbook import bank
 from workbook_sandbox import harness
 
-IDS = ("1.7", "2.8", "3.10", "5.8", "6.7", "7.8", "8.8", "9.9")
+IDS = ("1.7", "2.8", "3.10", "5.8", "5.10", "6.7", "7.8", "8.8", "9.9")
 
 # Each slip: a change to the model solution (old text -> new text), as a learner would write it.
 SLIPS = {
@@ -45,6 +45,12 @@ SLIPS = {
         "error with the wrong sign": [("z - (x[j] - x[i])", "(x[j] - x[i]) - z"),
                                       ("((i, 1.0), (j, -1.0))", "((i, -1.0), (j, 1.0))")],
         "singular H not refused": [("if det == 0:\n        return None", "")],
+    },
+    "5.10": {
+        "step taken uphill": [("np.linalg.solve(H[3:, 3:], -b[3:])", "np.linalg.solve(H[3:, 3:], b[3:])")],
+        "edge angle error not wrapped": [("        e[2] = wrap(e[2])\n", "")],
+        "result angles not wrapped": [("    new[:, 2] = wrap(new[:, 2])\n", "")],
+        "pose 0 not anchored": [("dx[3:] = np.linalg.solve(H[3:, 3:], -b[3:])", "dx = np.linalg.lstsq(H, -b, rcond=None)[0]")],
     },
     "6.7": {
         "elbow sign flipped": [("if elbow_up:", "if not elbow_up:")],
@@ -109,7 +115,7 @@ def slipped(ex, changes) -> str:
 
 def test_the_functions_are_the_new_ones():
     assert [bank.get(i).function for i in IDS] == ["relative_pose", "rotate_axis_angle", "ekf_predict",
-                                                   "gauss_newton_step", "ik_2link", "jacobian_2link",
+                                                   "gauss_newton_step", "gauss_newton_se2", "ik_2link", "jacobian_2link",
                                                    "pid_step_clamped", "nav_step"]
 
 

@@ -67,6 +67,8 @@ class Build(Exercise):
     random_args: Callable[[random.Random], tuple] | None = None
     edge_cases: tuple[tuple, ...] = ()
     describe: Callable[..., str] | None = None  # how a case is named in a test row (default: the call)
+    # what is wrong with a value that disagrees, in words: diagnose(args, got, want) -> a sentence, or ""
+    diagnose: Callable[[tuple, Any, Any], str] | None = None
     hidden_count: int = 20
     rel_tol: float = 1e-6
     abs_tol: float = 1e-9
@@ -115,8 +117,15 @@ class Build(Exercise):
         for i, args in enumerate(arguments):
             want = _numbers(drive(self.reference, *copy.deepcopy(args)))
             name = self.describe(*args) if self.describe else f"{self.function}({', '.join(show(a) for a in args)})"
-            out.append(Case("example" if i < len(self.examples) else "hidden", name, want))
+            out.append(Case("example" if i < len(self.examples) else "hidden", name, want, self._diagnose(args, want)))
         return out
+
+    def _diagnose(self, args: list, want: Any) -> Callable[[Any], str] | None:
+        """The case's diagnosis (:attr:`diagnose` bound to its arguments and the reference's value)."""
+        if self.diagnose is None:
+            return None
+        diagnose = self.diagnose
+        return lambda got: diagnose(tuple(args), got, want)
 
     def judge(self, report: Any) -> Verdict:
         """The verdict on a run, from the sandbox's report (JSON text or a dict)."""
