@@ -1,12 +1,15 @@
 """The "Code the robot" Build exercises in the page: a correct solution shows every test passing; a
 wrong one shows the failing case (its input, what was expected, what came back) and marks the learner's
-line when their code raised."""
+line when their code raised.
+
+The tests share the module's one tab (``tour``, one grader and one sandbox for them all): each
+sets its own exercise's code before every run, and no test reads another's records."""
 
 from __future__ import annotations
 
 import pytest
 
-from helpers import exercise, open_chapter, role, run_build, set_editor
+from helpers import exercise, role, run_build, set_editor
 from workbook import bank
 
 # Per exercise: a slip that gives wrong values (old -> new in the model solution), and one that raises,
@@ -46,9 +49,9 @@ def rows(ex):
 
 
 @pytest.mark.parametrize("ex_id", list(WRONG))
-def test_code_the_robot_in_the_page(page, site_url, ex_id):
+def test_code_the_robot_in_the_page(tour, ex_id):
     ex_data = bank.get(ex_id)
-    open_chapter(page, site_url, int(ex_id.split(".")[0]))
+    page = tour(int(ex_id.split(".")[0]))
     ex = exercise(page, ex_id)
     assert ex.get_attribute("data-kind") == "build"
 
@@ -77,10 +80,10 @@ def test_code_the_robot_in_the_page(page, site_url, ex_id):
     assert marked.count() == 1 and line_text.strip() in marked.inner_text()
 
 
-def test_a_slip_of_5_10_is_named_in_its_row(page, site_url):
+def test_a_slip_of_5_10_is_named_in_its_row(tour):
     """The sentence the grader says about a known slip (workbook.bank.pose_graph_slips) reaches the page."""
     ex_data = bank.get("5.10")
-    open_chapter(page, site_url, 5)
+    page = tour(5)
     ex = exercise(page, "5.10")
     set_editor(page, ex, changed(ex_data, "    new[:, 2] = wrap(new[:, 2])\n", "    new[0] = 0.0\n    new[:, 2] = wrap(new[:, 2])\n"))
     assert run_build(ex) == "incorrect"
