@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Print the Chromium the tests and the bench drive. Exits 1 when there is none.
-Used by the Makefile, tests/browser/conftest.py and scripts/bench.
+"""Print the Chromium the tests drive. Exits 1 when there is none. Used by the Makefile,
+tests/browser/conftest.py and scripts/bench (which asks for the full browser, as learners run it).
 
 Headless Chromium comes in two builds of one engine: the full browser run without a window,
 and the *headless shell* (``chromium-headless-shell``, what Playwright itself launches for

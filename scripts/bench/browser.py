@@ -27,9 +27,9 @@ class Browsers:
         self.pw, self.server = pw, server
         self.site = server.origin + SUBPATH
         self.baseline_url = server.origin + BASELINE_PATH
-        exe = find_browser()
+        exe = find_browser(shell=False)  # the whole browser, as learners run it (the tests take the lighter shell)
         if not exe:
-            raise BenchError("no Chromium found: run `make browser` (or `playwright install chromium`)")
+            raise BenchError("no Chromium found: install Debian's chromium (or `playwright install chromium`)")
         self.executable = exe
         self.version = ""
         self.service_workers = "allow"  # "block" measures the HTTP cache alone
