@@ -2,7 +2,9 @@
 the typeset reading of a formula, and the worked answer at the end of a derivation.
 
 Expected values come from the grading package (the bank and its keys), never
-from numbers typed here.
+from numbers typed here. The tests share the module's one tab (``tour``) except the one that
+reloads and resets progress: each sets the answer it checks (3.8's key is carried from 3.7,
+which the test before it leaves right).
 """
 
 from __future__ import annotations
@@ -39,10 +41,10 @@ def wrong_entries(ex, rows) -> set[tuple[int, int]]:
     return {tuple(p) for p in ex.check(grid_text(rows)).data.get("wrong", [])}
 
 
-def test_a_matrix_is_filled_by_keyboard_and_graded_correct(page, site_url):
+def test_a_matrix_is_filled_by_keyboard_and_graded_correct(tour):
     ex = bank.get("0.7")  # R(30°)·R(60°), 2×2
     key = grid_text(ex.answer.cleaned)
-    open_chapter(page, site_url, 0)
+    page = tour(0)
     el = exercise(page, ex.id)
     assert el.get_attribute(ATTR.answerShape) == "2x2"
     entry(el, 1, 1).click()
@@ -66,12 +68,12 @@ def test_a_matrix_is_filled_by_keyboard_and_graded_correct(page, site_url):
     assert marked_entries(el) == set()
 
 
-def test_a_wrong_matrix_marks_exactly_the_wrong_entries_and_names_the_slip(page, site_url):
+def test_a_wrong_matrix_marks_exactly_the_wrong_entries_and_names_the_slip(tour):
     ex = bank.get("3.7")  # F facing north, 3×3; its transpose differs in two entries
     transposed = [list(col) for col in zip(*ex.answer.cleaned)]
     expected = wrong_entries(ex, transposed)
     assert len(expected) == 2
-    open_chapter(page, site_url, 3)
+    page = tour(3)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
     fill_matrix(el, grid_text(transposed))
@@ -91,9 +93,9 @@ def test_a_wrong_matrix_marks_exactly_the_wrong_entries_and_names_the_slip(page,
     assert marked_entries(el) == set()  # the marks go once the entries are right
 
 
-def test_an_empty_entry_is_marked_and_costs_no_attempt(page, site_url):
+def test_an_empty_entry_is_marked_and_costs_no_attempt(tour):
     ex = bank.get("0.7")
-    open_chapter(page, site_url, 0)
+    page = tour(0)
     el = exercise(page, ex.id)
     rows = grid_text(ex.answer.cleaned)
     rows[1][0] = ""
@@ -102,10 +104,10 @@ def test_an_empty_entry_is_marked_and_costs_no_attempt(page, site_url):
     assert marked_entries(el) == {(2, 1)}
 
 
-def test_a_pasted_matrix_fills_the_grid(page, site_url):
+def test_a_pasted_matrix_fills_the_grid(tour):
     ex = bank.get("3.8")  # P⁻, 3×3
     key = grid_text(ex.answer.cleaned)
-    open_chapter(page, site_url, 3)
+    page = tour(3)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
     empty = [[""] * 3 for _ in range(3)]
@@ -122,9 +124,9 @@ def test_a_pasted_matrix_fills_the_grid(page, site_url):
     assert check(el) == STATE.correct
 
 
-def test_a_pasted_vector_of_the_wrong_size_is_refused_with_a_message(page, site_url):
+def test_a_pasted_vector_of_the_wrong_size_is_refused_with_a_message(tour):
     ex = bank.get("9.8")  # a 3×1 column
-    open_chapter(page, site_url, 9)
+    page = tour(9)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
     paste(entry(el, 1, 1), "1 2; 3 4")
@@ -133,9 +135,9 @@ def test_a_pasted_vector_of_the_wrong_size_is_refused_with_a_message(page, site_
     assert entry_values(el) == [[""], [""], [""]]
 
 
-def test_a_formula_is_read_back_typeset_and_an_equivalent_form_is_right(page, site_url):
+def test_a_formula_is_read_back_typeset_and_an_equivalent_form_is_right(tour):
     ex = bank.get("6.6")  # x(θ1, θ2)
-    open_chapter(page, site_url, 6)
+    page = tour(6)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
     assert el.get_attribute(ATTR.answerKind) == "expression"
@@ -160,8 +162,8 @@ def test_a_formula_is_read_back_typeset_and_an_equivalent_form_is_right(page, si
     assert "theta1" in el.locator(role("feedback")).inner_text()
 
 
-def test_a_derivation_ends_with_the_answer_as_typed(page, site_url):
-    open_chapter(page, site_url, 7)
+def test_a_derivation_ends_with_the_answer_as_typed(tour):
+    page = tour(7)
     shaped = bank.get("7.6")
     el = exercise(page, shaped.id)
     el.scroll_into_view_if_needed()
@@ -215,14 +217,15 @@ def test_a_matrix_answer_comes_back_after_a_reload_and_through_a_progress_file(p
     expect(entry(el, 2, 1)).to_have_value(key[1][0])
 
 
-def test_a_whole_matrix_typed_into_one_entry_is_read_as_a_paste(page, site_url):
+def test_a_whole_matrix_typed_into_one_entry_is_read_as_a_paste(tour):
     """Issue 28: typing (not pasting) [[0, -1], [1, 0]] into one entry was refused, while the label invites pasting."""
     ex = bank.get("0.7")  # 2×2
     key = grid_text(ex.answer.cleaned)
     whole = "[" + ", ".join("[" + ", ".join(row) + "]" for row in key) + "]"
-    open_chapter(page, site_url, 0)
+    page = tour(0)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
+    fill_matrix(el, [[""] * 2 for _ in range(2)])  # an empty grid (the tab's earlier tests answered 0.7)
 
     entry(el, 1, 1).click()
     page.keyboard.type(whole)
