@@ -13,7 +13,7 @@ import pytest
 from playwright.sync_api import Locator, Page, expect
 
 from conftest import ROOT
-from formula_cues import check_formulas, formulas_ready
+from formula_cues import WIDER_THAN_BOX, check_formulas, formulas_ready
 from helpers import CHAPTERS, exercise, fill_matrix, open_chapter, role, settle, wait_runtime
 from workbook import bank
 from workbook.number_format import fmt
@@ -109,18 +109,24 @@ def test_axe_finds_no_violation_on_any_page(page, site_url, path):
     """Every page in both palettes: loaded in one (light for every other page, dark for the rest,
     so both are checked as loaded) with every rule, then switched to the other as the palette
     toggle does, with the rules a palette can change (the page's markup is the same in both).
-    On the same visit, at 1280 px: no formula is cut without its cue."""
+    On the same visit, at 1280 px: no formula is cut without its cue, and on a chapter as loaded
+    no display formula is wider than its box."""
     first = "dark" if EVERY_PAGE.index(path) % 2 else "light"
     page.emulate_media(color_scheme=first)
     page.goto(site_url + path)
     assert page.evaluate("document.body.getAttribute('data-md-color-scheme')") == SCHEME[first]
     settle_page(page)
+    found = {}
+    if path in CHAPTERS.values():
+        formulas_ready(page)
+        wide = page.evaluate(WIDER_THAN_BOX)
+        if wide:
+            found["display formulas wider than their box at 1280 px"] = wide
     if path == "practise/":  # with an exercise on the card
         page.get_by_role("button", name="Practise another").click()
         wait_practise_card(page)
     open_all_help(page)
     formulas_ready(page)
-    found = {}
     cut = check_formulas(page)["bad"]
     if cut:
         found["formulas cut without their cue at 1280 px"] = cut

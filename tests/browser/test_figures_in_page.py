@@ -56,9 +56,9 @@ def slider_value(page, param: str) -> float:
     return float(figure(page).locator(f'input[data-param="{param}"]').input_value())
 
 
-def test_every_chapter_page_has_a_figure(page, site_url):
+def test_every_chapter_page_has_a_figure(tour):
     for n in CHAPTERS:
-        open_chapter(page, site_url, n, wait_ready=False)
+        page = tour(n)
         fig = figure(page)
         assert fig.count() == 1
         assert fig.locator("svg").count() == 1

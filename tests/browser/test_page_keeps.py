@@ -174,25 +174,6 @@ def test_a_variant_link_for_another_chapter_links_to_it_there(page, site_url):
     page.wait_for_function("() => document.querySelector('[data-exercise-id=\"7.7\"]')?.dataset.variant === '5'")
 
 
-OVERFLOWING = """() => [...document.querySelectorAll('.md-typeset .katex-display')]
-  .filter((d) => d.getClientRects().length && !d.closest('[hidden], details:not([open])'))
-  .map((d) => { const box = d.closest('div.arithmatex') || d; const k = d.querySelector('.katex');
-                return [box.clientWidth, k.scrollWidth, d.textContent.slice(0, 60)]; })
-  .filter(([room, width]) => width > room + 1)"""
-
-
-def test_no_display_formula_is_cut_at_1280_px(page, site_url):
-    page.set_viewport_size({"width": 1280, "height": 800})
-    cut = {}
-    for n in CHAPTERS:
-        open_chapter(page, site_url, n, wait_ready=False)
-        page.wait_for_function("() => [...document.querySelectorAll('.md-typeset div.arithmatex')].every((d) => d.dataset.rendered)")
-        over = page.evaluate(OVERFLOWING)
-        if over:
-            cut[n] = over
-    assert cut == {}, cut
-
-
 FOCUSED = """() => {
   const focused = document.activeElement;
   if (!focused || focused === document.body) return null;
