@@ -1,6 +1,7 @@
-"""How many variants the many-draw tests take (test_variants, test_printed, test_steps,
-test_steps_bank): all of them in ``make test`` and CI; a share of them in ``make test-unit``, the
-developer's quick loop (``WORKBOOK_DRAW_SHARE=0.2``), which still draws from every exercise."""
+"""How many cases the many-case tests take (the variants of test_variants, test_printed,
+test_steps and test_steps_bank; the hostile requests of test_fuzz_api): all of them in ``make
+test`` and CI; a share of them in ``make test-unit``, the developer's quick loop
+(``WORKBOOK_DRAW_SHARE=0.2``), which still draws from every exercise."""
 
 from __future__ import annotations
 

@@ -9,11 +9,12 @@ import random
 
 import pytest
 
+import many_draws
 from workbook import bank
 from workbook.api import handle
 from workbook.contract import ERRORS, OPS, STATUSES
 
-COUNT = 20_000
+COUNT = many_draws.count(20_000)  # all of them in make test; a share in make test-unit
 SEED = 21
 REPLY_CAP = 64_000  # characters; the largest real reply (a figure) is under 9,000
 ERROR_CAP = 1_200

@@ -198,7 +198,7 @@ def test_the_3_7_variant_3_8_names_prints_the_F_it_uses():
             assert f"variant=3.7-{at}" in v.values["set37"], (seed, v.values["set37"])
         else:
             assert "workbook's numbers" in v.values["set37"]
-    assert len(named) >= 150  # 3.8's draws reach many of 3.7's sets, not one
+    assert len(named) >= 0.6 * (DRAWS + 50)  # 3.8's draws reach many of 3.7's sets, not one (150 of 250 in the full suite)
 
 
 def test_a_wrong_3_7_is_carried_into_3_8_only_at_the_set_3_8_names():
