@@ -31,7 +31,8 @@ def _in_world(T_world_base, T_cam_base, p_cam):
 
 def mount_facts() -> dict:
     """The first case: a robot at (2, 1, 0) facing 90°, a camera 0.3 m ahead of the base and 0.5 m up,
-    pitched 30° down; a detection on the floor, 1 m straight ahead of the camera. Where it is, and where the bug puts it."""
+    pitched 30° down; a detection on the floor, 1 m straight ahead of the camera. Where it is, and where
+    the bug puts it."""
     T_world_base, T_cam_base, p_cam = _MOUNT_CASES[0]
     right = _in_world(T_world_base, T_cam_base, p_cam)
     wrong = transform_point(compose(T_world_base, T_cam_base), p_cam)
