@@ -17,8 +17,8 @@ from . import Control, Figure, Readout
 from .svg import Canvas
 
 ELEVATION = math.radians(24)
-BASE_AT = (1.2, 0.6, 0.0)  # where the base stands in the world
-CAM_ON_BASE = (0.4, 0.0, 0.7)  # where the camera sits on the base
+BASE_AT = (0.4, 1.6, 0.0)  # where the base stands in the world
+CAM_ON_BASE = (0.6, 0.0, 0.9)  # where the camera sits on the base
 AXIS = 0.55  # drawn length of a frame's axes (world units)
 COLOURS = ("wb-fig-x", "wb-fig-y", "wb-fig-z")
 
@@ -42,7 +42,7 @@ def chain(yaw_deg: float, tilt_deg: float):
 
     >>> T_wb, T_bc, T_wc = chain(90, 0)
     >>> [round(v, 9) + 0.0 for v in translation_of(T_wc)]
-    [1.2, 1.0, 0.7]
+    [0.4, 2.2, 0.9]
     """
     T_wb = pose(rz(math.radians(yaw_deg)), BASE_AT)
     T_bc = pose(ry(math.radians(tilt_deg)), CAM_ON_BASE)
@@ -56,11 +56,13 @@ def draw(p: dict[str, float]) -> dict:
         return (sum(a * b for a, b in zip(point, right)), sum(a * b for a, b in zip(point, up)))
 
     T_wb, _T_bc, T_wc = chain(p["yaw"], p["tilt"])
-    c = Canvas(420, 360, (-1.0, 2.6), (-0.9, 2.0))
-    for k in range(3):  # the floor's grid lines, for depth
-        c.line(at((k * 0.8 - 0.4, -0.4, 0)), at((k * 0.8 - 0.4, 1.6, 0)), "wb-fig-muted wb-fig-thin wb-fig-dash")
-        c.line(at((-0.4, k * 0.8 - 0.4, 0)), at((2.0, k * 0.8 - 0.4, 0)), "wb-fig-muted wb-fig-thin wb-fig-dash")
     origins = [(0.0, 0.0, 0.0), translation_of(T_wb), translation_of(T_wc)]
+    middle = at([sum(o[i] for o in origins) / 3 + (0.3 if i == 2 else 0.0) for i in range(3)])
+    c = Canvas(420, 360, (middle[0] - 1.75, middle[0] + 1.75), (middle[1] - 1.5, middle[1] + 1.5))
+    for k in range(4):  # the floor's grid lines, for depth
+        c.line(at((k * 0.6 - 0.6, -0.6, 0)), at((k * 0.6 - 0.6, 2.4, 0)), "wb-fig-muted wb-fig-thin wb-fig-dash")
+    for k in range(6):
+        c.line(at((-0.6, k * 0.6 - 0.6, 0)), at((1.2, k * 0.6 - 0.6, 0)), "wb-fig-muted wb-fig-thin wb-fig-dash")
     c.line(at(origins[0]), at(origins[1]), "wb-fig-muted wb-fig-dash")
     c.line(at(origins[1]), at(origins[2]), "wb-fig-muted wb-fig-dash")
     frames = (("world", [[1.0, 0.0, 0.0, 0.0], [0.0, 1.0, 0.0, 0.0], [0.0, 0.0, 1.0, 0.0], [0.0, 0.0, 0.0, 1.0]]),
