@@ -12,7 +12,7 @@ import math
 
 from ..number_format import readout_matrix, readout_vector
 from ..reference.rotation3d import quat_from_matrix, ry, rz
-from ..reference.se3 import compose, pose, rotation_of, to_xyzw, translation_of, transform_point
+from ..reference.se3 import compose, pose, rotation_of, to_xyzw, transform_point, translation_of
 from . import Control, Figure, Readout
 from .svg import Canvas
 
