@@ -128,3 +128,13 @@ def test_the_angle_step_names_the_long_way_round():
         long_way = 360 - v.answer.key
         verdict = _grade(v, v.answer.typed(long_way))
         assert verdict["tag"] == "slip" and "long way round" in verdict["message"], (seed, verdict)
+
+
+def test_the_words_that_depend_on_the_numbers_stay_true():
+    """10.4's statement says q₁ has a negative w and its derivation that q₀ · q₁ is negative; 10.5's that
+    q₀ · q₁ is negative: in every draw, as printed."""
+    for seed in SEEDS:
+        v = bank.get("10.4").variant(seed)
+        assert float(v.values["q1"].split(",\\ ")[0]) < 0, seed
+        assert float(v.values["step_dot"]) < 0, seed
+        assert float(bank.get("10.5").variant(seed).values["step_dot"]) < 0, seed

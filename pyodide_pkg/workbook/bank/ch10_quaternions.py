@@ -230,7 +230,7 @@ EXERCISES = (
         id="10.4",
         title="The angle between two orientations",
         spec=number(label="θ", unit="°", angle="deg"),
-        vary=Vary(_angle, Param("a", 60, 0, 180, 30), Param("b", 120, 0, 180, 30),
+        vary=Vary(_angle, Param("a", 60, 0, 180, 30), Param("b", 120, 0, 150, 30),  # b < 180: w < 0
                   Choice("B", "z", ("x", "y", "z")), valid=_angle_ok),
         steps=(Step("dot", "q₀ · q₁", number(label="q₀ · q₁, the four-dimensional dot product")),
                Step("half", "θ/2", number(label="θ/2 = arccos|q₀ · q₁|", unit="°", angle="deg"))),
