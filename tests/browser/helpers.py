@@ -20,7 +20,7 @@ CHAPTERS = {
     0: "chapters/00-rotations-2d/", 1: "chapters/01-transforms/", 2: "chapters/02-rotations-3d/",
     3: "chapters/03-ekf-predict/", 4: "chapters/04-ekf-update/", 5: "chapters/05-pose-graph-slam/",
     6: "chapters/06-arm-kinematics/", 7: "chapters/07-jacobians/", 8: "chapters/08-pid-control/",
-    9: "chapters/09-capstone/",
+    9: "chapters/09-capstone/", 10: "chapters/10-poses-3d/",
 }
 
 

@@ -36,6 +36,9 @@ WRONG = {
             (" if dt > 0 else 0.0", ""), "d = Kd * (e - e_prev) / dt  # dt = 0: no time passed"),
     "9.9": (("if z is not None:", "if False:"),
             ("y = [z[0] - r,", "y = [z[0] - r_pred,"), "y = [z[0] - r_pred, wrap(z[1] - (math.atan2(dy, dx) - x[2]))]"),
+    "10.8": (("if d < 0:  # -q1", "if False:  # -q1"),
+             ("omega = math.acos(min(d, 1.0))", "omega = math.acos(min(d, 1.0)) / zero"),
+             "omega = math.acos(min(d, 1.0)) / zero"),
 }
 
 

@@ -173,3 +173,28 @@ def test_ch9_capstone(tour):
     text = press(page, "step", "ArrowRight", "estimate")
     s = capstone.simulate(True)[21]
     assert_close(text, [s.estimate[0], s.estimate[1], round(math.degrees(s.estimate[2]), 1)])
+
+
+def test_ch10_poses_3d_chain_and_both_quaternion_orders(tour):
+    """Chapter 10: the base yawed one step from the keyboard, the camera tilted to its end: the camera's
+    position is T_world_base · T_base_cam's, and the two quaternion readouts are one rotation in the
+    two storage orders."""
+    from workbook.figures.poses_3d import chain as pose_chain
+    from workbook.reference.se3 import rotation_of, translation_of
+
+    page = tour(10)  # the module's one tab: one booted grader for these tests
+    press(page, "yaw", "ArrowRight", "p")
+    assert slider_value(page, "yaw") == 35
+    wxyz = press(page, "tilt", "End", "wxyz")  # the tilt turns the camera about its own origin
+    _wb, _bc, T_wc = pose_chain(35, 60)
+    text = readout(page, "p")
+    assert_close(text, translation_of(T_wc))
+    q = quat_from_matrix(rotation_of(T_wc))
+    assert_close(wxyz, q)
+    assert_close(readout(page, "xyzw"), (*q[1:], q[0]))
+    before = figure(page).locator("svg").inner_html()
+    figure(page).locator('input[type="range"][data-param="view"]').focus()
+    page.keyboard.press("ArrowLeft")
+    page.wait_for_function("([selector, before]) => document.querySelector(selector).innerHTML !== before",
+                           arg=[role("figure") + " svg", before])
+    assert readout(page, "p") == text  # turning the view moves no frame

@@ -8,6 +8,7 @@ some input) and RIGHT ones (correct rewrites in another style). A program is eit
 from __future__ import annotations
 
 import holdout_programs_ekf
+import holdout_programs_poses
 import holdout_programs_se2
 
 ROT = "import math\n\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n"
@@ -351,3 +352,4 @@ def nav_step(x, P, u, z, landmark, waypoint, dt, Q, R):
 
 WRONG["4.10"], RIGHT["4.10"] = holdout_programs_ekf.WRONG, holdout_programs_ekf.RIGHT
 WRONG["5.10"], RIGHT["5.10"] = holdout_programs_se2.WRONG, holdout_programs_se2.RIGHT
+WRONG["10.8"], RIGHT["10.8"] = holdout_programs_poses.WRONG, holdout_programs_poses.RIGHT

@@ -1,4 +1,4 @@
-"""The bug hunts from real robots (Debug 0.8, 2.9, 3.11, 3.12, 4.9, 6.8, 7.9, 8.9) and Build's fresh hidden cases.
+"""The bug hunts from real robots (Debug 0.8, 2.9, 3.11, 3.12, 4.9, 6.8, 7.9, 8.9, 10.9, 10.10) and Build's fresh hidden cases.
 
 test_bank.py proves for every Debug exercise that the program fails its cases, agrees
 with the reference once its marked line is fixed, and that every other line has a note.
@@ -24,7 +24,7 @@ from workbook.reference.arm import forward_kinematics_2link
 from workbook.reference.pid import simulate_saturated
 from workbook.reference.rotation3d import quat_norm
 
-HUNTS = ("0.8", "2.9", "3.11", "3.12", "4.9", "6.8", "7.9", "8.9")
+HUNTS = ("0.8", "2.9", "3.11", "3.12", "4.9", "6.8", "7.9", "8.9", "10.9", "10.10")
 
 
 def programs(exercise_id: str):
@@ -131,6 +131,32 @@ def test_the_sign_error_calls_the_sweeping_arm_still():
     straight = (1.0, 1.0, 0.0, 0.0, 1.0, 0.0)
     assert buggy(*straight)[1] == 0.0
     assert math.isclose(fixed(*straight)[1], 2.0)  # (L1 + L2)·ω1
+
+
+def test_the_mount_used_backwards_misplaces_the_detection():
+    """10.9: with T_cam_base where T_base_cam belongs, the floor point 1 m ahead of the camera leaves the
+    floor and lands where the explanation says; the fix puts it where the reference does."""
+    ex, buggy, fixed = programs("10.9")
+    T_world_base, T_cam_base, p_cam = ex.cases[0]
+    right, wrong = fixed(T_world_base, T_cam_base, p_cam), buggy(T_world_base, T_cam_base, p_cam)
+    assert close(right, ex.reference(T_world_base, T_cam_base, p_cam))
+    assert abs(right[2]) < 1e-12 and abs(wrong[2]) > 0.05  # on the floor; the bug lifts it off
+    assert math.dist(right, wrong) > 0.3
+    for value in (*right, *wrong, math.dist(right, wrong)):
+        assert fmt(value) in ex.bug
+    for args in ex.cases:
+        assert close(fixed(*args), ex.reference(*args)) and not close(buggy(*args), ex.reference(*args))
+
+
+def test_scalar_first_reads_the_identity_as_a_half_turn():
+    """10.10: the identity as ROS writes it, (0, 0, 0, 1), read scalar first is a half turn about z:
+    the bug reports 180°, the fix 0°, and both numbers are the explanation's."""
+    ex, buggy, fixed = programs("10.10")
+    assert math.isclose(abs(buggy((0.0, 0.0, 0.0, 1.0))[2]), math.pi)
+    assert fixed((0.0, 0.0, 0.0, 1.0)) == (1.0, 0.0, 0.0)
+    assert "facing 180° instead of 0°" in ex.bug
+    for args in ex.cases:
+        assert close(fixed(*args), ex.reference(*args))
 
 
 @pytest.mark.parametrize("exercise_id", HUNTS)

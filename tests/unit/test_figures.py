@@ -62,7 +62,7 @@ def settings(fig):
 
 def test_every_chapter_has_a_figure():
     placed = {}
-    for page in sorted((ROOT / "docs" / "chapters").glob("0*.md")):
+    for page in sorted((ROOT / "docs" / "chapters").glob("[0-9][0-9]-*.md")):
         text = page.read_text(encoding="utf-8")
         names = re.findall(r"^::: figure (\S+)\s*$", text, re.M)
         assert names, f"{page.name} has no figure"

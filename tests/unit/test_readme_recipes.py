@@ -117,16 +117,16 @@ needs_site = pytest.mark.skipif(not (ROOT / "docs" / "assets" / "dist").is_dir()
 def test_adding_a_chapter_as_readme_says_builds(tmp_path):
     copy_repo(tmp_path)
     touched = follow("Adding a chapter", tmp_path)
-    assert touched == ["pyodide_pkg/workbook/reference/odometry.py", "pyodide_pkg/workbook/bank/ch10_odometry.py",
-                       "docs/chapters/10-odometry.md", "mkdocs.yml"]
-    found = build(tmp_path, "10.1")
-    assert found["kind"] == "derive" and found["chapter"] == ["10.1"] and found["key"] == "correct"
-    page = (tmp_path / "site" / "chapters" / "10-odometry" / "index.html").read_text(encoding="utf-8")
-    assert 'data-exercise-id="10.1"' in page
+    assert touched == ["pyodide_pkg/workbook/reference/odometry.py", "pyodide_pkg/workbook/bank/ch11_odometry.py",
+                       "docs/chapters/11-odometry.md", "mkdocs.yml"]
+    found = build(tmp_path, "11.1")
+    assert found["kind"] == "derive" and found["chapter"] == ["11.1"] and found["key"] == "correct"
+    page = (tmp_path / "site" / "chapters" / "11-odometry" / "index.html").read_text(encoding="utf-8")
+    assert 'data-exercise-id="11.1"' in page
     home = (tmp_path / "site" / "index.html").read_text(encoding="utf-8")
-    assert 'href="chapters/10-odometry/"' in home, "the chapter is not in the menu"
+    assert 'href="chapters/11-odometry/"' in home, "the chapter is not in the menu"
     chapters = json.loads((tmp_path / "site" / "assets" / "exercises.json").read_text(encoding="utf-8"))["chapters"]
-    assert chapters[-1]["ids"] == ["10.1"] and chapters[-1]["url"] == "chapters/10-odometry/"
+    assert chapters[-1]["ids"] == ["11.1"] and chapters[-1]["url"] == "chapters/11-odometry/"
 
 
 @needs_site
