@@ -58,4 +58,5 @@ WIDER_THAN_BOX = """() => [...document.querySelectorAll('.md-typeset .katex-disp
   .filter((d) => d.getClientRects().length && !d.closest('[hidden], details:not([open])'))
   .map((d) => { const box = d.closest('div.arithmatex') || d; const k = d.querySelector('.katex');
                 return [box.clientWidth, k.scrollWidth, d.textContent.slice(0, 60)]; })
-  .filter(([room, width]) => width > room + 1)"""
+  .filter(([room, width]) => width > room + 1)
+  .map(([room, width, text]) => `${text} (${width} px in ${room} px)`)"""
