@@ -148,7 +148,7 @@ scorm: $(SCORM_ZIPS)
 browser: $(BIN)/.test
 	@if $(BIN)/python scripts/find_browser.py --shell; then :; \
 	elif command -v apt-get >/dev/null; then \
-	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo sudo ); \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo "sudo -n" ); \
 	  echo "make browser: installing Debian's headless Chromium: $$SUDO apt-get install chromium-headless-shell"; \
 	  ( $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium-headless-shell >/dev/null ) || \
 	    echo "make browser: could not install it"; fi
