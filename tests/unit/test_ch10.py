@@ -4,15 +4,14 @@ one, and the checked steps judge two wrong steps and a right step after a wrong 
 
 from __future__ import annotations
 
-import json
 import random
 
 import pytest
 
 import many_draws
 from moved import moved
+from through_api import grade
 from workbook import bank
-from workbook.api import handle
 from workbook.reference.se3 import slerp
 
 DERIVE = [ex for ex in bank.chapter(10) if ex.kind == "derive"]
@@ -21,13 +20,6 @@ QUATERNIONS = ("10.3", "10.5")
 SEEDS = range(many_draws.count(150))
 
 
-def _grade(v, answer, step=None, sent=None):
-    request = {"op": "grade", "exercise": v.id, "variant": v.seed, "answer": answer, "steps": sent or {}}
-    if step is not None:
-        request["step"] = step
-    reply = json.loads(handle(json.dumps(request)))
-    assert reply["ok"], reply
-    return reply["value"]
 
 
 def _neg(value):
@@ -44,17 +36,17 @@ def test_each_slip_is_said_for_exactly_that_slip_and_never_for_the_key(ex):
     said = 0
     for seed in SEEDS:
         v = ex.variant(seed)
-        right = _grade(v, v.answer.typed(v.answer.key))
+        right = grade(v, v.answer.typed(v.answer.key))
         assert right["status"] == "correct" and right["tag"] != "slip", (seed, right)
         if ex.id in QUATERNIONS:  # −q is the same rotation
-            assert _grade(v, v.answer.typed(_neg(v.answer.key)))["status"] == "correct", seed
+            assert grade(v, v.answer.typed(_neg(v.answer.key)))["status"] == "correct", seed
         messages = [s.message for s in v.answer.slips]
         for slip in v.answer.slips:
-            verdict = _grade(v, v.answer.typed(slip.value))
+            verdict = grade(v, v.answer.typed(slip.value))
             assert (verdict["status"], verdict["tag"]) == ("incorrect", "slip"), (seed, slip.message, verdict)
             assert verdict["message"] == slip.message, seed
             said += 1
-        plain = _grade(v, v.answer.typed(moved(v.answer.key, random.Random(seed))))
+        plain = grade(v, v.answer.typed(moved(v.answer.key, random.Random(seed))))
         assert plain["status"] == "incorrect" and plain["message"] not in messages, (seed, plain)
     assert said >= len(SEEDS)
 
@@ -66,9 +58,9 @@ def test_each_step_slip_is_said_with_the_steps_before_it_right(ex):
         sent = {}
         for step in v.steps:
             kind = v.step_answers[step.name]
-            assert _grade(v, kind.typed(kind.key), step.name, sent)["status"] == "correct", (seed, step.name)
+            assert grade(v, kind.typed(kind.key), step.name, sent)["status"] == "correct", (seed, step.name)
             for slip in kind.slips:
-                verdict = _grade(v, kind.typed(slip.value), step.name, sent)
+                verdict = grade(v, kind.typed(slip.value), step.name, sent)
                 assert (verdict["tag"], verdict["message"]) == ("slip", slip.message), (seed, step.name, verdict)
             sent[step.name] = kind.typed(kind.key)
 
@@ -89,7 +81,7 @@ def test_two_wrong_steps_and_a_right_step_after_a_wrong_one(ex):
             carried2 = v.carried_steps({first: wrong1})[second]
         except ArithmeticError:
             continue
-        right_second = _grade(v, k2.typed(k2.key), second, {first: k1.typed(wrong1)})
+        right_second = grade(v, k2.typed(k2.key), second, {first: k1.typed(wrong1)})
         assert right_second["status"] == "correct", (seed, right_second)
         wrong2 = moved(carried2.key, rng)
         if carried2.check(carried2.typed(wrong2)).status == "correct" or k2.check(k2.typed(wrong2)).status == "correct":
@@ -101,7 +93,7 @@ def test_two_wrong_steps_and_a_right_step_after_a_wrong_one(ex):
             continue
         if v.answer.check(v.answer.typed(final.key)).status == "correct":
             continue
-        verdict = _grade(v, v.answer.typed(final.key), sent=sent)
+        verdict = grade(v, v.answer.typed(final.key), sent=sent)
         assert verdict["tag"] == "carried" and verdict["data"]["carried"]["step"] == second, (seed, verdict)
         checked += 1
     assert checked >= len(SEEDS) // 2
@@ -126,7 +118,7 @@ def test_the_angle_step_names_the_long_way_round():
     for seed in SEEDS:
         v = ex.variant(seed)
         long_way = 360 - v.answer.key
-        verdict = _grade(v, v.answer.typed(long_way))
+        verdict = grade(v, v.answer.typed(long_way))
         assert verdict["tag"] == "slip" and "long way round" in verdict["message"], (seed, verdict)
 
 

@@ -16,7 +16,6 @@ v, dt and F that 3.8 uses, and 3.8's key is what 3.7's printed F, read back, giv
 
 from __future__ import annotations
 
-import json
 import math
 import random
 
@@ -24,8 +23,8 @@ import pytest
 
 import many_draws
 from moved import moved
+from through_api import grade
 from workbook import bank, chains, steps
-from workbook.api import handle
 from workbook.bank import ch3_whole_matrices
 from workbook.number_format import bmatrix
 
@@ -82,13 +81,6 @@ EXPECTED = {"1.6": _inverse, "3.7": _north, "4.3": _slope, "4.7": _jacobian}
 STEPS = {"1.6": ["RT", "tinv"], "3.7": ["move", "col"], "4.3": ["d", "drdx"], "4.7": ["d", "bearing"]}
 
 
-def _grade(v, answer, step=None, sent=None):
-    request = {"op": "grade", "exercise": v.id, "variant": v.seed, "answer": answer, "steps": sent or {}}
-    if step is not None:
-        request["step"] = step
-    reply = json.loads(handle(json.dumps(request)))
-    assert reply["ok"], reply
-    return reply["value"]
 
 
 def _agrees(kind, value) -> bool:
@@ -144,12 +136,12 @@ def test_a_wrong_step_is_carried_into_every_later_step_and_the_answer(ex_id):
                 right = v.step_answers[after]
                 if _agrees(right, keys[after]):
                     continue
-                said = _grade(v, right.typed(keys[after]), after, sent)
+                said = grade(v, right.typed(keys[after]), after, sent)
                 assert (said["status"], said["tag"], said["data"]["carried"]["step"]) == ("incorrect", "carried", name), \
                     (seed, name, after, said)
-                assert _grade(v, right.typed(right.key), after, sent)["status"] == "correct", (seed, after)
+                assert grade(v, right.typed(right.key), after, sent)["status"] == "correct", (seed, after)
             if not _agrees(v.answer, final):
-                said = _grade(v, v.answer.typed(final), sent=sent)
+                said = grade(v, v.answer.typed(final), sent=sent)
                 assert (said["status"], said["tag"], said["data"]["carried"]["step"]) == ("incorrect", "carried", name), \
                     (seed, name, said)
                 carried[name] += 1
