@@ -56,7 +56,7 @@ if __name__ == "__main__":
         if os.environ.get("WORKBOOK_CHROMIUM"):
             sys.exit(0)
         path = find_browser()
-        sys.exit(0 if path and Path(path).name in (*SHELLS, "headless_shell") else 1)
+        sys.exit(0 if path and Path(path).name in SHELLS else 1)
     path = find_browser()
     if not path:
         sys.exit(1)

@@ -24,6 +24,7 @@ import pytest
 import many_draws
 from exercise_text import load_all  # docs/hooks/exercise_text.py
 from moved import moved
+from through_api import grade
 from workbook import bank, chains, steps
 from workbook.api import handle
 
@@ -43,15 +44,6 @@ def test_enough_exercises_can_be_worked_in_steps():
     assert len(STEPPED) >= 15
     for ex in STEPPED:
         assert len(ex.steps) >= 2, f"{ex.id}: a derivation worked in steps has at least two intermediates"
-
-
-def _grade(ex, answer, step=None, sent=None):
-    request = {"op": "grade", "exercise": ex.id, "variant": ex.seed, "answer": answer, "steps": sent or {}}
-    if step is not None:
-        request["step"] = step
-    reply = json.loads(handle(json.dumps(request)))
-    assert reply["ok"], reply
-    return reply["value"]
 
 
 def _variants(ex):
@@ -94,7 +86,7 @@ def test_the_steps_chain_to_the_final_key(ex):
         later = v.carried_steps(read)
         for s in v.steps:
             assert later[s.name].check(typed[s.name]).status == "correct", (v.seed, s.name)
-        verdict = _grade(v, v.answer.typed(v.answer.key), sent=typed)
+        verdict = grade(v, v.answer.typed(v.answer.key), sent=typed)
         assert verdict["status"] == "correct", (v.seed, verdict)
 
 
@@ -117,16 +109,16 @@ def test_a_wrong_step_is_carried_forward_and_named(ex):
         if right.check(carried.typed(carried.key)).status == "correct":
             continue  # this wrong value happens not to change the next step
         checked += 1
-        said = _grade(v, carried.typed(carried.key), second.name, sent)
+        said = grade(v, carried.typed(carried.key), second.name, sent)
         assert (said["status"], said["tag"]) == ("incorrect", "carried"), (v.seed, said)
         assert said["data"]["carried"]["step"] == first.name
-        assert _grade(v, right.typed(right.key), second.name, sent)["status"] == "correct", v.seed
+        assert grade(v, right.typed(right.key), second.name, sent)["status"] == "correct", v.seed
         neither = moved(right.key, rng)
         if carried.check(carried.typed(neither)).status != "correct":
-            plain = _grade(v, right.typed(neither), second.name, sent)
+            plain = grade(v, right.typed(neither), second.name, sent)
             assert plain["status"] == "incorrect" and plain["tag"] != "carried", (v.seed, plain)
         if v.answer.check(final.typed(final.key)).status != "correct":
-            said = _grade(v, final.typed(final.key), sent=sent)
+            said = grade(v, final.typed(final.key), sent=sent)
             assert said["tag"] == "carried" and said["data"]["carried"]["step"] == first.name, (v.seed, said)
     assert checked >= drawn // 2, f"{ex.id}: only {checked} of {drawn} draws had a first step that changes the second"
 
@@ -136,10 +128,10 @@ def test_a_wrong_final_answer_names_the_first_step_to_look_at(ex):
     v = ex.variant(1)
     final = v.answer
     wrong = final.typed(moved(final.key, random.Random(1)))
-    said = _grade(v, wrong)
+    said = grade(v, wrong)
     assert said["status"] == "incorrect" and said["data"]["steps"]["first"] == v.steps[0].name, said
     right_first = {v.steps[0].name: v.step_answers[v.steps[0].name].worked_text()}
-    said = _grade(v, wrong, sent=right_first)
+    said = grade(v, wrong, sent=right_first)
     assert said["data"]["steps"] == {"first": v.steps[1].name, "number": 2, "label": v.steps[1].label}, said
 
 
