@@ -25,6 +25,7 @@ import random
 import re
 from collections.abc import Callable, Iterator, Mapping
 from dataclasses import dataclass
+from functools import cached_property
 from html import escape
 from typing import Any
 
@@ -80,12 +81,17 @@ class Param:
     avoid: tuple[float, ...] = ()
 
     def grid(self) -> list[float]:
+        return list(self._grid)
+
+    @cached_property
+    def _grid(self) -> tuple[float, ...]:
+        """The values, worked out once (every draw picks from them)."""
         n = round((self.hi - self.lo) / self.step)
         values = [_trim(self.lo + k * self.step) for k in range(n + 1)]
-        return [v for v in values if not any(math.isclose(v, a, abs_tol=1e-9) for a in self.avoid)]
+        return tuple(v for v in values if not any(math.isclose(v, a, abs_tol=1e-9) for a in self.avoid))
 
     def pick(self, rng: random.Random) -> float:
-        return rng.choice(self.grid())
+        return rng.choice(self._grid)
 
     def describe(self) -> str:
         u = self.unit

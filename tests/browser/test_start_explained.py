@@ -62,7 +62,9 @@ def test_a_check_before_the_grader_is_ready_shows_the_loading_progress(browser, 
     try:
         ex = check_while_loading(page, slow_site.url)
         status = ex.locator(role("runtime-status"))
-        expect(status).to_be_visible()
+        # Shown once the page's script has taken the held Check (on a busy machine and a slow link
+        # the script itself can arrive and start later than expect's default 5 s).
+        expect(status).to_be_visible(timeout=LONG)
         expect(status).to_contain_text("Loading the grader")
         expect(status).to_contain_text("first visit only")
         bar = status.locator(role("runtime-progress"))

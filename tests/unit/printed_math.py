@@ -18,6 +18,7 @@ import html
 import math
 import re
 from dataclasses import dataclass
+from functools import lru_cache
 
 from workbook.expr import InvalidAnswer, parse_answer, split_matrix
 
@@ -32,23 +33,24 @@ def math_of(html_text: str) -> list[str]:
     return [html.unescape(a or b) for a, b in MATH.findall(html_text)]
 
 
+_BRACKETS = re.compile(r"[{\[(}\])]")
+
+
 def _top_split(s: str, separators: re.Pattern) -> list[tuple[str, str]]:
-    """``s`` cut at the separators outside braces, brackets and parentheses: ``[(piece, separator before it)]``."""
+    """``s`` cut at the separators outside braces, brackets and parentheses: ``[(piece, separator before it)]``.
+    (No separator starts with a bracket; a closing bracket with none open is ignored.)"""
     out, depth, start, before = [], 0, 0, ""
-    i = 0
-    while i < len(s):
-        ch = s[i]
-        if ch in "{[(":
-            depth += 1
-        elif ch in "}])":
-            depth = max(0, depth - 1)
-        elif depth == 0:
-            m = separators.match(s, i)
-            if m and m.end() > i:
-                out.append((s[start:i], before))
-                before, start, i = m.group(0), m.end(), m.end()
-                continue
-        i += 1
+    i, scanned = 0, 0  # the next place a separator may start; how far the depth is counted
+    while (m := separators.search(s, i)) is not None:
+        for b in _BRACKETS.finditer(s, scanned, m.start()):
+            depth = depth + 1 if b.group(0) in "{[(" else max(0, depth - 1)
+        scanned = m.start()
+        if depth == 0 and m.end() > m.start():
+            out.append((s[start:m.start()], before))
+            before, start = m.group(0), m.end()
+            i = scanned = m.end()  # (brackets inside a separator, as in \text{...}, are not counted)
+        else:
+            i = m.start() + 1
     out.append((s[start:], before))
     return out
 
@@ -56,6 +58,7 @@ def _top_split(s: str, separators: re.Pattern) -> list[tuple[str, str]]:
 _LINES = re.compile(r"\\\\|,|;|\\qquad|\\quad|\\text\{[^}]*\b(?:and|so|if|with|for|then|since)\b[^}]*\}")
 
 
+@lru_cache(maxsize=1 << 16)  # pure, and many draws print the same formulas: each is read once
 def relations(tex: str) -> list[list[tuple[str, str]]]:
     """Each chain of relations in a formula: ``[(side, relation before it), ...]`` (the first has ``""``)."""
     tex = re.sub(r"\\(?:begin|end)\{(?:aligned|align\*?|gathered|split|cases)\}", r" \\\\ ", tex)
@@ -119,6 +122,7 @@ def _one(tex: str) -> tuple[float, float, str | None]:
     return value, slack, dim
 
 
+@lru_cache(maxsize=1 << 16)
 def read_side(tex: str) -> Value | None:
     """A side as numbers, or None when it is not (only) numbers."""
     tex = tex.strip().rstrip(".").strip()
@@ -140,6 +144,7 @@ def read_side(tex: str) -> Value | None:
         return None
 
 
+@lru_cache(maxsize=1 << 16)
 def check_formula(tex: str) -> list[str]:
     """Every relation of ``tex`` between two numeric sides that does not hold (a message each)."""
     problems = []

@@ -23,10 +23,17 @@ from ..tolerance import agrees, clean
 APART = 3e-3  # relatively: far enough apart that 3 significant figures tell them apart
 
 
-def _same(a: Any, b: Any, rel: float, turn: float | None) -> bool:
+def _cleaned(a: Any) -> Any:
+    """A value (a number, or rows of numbers) with every number cleaned of float noise."""
     if isinstance(a, (tuple, list)):
+        return tuple(_cleaned(x) for x in a)
+    return clean(float(a))
+
+
+def _same(a: Any, b: Any, rel: float, turn: float | None) -> bool:
+    """``a`` and ``b`` (cleaned) are the same answer."""
+    if isinstance(a, tuple):
         return all(_same(x, y, rel, turn) for x, y in zip(a, b))
-    a, b = clean(float(a)), clean(float(b))
     shifts = (-turn, 0.0, turn) if turn else (0.0,)
     return any(agrees(a + k, b, rel=rel) or agrees(b, a + k, rel=rel) for k in shifts)
 
@@ -34,8 +41,9 @@ def _same(a: Any, b: Any, rel: float, turn: float | None) -> bool:
 def apart(*values: Any, rel: float = APART, turn: float | None = None) -> bool:
     """No two of the values (numbers, or rows of numbers) are the same answer within ``rel``;
     with ``turn`` (360 or 2π), angles a whole turn apart are the same."""
-    return not any(_same(values[i], values[j], rel, turn)
-                   for i in range(len(values)) for j in range(i + 1, len(values)))
+    cleaned = [_cleaned(v) for v in values]
+    return not any(_same(cleaned[i], cleaned[j], rel, turn)
+                   for i in range(len(cleaned)) for j in range(i + 1, len(cleaned)))
 
 
 def slips_apart(made: dict, rel: float = APART, turn: float | None = None) -> bool:
