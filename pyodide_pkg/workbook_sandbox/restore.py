@@ -76,6 +76,9 @@ def _functions_of(value: Any) -> list[types.FunctionType]:
     return []
 
 
+_HOLDS_CODE = (types.FunctionType, staticmethod, classmethod, property)  # what _functions_of looks into
+
+
 def _function_state(fn: types.FunctionType) -> tuple:
     return fn.__code__, fn.__defaults__, fn.__kwdefaults__
 
@@ -99,7 +102,8 @@ class Restore:
         self.fields = [(vars(obj), _snapshot(vars(obj))) for obj in self.objects if hasattr(obj, "__dict__")]
         holders = [vars(mod) for _, mod in watched] + [saved for _, saved in self.classes] \
             + [vars(obj) for obj in self.objects if hasattr(obj, "__dict__")]
-        functions = {id(fn): fn for space in holders for value in list(space.values()) for fn in _functions_of(value)}
+        functions = {id(fn): fn for space in holders for value in list(space.values())
+                     if isinstance(value, _HOLDS_CODE) for fn in _functions_of(value)}
         self.functions = [(fn, _function_state(fn)) for fn in functions.values()]
         self.recursion = sys.getrecursionlimit()
         self.hooks = sys.gettrace(), sys.getprofile()

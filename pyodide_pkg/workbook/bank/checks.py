@@ -65,7 +65,12 @@ def kept_slips(key, candidates, turn=None) -> tuple[Slip, ...]:
     [2.0, 3.0]
     """
     slips: list[Slip] = []
-    for value, message in candidates:
-        if value is not None and apart(key, value, *(s.value for s in slips), rel=_KEPT_APART, turn=turn):
+    kept = [_cleaned(key)]  # the key and the slips kept so far, cleaned: already apart from each other,
+    for value, message in candidates:  # so a candidate is compared with each of them (as apart() would)
+        if value is None:
+            continue
+        here = _cleaned(value)
+        if not _same(kept[0], here, _KEPT_APART, turn) and not any(_same(here, k, _KEPT_APART, turn) for k in kept[1:]):
             slips.append(Slip(value, message))
+            kept.append(here)
     return tuple(slips)
