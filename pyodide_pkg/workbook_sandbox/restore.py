@@ -76,6 +76,9 @@ def _functions_of(value: Any) -> list[types.FunctionType]:
     return []
 
 
+# A type whose attributes cannot be set or deleted (a C type such as NumPy's ndarray): nothing a
+# run can change through setattr, and nothing this restore could put back, so it is not noted.
+_IMMUTABLE = 1 << 8  # Py_TPFLAGS_IMMUTABLETYPE
 _HOLDS_CODE = (types.FunctionType, staticmethod, classmethod, property)  # what _functions_of looks into
 
 
@@ -96,7 +99,7 @@ class Restore:
         watched = [(name, mod) for name, mod in self.table.items()
                    if mod is not None and _in_homes(name, self.homes) and hasattr(mod, "__dict__")]
         self.classes = [(cls, dict(vars(cls))) for name, mod in watched for cls in list(vars(mod).values())
-                        if isinstance(cls, type) and cls.__module__ == name]
+                        if isinstance(cls, type) and cls.__module__ == name and not cls.__flags__ & _IMMUTABLE]
         self.containers = [(c, _copy(c)) for _, mod in watched for c in list(vars(mod).values())
                            if type(c) in (dict, list, set)]
         self.fields = [(vars(obj), _snapshot(vars(obj))) for obj in self.objects if hasattr(obj, "__dict__")]

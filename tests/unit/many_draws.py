@@ -1,13 +1,18 @@
 """How many cases the many-case tests take (the variants of test_variants, test_printed,
-test_steps and test_steps_bank; the hostile requests of test_fuzz_api): all of them in ``make
-test`` and CI; a share of them in ``make test-unit``, the developer's quick loop
-(``WORKBOOK_DRAW_SHARE=0.2``), which still draws from every exercise."""
+test_steps and test_steps_bank; the hostile requests of test_fuzz_api; the review seeds of
+test_build_holdout): all of them in ``make test`` and CI; a share of them in ``make test-unit``,
+the developer's quick loop (``WORKBOOK_DRAW_SHARE=0.2``), which still draws from every exercise."""
 
 from __future__ import annotations
 
 import os
 
 SHARE = float(os.environ.get("WORKBOOK_DRAW_SHARE", "1"))
+
+
+def share_of(items: tuple) -> tuple:
+    """All of ``items`` in the whole suite; the first share of them (at least one) in the quick loop."""
+    return items if SHARE >= 1 else items[:max(1, round(len(items) * SHARE))]
 
 
 def count(full: int) -> int:

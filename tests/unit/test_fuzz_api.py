@@ -115,7 +115,8 @@ def test_twenty_thousand_hostile_requests(part):
             assert 0 < len(reply) <= ERROR_CAP, where
             seen[error["kind"]] = seen.get(error["kind"], 0) + 1
     # The generator reaches both sides: replies with values, and each error a request can cause.
-    assert seen.get("ok", 0) > 1000 // PARTS and {"bad-request", "unknown-exercise", "wrong-op"} <= set(seen), seen
+    # at least one request in 20 well formed enough to be answered (1,000 of the full 20,000)
+    assert seen.get("ok", 0) > COUNT // 20 // PARTS and {"bad-request", "unknown-exercise", "wrong-op"} <= set(seen), seen
 
 
 def test_a_one_megabyte_id_gets_a_short_reply():
