@@ -28,7 +28,7 @@ PIP := $(BIN)/python -m pip --disable-pip-version-check --quiet
 # ---- Sources, by kind (recursive) ----------------------------------------------------
 # sw.js is the service worker's template (docs/hooks/offline.py fills it in).
 SW_TEMPLATE := docs/assets/js/sw.js
-PKG_SOURCES := $(shell find pyodide_pkg/workbook -type f \( -name '*.py' -o -name '*.json' \) -not -path '*/__pycache__/*') pyodide_pkg/pyproject.toml
+PKG_SOURCES := $(shell find pyodide_pkg/workbook pyodide_pkg/workbook_sandbox -type f \( -name '*.py' -o -name '*.json' \) -not -path '*/__pycache__/*') pyodide_pkg/pyproject.toml
 JS_SOURCES := $(filter-out $(SW_TEMPLATE),$(shell find docs/assets/js -type f \( -name '*.js' -o -name '*.json' \)))
 HOOKS := $(shell find docs/hooks -type f -name '*.py')
 OVERRIDES := $(shell find docs/overrides -type f)

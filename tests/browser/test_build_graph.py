@@ -30,6 +30,7 @@ CASES = {
     "pyodide_pkg/workbook/api.py": PACKAGE,
     "pyodide_pkg/workbook/bank/ch0_rotations_2d.py": PACKAGE,
     "pyodide_pkg/workbook/contract.json": PACKAGE,
+    "pyodide_pkg/workbook_sandbox/restore.py": PACKAGE,  # the sandbox's own package, in its files and snapshot
     "pyodide_pkg/pyproject.toml": [".venv/bin/.serve", VENV_TEST, *RUNTIME],
     "docs/assets/js/main.js": BUNDLE,
     "docs/assets/js/kinds/derive.js": BUNDLE,
@@ -77,12 +78,12 @@ def test_a_change_remakes_exactly_what_depends_on_it(up_to_date, source):
 
 def test_every_kind_of_source_is_covered():
     """Each folder of sources has a case above, so a new kind of source gets one."""
-    tracked = subprocess.run(["git", "ls-files", "docs", "pyodide_pkg/workbook", "scripts"], cwd=ROOT,
+    tracked = subprocess.run(["git", "ls-files", "docs", "pyodide_pkg", "scripts"], cwd=ROOT,
                              capture_output=True, text=True, check=True).stdout.split()
     # scripts/scorm: the templates of `make scorm`, whose zips (dist/) are not among the goals built here
     folders = {str(Path(p).parent) for p in tracked if not p.startswith(("scripts/bench", "scripts/scorm", "docs/assets/vendor"))}
     covered = {str(Path(p).parent) for p in CASES}
     # Folders of the same kind as a covered one: the recursive source lists take them all.
-    same_kind = re.compile(r"^(pyodide_pkg/workbook/.+|docs/assets/js/.+|docs/chapters|docs/assets)$")
+    same_kind = re.compile(r"^(pyodide_pkg/workbook/.+|pyodide_pkg/workbook_sandbox/.+|docs/assets/js/.+|docs/chapters|docs/assets)$")
     missing = sorted(f for f in folders - covered if not same_kind.match(f))
     assert missing == []
