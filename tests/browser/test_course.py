@@ -18,7 +18,7 @@ import pytest
 from playwright.sync_api import Page
 
 from helpers import role, wait_runtime
-from test_a11y import COLOUR_RULES, OVERFLOW, audit, load_axe
+from test_a11y import COLOUR_RULES, OVERFLOW, audit, load_axe, set_scheme
 from workbook import api, bank
 from workbook.assignment import assigned_variant
 
@@ -252,8 +252,7 @@ def test_axe_finds_nothing_on_the_course_pages(page, site_url, width):
             page.wait_for_function("() => document.querySelector('[data-wb-class]').dataset.wbGraded === '3'", timeout=SLOW)
         load_axe(page)  # and stops colour transitions before the palette changes
         for scheme in ("light", "dark"):  # every rule in one palette; in the other, the rules a palette changes
-            page.emulate_media(color_scheme=scheme)
-            page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", "slate" if scheme == "dark" else "default")
+            set_scheme(page, scheme)
             problems = audit(page, None if scheme == "light" else COLOUR_RULES)
             if width == 360:
                 problems += page.evaluate(OVERFLOW)

@@ -20,8 +20,6 @@ QUATERNIONS = ("10.3", "10.5")
 SEEDS = range(many_draws.count(150))
 
 
-
-
 def _neg(value):
     return tuple(tuple(-x for x in row) for row in value)
 

@@ -81,8 +81,6 @@ EXPECTED = {"1.6": _inverse, "3.7": _north, "4.3": _slope, "4.7": _jacobian}
 STEPS = {"1.6": ["RT", "tinv"], "3.7": ["move", "col"], "4.3": ["d", "drdx"], "4.7": ["d", "bearing"]}
 
 
-
-
 def _agrees(kind, value) -> bool:
     return kind.check(kind.typed(value)).status == "correct"
 
