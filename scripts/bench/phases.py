@@ -158,7 +158,7 @@ class Phases:
     def build_series(self, page, ex_id: str, code: str, first_timeout: float, label: str = "plain") -> dict:
         """A first Build run of ``code`` on exercise ``ex_id``, then the repeats: their times and bytes."""
         ex = page.locator(exercise(ex_id))
-        ex.evaluate("(el, sel) => el.querySelector(sel).wbOpenEditor()", role(ROLE.editor))
+        ex.evaluate("(el, sel) => el.querySelector(sel).wbOpenEditor().then(() => null)", role(ROLE.editor))
         mark = self.b.server.mark()
         results = []
         for i in range(1 + self.args.build_repeats):

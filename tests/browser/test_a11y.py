@@ -37,7 +37,7 @@ SLOW = 120_000  # ms: generous, for a test machine busy with other work (a page'
 def settle_page(page: Page) -> None:
     """Wait until the page's script has drawn everything it draws (editors built now)."""
     page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)", timeout=SLOW)
-    page.evaluate("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor()))")
+    page.evaluate("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor())).then(() => null)")
     page.wait_for_function("""() => {
       const exercises = [...document.querySelectorAll('[data-exercise-id]')];
       const builds = exercises.filter(e => e.dataset.kind === 'build');
