@@ -5,13 +5,16 @@
 * A Build exercise whose tests pass counts in its chapter's Solved bar.
 * A Build exercise due for review comes back on the Practise page, with a fresh
   variant (new hidden tests); passing them moves it up the review boxes.
+
+The tests on chapter pages share the module's one tab (``tour``): each answers an exercise of its
+own, in a chapter where no other test here answers one, so the records and bars each reads are its own.
 """
 
 from __future__ import annotations
 
 from playwright.sync_api import expect
 
-from helpers import exercise, feedback, open_chapter, role, run_build, settle, wait_runtime, widget_ready
+from helpers import exercise, feedback, role, run_build, settle, wait_runtime, widget_ready
 from workbook import bank
 
 
@@ -19,9 +22,9 @@ def records(page) -> dict:
     return page.evaluate("() => workbook.progress.all()")
 
 
-def test_a_bug_hunt_solved_by_clicking_shows_the_explanation_and_the_symptom(page, site_url):
+def test_a_bug_hunt_solved_by_clicking_shows_the_explanation_and_the_symptom(tour):
     ex = bank.get("6.8")
-    open_chapter(page, site_url, 6)
+    page = tour(6)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
     widget_ready(el)
@@ -44,9 +47,9 @@ def test_a_bug_hunt_solved_by_clicking_shows_the_explanation_and_the_symptom(pag
     assert record["box"] == 1  # Debug joins the review queue; the first answer missed: box 1
 
 
-def test_a_bug_hunt_solved_by_keyboard(page, site_url):
+def test_a_bug_hunt_solved_by_keyboard(tour):
     ex = bank.get("8.9")
-    open_chapter(page, site_url, 8)
+    page = tour(8)
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
     widget_ready(el)
@@ -62,9 +65,9 @@ def test_a_bug_hunt_solved_by_keyboard(page, site_url):
     assert records(page)[ex.id]["clean"] == [0]  # found at the first try: clean
 
 
-def test_a_bug_hunt_found_by_clicking_every_line_is_not_solved_clean(page, site_url):
+def test_a_bug_hunt_found_by_clicking_every_line_is_not_solved_clean(tour):
     ex = bank.get("3.11")
-    open_chapter(page, site_url, 3)
+    page = tour(3)
     total = len(bank.chapter(3))
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
@@ -85,14 +88,14 @@ def solved_bar(page) -> str:
     return page.locator('[data-wb-chapter-progress] [data-wb-bar="solved"]').inner_text()
 
 
-def test_a_build_solved_counts_in_the_chapter_bar(page, site_url):
+def test_a_build_solved_counts_in_the_chapter_bar(tour):
     ex = bank.get("0.5")
-    open_chapter(page, site_url, 0)
+    page = tour(0)
     total = len(bank.chapter(0))
     expect(page.locator('[data-wb-chapter-progress] [data-wb-bar="solved"]')).to_contain_text(f"0 of {total} exercises")
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
-    el.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor()")
+    el.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor().then(() => null)")
     el.locator(".cm-editor").wait_for()
     el.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbEditor.setCode(code)", ex.solution)
     assert run_build(el) == "correct"
