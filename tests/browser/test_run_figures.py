@@ -1,15 +1,18 @@
 """Run figures in the page: after a run of 6.5, 8.4 and 5.10 the Build widget draws the learner's
 function beside the reference (role run-figure); the keyboard steps through the cases; the
-picture is named and described for screen readers; a wrong run shows its largest error."""
+picture is named and described for screen readers; a wrong run shows its largest error.
+
+The tests share the module's one tab (``tour``: one grader and one sandbox for them all); each
+sets its own exercise's code before it runs, and no test reads another's records."""
 
 from __future__ import annotations
 
 import re
 
 import pytest
-from playwright.sync_api import Page, expect
+from playwright.sync_api import expect
 
-from helpers import exercise, open_chapter, role, run_build, set_editor
+from helpers import exercise, role, run_build, set_editor
 from workbook import bank
 
 
@@ -18,8 +21,8 @@ def figure(ex):
 
 
 @pytest.mark.parametrize("chapter, ex_id", [(6, "6.5"), (8, "8.4"), (5, "5.10")])
-def test_a_correct_run_draws_the_learners_function(page: Page, site_url, chapter, ex_id):
-    open_chapter(page, site_url, chapter)
+def test_a_correct_run_draws_the_learners_function(tour, chapter, ex_id):
+    page = tour(chapter)
     ex = exercise(page, ex_id)
     fig = figure(ex)
     expect(fig).to_be_hidden()
@@ -38,8 +41,8 @@ def test_a_correct_run_draws_the_learners_function(page: Page, site_url, chapter
     assert fig.get_attribute("aria-labelledby")
 
 
-def test_the_keyboard_steps_through_the_cases(page: Page, site_url):
-    open_chapter(page, site_url, 6)
+def test_the_keyboard_steps_through_the_cases(tour):
+    page = tour(6)
     ex = exercise(page, "6.5")
     set_editor(page, ex, bank.get("6.5").solution)
     assert run_build(ex) == "correct"
@@ -60,8 +63,8 @@ def test_the_keyboard_steps_through_the_cases(page: Page, site_url):
     assert fig.locator(role("run-case")).get_attribute("aria-valuetext").startswith("test 2")
 
 
-def test_a_wrong_run_shows_its_largest_error(page: Page, site_url):
-    open_chapter(page, site_url, 8)
+def test_a_wrong_run_shows_its_largest_error(tour):
+    page = tour(8)
     ex = exercise(page, "8.4")
     set_editor(page, ex, bank.get("8.4").starter)
     assert run_build(ex) == "incorrect"

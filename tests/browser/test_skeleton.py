@@ -1,6 +1,10 @@
 """The walking skeleton, end to end in Chromium: one exercise of each kind,
 right and wrong, invalid input, a runaway loop stopped, instant navigation,
-and a solved exercise still solved after a reload."""
+and a solved exercise still solved after a reload.
+
+The four tests that grade one exercise of each kind share the module's one tab (``tour``, in the
+order chapter 0, 3, 0, 1: one grader, by instant navigation); each answers its own exercise, and
+no other test reads what they leave."""
 
 from __future__ import annotations
 
@@ -44,8 +48,8 @@ def test_html_contract_before_python_is_ready(page, site_url):
     wait_runtime(page)
 
 
-def test_derive_right_wrong_and_invalid(page, site_url):
-    open_chapter(page, site_url, 0)
+def test_derive_right_wrong_and_invalid(tour):
+    page = tour(0)
     ex = exercise(page, "0.1")
     assert answer_derive(ex, "3") == "correct"
     assert answer_derive(ex, "2") == "incorrect"
@@ -55,18 +59,8 @@ def test_derive_right_wrong_and_invalid(page, site_url):
     assert answer_derive(ex, "sqrt(9)") == "correct"
 
 
-def test_trace_right_and_wrong_with_reasons(page, site_url):
-    open_chapter(page, site_url, 0)
-    ex = exercise(page, "0.3")
-    spec = bank.get("0.3")
-    wrong = next(o for o in spec.options if o.key != spec.answer)
-    assert answer_trace(ex, wrong.key) == "incorrect"
-    assert wrong.why.split("$")[0][:30] in feedback(ex)
-    assert answer_trace(ex, spec.answer) == "correct"
-
-
-def test_debug_right_and_wrong_line(page, site_url):
-    open_chapter(page, site_url, 3)
+def test_debug_right_and_wrong_line(tour):
+    page = tour(3)
     ex = exercise(page, "3.5")
     spec = bank.get("3.5")
     other = next(iter(spec.notes))
@@ -78,8 +72,18 @@ def test_debug_right_and_wrong_line(page, site_url):
     assert ex.locator(role("line") + '[aria-selected="true"]').count() == 1
 
 
-def test_design_starts_unsolved_and_can_be_ordered(page, site_url):
-    open_chapter(page, site_url, 1)
+def test_trace_right_and_wrong_with_reasons(tour):
+    page = tour(0)
+    ex = exercise(page, "0.3")
+    spec = bank.get("0.3")
+    wrong = next(o for o in spec.options if o.key != spec.answer)
+    assert answer_trace(ex, wrong.key) == "incorrect"
+    assert wrong.why.split("$")[0][:30] in feedback(ex)
+    assert answer_trace(ex, spec.answer) == "correct"
+
+
+def test_design_starts_unsolved_and_can_be_ordered(tour):
+    page = tour(1)
     ex = exercise(page, "1.5")
     spec = bank.get("1.5")
     shown = ex.locator(role("step")).evaluate_all("els => els.map(e => e.dataset.step)")
