@@ -47,6 +47,20 @@ def test_nothing_a_run_patches_outlives_it(attack):
     assert EX.check(IDENTITY).status == "incorrect"
 
 
+# A default swapped for an object whose == says "equal" to anything: the restore compares by
+# identity, never by an object's own ==, so it is put back all the same.
+LIAR = ("import copy\nclass Liar:\n    def __eq__(self, other):\n        return True\n    __hash__ = object.__hash__\n"
+        "copy.deepcopy.__defaults__ = (Liar(), [])\n")
+
+
+def test_a_default_that_claims_to_equal_anything_is_put_back():
+    import copy
+
+    before = copy.deepcopy.__defaults__
+    EX.check(LIAR + GOOD)  # (its own run may break on it: its verdict is its own business)
+    assert copy.deepcopy.__defaults__ is before
+    assert EX.check(GOOD).status == "correct"
+
 def test_random_is_reseeded_after_a_run_that_seeds_it():
     EX.check("import random\nrandom.seed(0)\n" + GOOD)
     first = random.random()
