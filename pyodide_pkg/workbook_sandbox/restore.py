@@ -82,6 +82,11 @@ _IMMUTABLE = 1 << 8  # Py_TPFLAGS_IMMUTABLETYPE
 _HOLDS_CODE = (types.FunctionType, staticmethod, classmethod, property)  # what _functions_of looks into
 
 
+def _function_state(fn: types.FunctionType) -> tuple:
+    """What a run could swap in a function: its code and its defaults."""
+    return fn.__code__, fn.__defaults__, fn.__kwdefaults__
+
+
 class Restore:
     def __init__(self, homes: Iterable[str] = STDLIB_HOMES, objects: Iterable[object] = ()) -> None:
         self.homes = tuple(homes)
@@ -90,9 +95,8 @@ class Restore:
     def __enter__(self) -> Restore:
         self.first = [(space, dict(space)) for space in _FIRST]
         self.table = dict(sys.modules)
-        spaces = [space for space in (getattr(mod, "__dict__", None) for mod in self.table.values())
-                  if isinstance(space, dict)]
-        self.spaces = [(space, (tuple(space), tuple(space.values()))) for space in spaces]  # as _snapshot
+        self.spaces = [(mod.__dict__, _snapshot(mod.__dict__)) for mod in self.table.values()
+                       if isinstance(getattr(mod, "__dict__", None), dict)]
         watched = [(name, mod) for name, mod in self.table.items()
                    if mod is not None and _in_homes(name, self.homes) and hasattr(mod, "__dict__")]
         self.classes = [(cls, dict(vars(cls))) for name, mod in watched for cls in list(vars(mod).values())
@@ -104,8 +108,7 @@ class Restore:
             + [vars(obj) for obj in self.objects if hasattr(obj, "__dict__")]
         functions = {id(fn): fn for space in holders for value in list(space.values())
                      if isinstance(value, _HOLDS_CODE) for fn in _functions_of(value)}
-        # What a run could swap in a function (some 2,000 functions are noted when NumPy is loaded).
-        self.functions = [(fn, (fn.__code__, fn.__defaults__, fn.__kwdefaults__)) for fn in functions.values()]
+        self.functions = [(fn, _function_state(fn)) for fn in functions.values()]
         self.recursion = sys.getrecursionlimit()
         self.hooks = sys.gettrace(), sys.getprofile()
         self.imports: list[tuple[list[Any], list[Any]]] = [
@@ -141,7 +144,7 @@ class Restore:
                 container.clear()
                 (container.update if not isinstance(container, list) else container.extend)(saved)
         for fn, (code, defaults, kwdefaults) in self.functions:
-            if fn.__code__ is not code or fn.__defaults__ is not defaults or fn.__kwdefaults__ is not kwdefaults:
+            if not all(map(is_, _function_state(fn), (code, defaults, kwdefaults))):  # by identity, as _unchanged
                 _quietly(setattr, fn, "__code__", code)
                 _quietly(setattr, fn, "__defaults__", defaults)
                 _quietly(setattr, fn, "__kwdefaults__", kwdefaults)

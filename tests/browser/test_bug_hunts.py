@@ -14,7 +14,7 @@ from __future__ import annotations
 
 from playwright.sync_api import expect
 
-from helpers import exercise, feedback, role, run_build, settle, wait_runtime, widget_ready
+from helpers import exercise, feedback, role, run_build, set_editor, settle, wait_runtime, widget_ready
 from workbook import bank
 
 
@@ -95,9 +95,7 @@ def test_a_build_solved_counts_in_the_chapter_bar(tour):
     expect(page.locator('[data-wb-chapter-progress] [data-wb-bar="solved"]')).to_contain_text(f"0 of {total} exercises")
     el = exercise(page, ex.id)
     el.scroll_into_view_if_needed()
-    el.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor().then(() => null)")
-    el.locator(".cm-editor").wait_for()
-    el.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbEditor.setCode(code)", ex.solution)
+    set_editor(page, el, ex.solution)
     assert run_build(el) == "correct"
     expect(page.locator('[data-wb-chapter-progress] [data-wb-bar="solved"]')).to_contain_text(f"1 of {total} exercises")
     record = records(page)[ex.id]

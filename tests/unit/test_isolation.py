@@ -61,6 +61,7 @@ def test_a_default_that_claims_to_equal_anything_is_put_back():
     assert copy.deepcopy.__defaults__ is before
     assert EX.check(GOOD).status == "correct"
 
+
 def test_random_is_reseeded_after_a_run_that_seeds_it():
     EX.check("import random\nrandom.seed(0)\n" + GOOD)
     first = random.random()
