@@ -1,13 +1,13 @@
 // ESLint (flat config) over the page's JavaScript: `make lint` runs it with --max-warnings 0.
 // The recommended rules catch real mistakes (undefined names, unused variables, unreachable
 // code, duplicate keys); nothing is switched off. Each file gets the globals its context
-// really has: the page's modules a window's, the graders' and sandbox's modules (and the
+// really has: the page's modules a window's, the grader's, the sandbox's and the search's workers (and the
 // boot module they share) a dedicated worker's, sw.js a service worker's (a classic script
 // that docs/hooks/offline.py fills in).
 import js from "@eslint/js";
 import globals from "globals";
 
-const WORKERS = ["docs/assets/js/worker.js", "docs/assets/js/sandbox.js", "docs/assets/js/boot.js"];
+const WORKERS = ["docs/assets/js/worker.js", "docs/assets/js/sandbox.js", "docs/assets/js/boot.js", "docs/assets/js/search-worker.js"];
 const SERVICE_WORKER = "docs/assets/js/sw.js";
 
 export default [

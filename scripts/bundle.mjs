@@ -27,6 +27,9 @@ await build({
   format: "iife",
   define: { BOOT_SIZES: JSON.stringify(sizes) },
 });
+// The worker that stands in for the theme's search worker until search is wanted
+// (docs/assets/js/search-worker.js, docs/hooks/search_worker.py): a classic worker script too.
+await build({ ...common, entryPoints: { "search-worker": "docs/assets/js/search-worker.js" }, outdir: "docs/assets/dist", format: "iife" });
 // The sandbox that runs learner code (docs/assets/js/sandbox.js): a classic worker script of its own.
 await build({
   ...common,

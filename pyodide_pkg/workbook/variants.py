@@ -34,6 +34,7 @@ from .contract import LIMIT
 PLACEHOLDER = re.compile(r"\{\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*\}\}")
 MAX_SEED = LIMIT.variant  # the largest variant number (contract.json, limits)
 TRIES = 400
+JUDGED_KEPT = 16384  # draws whose validity a generator remembers; a full memory starts again
 
 
 class VariantError(Exception):
@@ -129,6 +130,7 @@ class Vary:
                  valid: Callable[[dict[str, Any]], bool] | None = None) -> None:
         self.make, self.params = make, tuple(params)
         self.valid = valid or (lambda p: True)
+        self._judged: dict[tuple, bool] = {}  # valid(p) of the draws seen so far (a function of the numbers)
 
     @property
     def defaults(self) -> dict[str, Any]:
@@ -143,8 +145,21 @@ class Vary:
         defaults = self.defaults
         for _ in range(TRIES):
             p = {q.name: q.pick(rng) for q in self.params}
-            if p != defaults and self.valid(p):
+            if p != defaults and self._well_posed(p):
                 yield p
+
+    def _well_posed(self, p: dict[str, Any]) -> bool:
+        """``valid(p)``, judged once per draw: many seeds draw the same numbers on a small grid."""
+        try:
+            key = tuple(sorted(p.items()))
+            hash(key)
+        except TypeError:
+            return bool(self.valid(p))
+        if key not in self._judged:
+            if len(self._judged) >= JUDGED_KEPT:
+                self._judged.clear()
+            self._judged[key] = bool(self.valid(p))
+        return self._judged[key]
 
     def describe(self) -> str:
         return "; ".join(q.describe() for q in self.params)

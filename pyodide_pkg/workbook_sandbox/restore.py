@@ -101,8 +101,9 @@ class Restore:
                    if mod is not None and _in_homes(name, self.homes) and hasattr(mod, "__dict__")]
         self.classes = [(cls, dict(vars(cls))) for name, mod in watched for cls in list(vars(mod).values())
                         if isinstance(cls, type) and cls.__module__ == name and not cls.__flags__ & _IMMUTABLE]
-        self.containers = [(c, _copy(c)) for _, mod in watched for c in list(vars(mod).values())
-                           if type(c) in (dict, list, set)]
+        # Each container once, however many modules name it (every module names the builtins' dict).
+        containers = {id(c): c for _, mod in watched for c in list(vars(mod).values()) if type(c) in (dict, list, set)}
+        self.containers = [(c, _copy(c)) for c in containers.values()]
         self.fields = [(vars(obj), _snapshot(vars(obj))) for obj in self.objects if hasattr(obj, "__dict__")]
         holders = [vars(mod) for _, mod in watched] + [saved for _, saved in self.classes] \
             + [vars(obj) for obj in self.objects if hasattr(obj, "__dict__")]

@@ -139,7 +139,11 @@ def run_build(ex: Locator, timeout: float = 60_000) -> str:
 
 
 def feedback(ex: Locator) -> str:
-    return ex.locator('[data-role="feedback"]').inner_text()
+    """The verdict as the learner reads it: on screen (an exercise off screen is not rendered,
+    ``content-visibility: auto``, and has no rendered text until it comes near the viewport)."""
+    box = ex.locator('[data-role="feedback"]')
+    box.scroll_into_view_if_needed()
+    return box.inner_text()
 
 
 def fill_matrix(ex: Locator, rows: list[list[str]]) -> None:

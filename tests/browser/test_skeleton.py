@@ -132,7 +132,7 @@ def test_editor_is_built_when_the_exercise_comes_into_view(page, site_url):
     ex = exercise(page, "0.5")
     page.wait_for_timeout(1500)  # idle time after start-up: still nothing to build off screen
     assert ex.locator(".cm-editor").count() == 0
-    assert "def rotate_2d" in ex.locator(role("code")).inner_text()
+    assert "def rotate_2d" in ex.locator(role("code")).text_content()  # not scrolled to: not rendered yet
     ex.locator(role("editor")).scroll_into_view_if_needed()
     ex.locator(".cm-editor").wait_for()
     assert ex.locator(role("code")).count() == 0
@@ -206,8 +206,7 @@ def test_opened_from_a_file_explains_how_to_serve(browser):
     page = browser.new_page()
     page.goto((SITE / "chapters" / "00-rotations-2d" / "index.html").as_uri())
     page.wait_for_function("() => document.documentElement.dataset.workbookRuntime === 'failed'")
-    text = exercise(page, "0.1").locator(role("feedback")).inner_text()
-    assert "python3 -m http.server" in text
+    assert "python3 -m http.server" in feedback(exercise(page, "0.1"))
     page.close()
 
 

@@ -20,6 +20,7 @@ import { loadManifest } from "./progress-view.js";
 import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
 import { findApi } from "./lms/api.js";
 import { renderMath } from "./math.js";
+import { initSearchStart } from "./search-start.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 const progress = new Progress(siteRoot);
@@ -57,6 +58,7 @@ lmsSession?.then((session) => { window.workbook.lms = session; }, (err) => {
 });
 if (!inLms) registerOffline(siteRoot, progress); // no service worker in an LMS frame: the LMS serves the package from its own paths
 initLoading();
+initSearchStart();
 initScrollRegions();
 initJumps();
 

@@ -17,7 +17,8 @@
 // for the machine). Once asked, the service worker carries it on by itself
 // across navigations and reloads.
 
-import { ATTR, OFFLINE, RUNTIME, setRootState } from "./contract.js";
+import { OFFLINE, setRootState } from "./contract.js";
+import { runtimeSettled } from "./runtime.js";
 import { drawFooter, hideNotice, remindToExport, setFooter, showNotice, showUpdate } from "./offline-ui.js";
 
 const UPDATE_CHECK_MS = 30 * 60_000;
@@ -64,19 +65,6 @@ function waitsForWord() {
   return metered() || Boolean(window.matchMedia?.(NARROW).matches);
 }
 
-function runtimeSettled() {
-  const root = document.documentElement;
-  const settled = () => [RUNTIME.ready, RUNTIME.failed].includes(root.getAttribute(ATTR.runtime));
-  return new Promise((resolve) => {
-    if (settled()) return resolve();
-    const observer = new MutationObserver(() => {
-      if (!settled()) return;
-      observer.disconnect();
-      resolve();
-    });
-    observer.observe(root, { attributes: true, attributeFilter: [ATTR.runtime] });
-  });
-}
 const idle = () => new Promise((resolve) => (window.requestIdleCallback ? requestIdleCallback(() => resolve(), { timeout: 2000 }) : setTimeout(resolve, 0)));
 const delay = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
