@@ -26,7 +26,7 @@ from workbook.expr import parse_quantity
 from workbook.kinds.derive import Derive
 from workbook.number_format import fmt
 from workbook.tolerance import agrees, clean
-from workbook.variants import Choice, Param, VariantError, check_seed, fill, placeholders
+from workbook.variants import Choice, Param, VariantError, Vary, check_seed, fill, placeholders
 
 ROOT = Path(__file__).resolve().parents[2]
 sys.path.insert(0, str(ROOT / "tests" / "golden"))
@@ -166,3 +166,21 @@ def test_a_template_that_asks_for_an_unknown_value_is_an_error():
 def test_choice_and_param_describe_their_ranges():
     assert Param("theta", 30, 5, 85, 5, unit="°").describe() == "theta from 5° to 85° in steps of 5°"
     assert Choice("entry", 1, (1, 2)).describe() == "entry one of 1, 2"
+
+
+def test_each_draw_is_judged_once_and_the_draws_are_those_of_judging_every_time():
+    """A generator remembers valid(p) per draw (many seeds draw the same numbers on a small grid),
+    and the draws come out exactly as when every candidate is judged afresh."""
+    judged: list[tuple] = []
+
+    def valid(p):
+        judged.append(tuple(sorted(p.items())))
+        return (p["a"] + p["b"]) % 3 != 0
+
+    params = (Param("a", 1, lo=0, hi=4, step=1), Param("b", 2, lo=0, hi=4, step=1))
+    remembering = Vary(lambda p: {}, *params, valid=valid)
+    afresh = Vary(lambda p: {}, *params, valid=lambda p: (p["a"] + p["b"]) % 3 != 0)
+    afresh._well_posed = afresh.valid  # type: ignore[method-assign]  (no memory: judged every time)
+    for seed in range(1, 300):
+        assert next(remembering.candidates("x.1", seed)) == next(afresh.candidates("x.1", seed))
+    assert len(judged) == len(set(judged)) <= 25  # a 5 x 5 grid: each draw judged at most once
