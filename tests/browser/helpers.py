@@ -143,6 +143,10 @@ def feedback(ex: Locator) -> str:
     ``content-visibility: auto``, and has no rendered text until it comes near the viewport)."""
     box = ex.locator('[data-role="feedback"]')
     box.scroll_into_view_if_needed()
+    # Scrolled to, it is rendered from the next frame on: wait for that (a box that is not shown at
+    # all, an empty verdict, is read as it is).
+    box.page.wait_for_function("el => !el.checkVisibility() || el.checkVisibility({ contentVisibilityAuto: true })",
+                               arg=box.element_handle())
     return box.inner_text()
 
 
