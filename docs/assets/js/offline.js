@@ -18,7 +18,7 @@
 // across navigations and reloads.
 
 import { OFFLINE, setRootState } from "./contract.js";
-import { runtimeSettled } from "./runtime.js";
+import { delay, idle, runtimeSettled } from "./wait.js";
 import { drawFooter, hideNotice, remindToExport, setFooter, showNotice, showUpdate } from "./offline-ui.js";
 
 const UPDATE_CHECK_MS = 30 * 60_000;
@@ -65,8 +65,6 @@ function waitsForWord() {
   return metered() || Boolean(window.matchMedia?.(NARROW).matches);
 }
 
-const idle = () => new Promise((resolve) => (window.requestIdleCallback ? requestIdleCallback(() => resolve(), { timeout: 2000 }) : setTimeout(resolve, 0)));
-const delay = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
 /** Ask once (ever, per site) for storage the browser will not evict on its own. */
 async function askToPersist(note) {
@@ -194,7 +192,7 @@ export function registerOffline(siteRoot, progress = null) {
       const agreed = new Promise((resolve) => showNotice({ mode: "announce", totalBytes: status.totalBytes },
         { ...actions, onOK: resolve }));
       await Promise.race([delay(READ_MS), agreed]);
-      await idle();
+      await idle(2000);
       if (note.get("declined") || last.state === "complete" || started) return;
       store();
     })

@@ -17,7 +17,7 @@
 // acknowledged at once: a sandbox that does not is gone (killed, or closed),
 // and a fresh one gets the request.
 
-import { ATTR, BOOT_PHASE, ERROR, RUNTIME, setRootState } from "./contract.js";
+import { BOOT_PHASE, ERROR, RUNTIME, setRootState } from "./contract.js";
 
 const DEFAULT_LIMIT_MS = 10_000;
 const LOAD_LIMIT_MS = 120_000; // fetching a package (NumPy) before a run starts
@@ -248,19 +248,4 @@ export class Runtime {
       if (this.ready) this.send(entry);
     });
   }
-}
-
-/** Resolves once the grader is ready or has failed to start (<html data-workbook-runtime>). */
-export function runtimeSettled() {
-  const root = document.documentElement;
-  const settled = () => [RUNTIME.ready, RUNTIME.failed].includes(root.getAttribute(ATTR.runtime));
-  return new Promise((resolve) => {
-    if (settled()) return resolve();
-    const observer = new MutationObserver(() => {
-      if (!settled()) return;
-      observer.disconnect();
-      resolve();
-    });
-    observer.observe(root, { attributes: true, attributeFilter: [ATTR.runtime] });
-  });
 }

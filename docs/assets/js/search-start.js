@@ -5,7 +5,7 @@
 // navigation keeps the search and its worker, and so does this.
 
 import { SEARCH_ASKS, SEARCH_CHANNEL, SEARCH_WANTED } from "./search-channel.js";
-import { runtimeSettled } from "./runtime.js";
+import { delay, idle, runtimeSettled } from "./wait.js";
 
 const AFTER_READY_MS = 5_000;
 const SEARCH = "[data-md-component=search]"; // the theme's search (its box and its results)
@@ -33,7 +33,7 @@ export function initSearchStart() {
     if (event.target instanceof Element && event.target.matches(TOGGLE)) want();
   });
   runtimeSettled()
-    .then(() => new Promise((resolve) => setTimeout(resolve, AFTER_READY_MS)))
-    .then(() => new Promise((resolve) => (window.requestIdleCallback ? requestIdleCallback(resolve, { timeout: 5_000 }) : resolve())))
+    .then(() => delay(AFTER_READY_MS))
+    .then(() => idle(5_000))
     .then(want);
 }

@@ -11,7 +11,7 @@
 
 import { SEARCH_ASKS, SEARCH_CHANNEL, SEARCH_WANTED } from "./search-channel.js";
 
-const THEME_WORKER = /^search\.[0-9a-f]+\.min\.js$/; // the theme's file, beside its own folder
+const THEME_WORKER = /^search\.[0-9a-f]+\.min\.js$/; // all the "#" may name: a file of the theme's workers folder
 const SETUP = 0; // the theme's message type that carries the index
 
 const name = decodeURIComponent(self.location.hash.slice(1));
