@@ -2,7 +2,9 @@
 sub-path, as on a GitHub Pages project site, driven by Playwright in Chromium.
 
 Every request to any other origin fails (the browser resolves no other host) and
-is counted; a test fails if one was made. Tests marked ``uncached`` (the offline
+is counted; a test fails if one was made. Every context any test opens watches the
+site's Content-Security-Policy (``policy_watch.py``): a test fails if the policy
+blocked anything while it ran. Tests marked ``uncached`` (the offline
 ones) also route every request, which turns the browser's HTTP cache off. The browser is Playwright's own where installed, else Debian's
 chromium (see scripts/find_browser.py).
 """
@@ -22,6 +24,7 @@ sys.path.insert(0, str(ROOT / "scripts"))
 
 from find_browser import find_browser  # noqa: E402  (from scripts/, on the path above)
 from helpers import CHAPTERS, go_instantly, keep_to_origin, open_chapter, record_leaving  # noqa: E402
+from policy_watch import BLOCKED, watch_every_context  # noqa: E402
 from site_server import SUBPATH, Link, SiteServer  # noqa: E402,F401  (SUBPATH: for the tests)
 
 
@@ -78,9 +81,9 @@ def pytest_configure(config):
 
 # The longest files first, so that the two processes end together (longest job first); a file
 # that sets ``SPREAD = True`` has tests that share nothing, and they are shared out one by one.
-LONGEST_FIRST = ("test_a11y", "test_sandbox", "test_offline_truth", "test_chapters", "test_skeleton", "test_offline",
-                 "test_csp", "test_progress_kept", "test_nothing_undone", "test_first_hour", "test_course", "test_progress",
-                 "test_code_the_robot", "test_scorm", "test_offline_state")  # as measured (summed test time per file)
+LONGEST_FIRST = ("test_a11y", "test_sandbox", "test_offline", "test_chapters", "test_skeleton", "test_offline_truth",
+                 "test_progress_kept", "test_nothing_undone", "test_progress", "test_course", "test_first_hour",
+                 "test_code_the_robot", "test_offline_state", "test_scorm", "test_answer_kinds", "test_start_explained")  # as measured (summed test time per file)
 
 
 def pytest_collection_modifyitems(config, items):
@@ -95,6 +98,19 @@ def pytest_collection_modifyitems(config, items):
     for item in items:
         spread = getattr(item.module, "SPREAD", False)
         item.add_marker(pytest.mark.xdist_group(item.nodeid if spread else item.nodeid.split("::")[0]))
+
+
+watch_every_context()
+
+
+@pytest.fixture(autouse=True)
+def policy_kept():
+    """No test may see the site's policy block anything, in any page or worker of any context."""
+    BLOCKED.clear()
+    yield BLOCKED
+    found = list(BLOCKED)
+    BLOCKED.clear()
+    assert found == [], "the Content-Security-Policy blocked:\n  " + "\n  ".join(found)
 
 
 @pytest.fixture
