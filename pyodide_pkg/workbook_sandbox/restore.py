@@ -43,9 +43,9 @@ import builtins
 import random
 import sys
 import types
-from collections.abc import Iterable, Mapping
+from collections.abc import Iterable
 from operator import attrgetter, is_
-from typing import Any, NamedTuple, cast
+from typing import Any, cast
 
 _FIRST = (vars(builtins), globals())  # what the restore itself looks names up in
 # Packages whose classes, containers and functions are watched besides every module's names.
@@ -95,43 +95,6 @@ def _function_states(functions: tuple[types.FunctionType, ...]) -> tuple[tuple, 
     return tuple(tuple(map(get, functions)) for get in _STATE_OF)
 
 
-class _Held(NamedTuple):
-    """What a namespace (a module's, a class's) binds that a restore looks into: its classes, its
-    containers (dicts, lists and sets) and the plain functions behind its values."""
-
-    keys: tuple
-    values: tuple
-    types: tuple[type, ...]
-    containers: tuple[Any, ...]
-    functions: tuple[types.FunctionType, ...]
-
-
-# What each namespace held when last looked at, by its owner (a module's dict, a class), which the
-# entry keeps alive so that its identity is not reused. Whether a value is a class, a container or
-# holds functions (a static or class method's, a property's, cannot be swapped) depends only on the
-# value itself: while a namespace binds the same objects, by identity, the answer is the same. A
-# namespace that changed in any way, or one not seen before, is looked at afresh.
-_HELD: dict[int, tuple[Any, _Held]] = {}
-_HELD_KEPT = 4096  # namespaces remembered; a full memory starts again
-
-
-def _holds(space: Any, owner: Any) -> _Held:
-    """What ``space``, the namespace of ``owner``, holds."""
-    keys, values = tuple(space), tuple(space.values())
-    kept = _HELD.get(id(owner))
-    if kept is not None and kept[0] is owner:
-        held = kept[1]
-        if len(held.keys) == len(keys) and all(map(is_, held.values, values)) and all(map(is_, held.keys, keys)):
-            return held
-    held = _Held(keys, values, tuple(v for v in values if isinstance(v, type)),
-                 tuple(v for v in values if type(v) in (dict, list, set)),
-                 tuple(fn for v in values if isinstance(v, _HOLDS_CODE) for fn in _functions_of(v)))
-    if len(_HELD) >= _HELD_KEPT:
-        _HELD.clear()
-    _HELD[id(owner)] = (owner, held)
-    return held
-
-
 class Restore:
     def __init__(self, homes: Iterable[str] = STDLIB_HOMES, objects: Iterable[object] = ()) -> None:
         self.homes = tuple(homes)
@@ -144,18 +107,17 @@ class Restore:
                        if isinstance(getattr(mod, "__dict__", None), dict)]
         watched = [(name, mod) for name, mod in self.table.items()
                    if mod is not None and _in_homes(name, self.homes) and hasattr(mod, "__dict__")]
-        found = [(name, _holds(vars(mod), vars(mod))) for name, mod in watched]
-        self.classes = [(cls, dict(vars(cls))) for name, held in found for cls in held.types
-                        if cls.__module__ == name and not cls.__flags__ & _IMMUTABLE]
+        self.classes = [(cls, dict(vars(cls))) for name, mod in watched for cls in list(vars(mod).values())
+                        if isinstance(cls, type) and cls.__module__ == name and not cls.__flags__ & _IMMUTABLE]
         # Each container once, however many modules name it (every module names the builtins' dict).
-        containers = {id(c): c for _, held in found for c in held.containers}
+        containers = {id(c): c for _, mod in watched for c in list(vars(mod).values()) if type(c) in (dict, list, set)}
         self.containers = [(c, _copy(c)) for c in containers.values()]
         self.fields = [(vars(obj), _snapshot(vars(obj))) for obj in self.objects if hasattr(obj, "__dict__")]
-        holders = [held.functions for _, held in found] \
-            + [_holds(saved, cls).functions for cls, saved in self.classes] \
-            + [_holds(vars(obj), obj).functions for obj in self.objects if hasattr(obj, "__dict__")]
-        functions = tuple({id(fn): fn for fns in holders for fn in fns}.values())
-        self.functions = functions, _function_states(functions)
+        holders = [vars(mod) for _, mod in watched] + [saved for _, saved in self.classes] \
+            + [vars(obj) for obj in self.objects if hasattr(obj, "__dict__")]
+        functions = {id(fn): fn for space in holders for value in list(space.values())
+                     if isinstance(value, _HOLDS_CODE) for fn in _functions_of(value)}
+        self.functions = tuple(functions.values()), _function_states(tuple(functions.values()))
         self.recursion = sys.getrecursionlimit()
         self.hooks = sys.gettrace(), sys.getprofile()
         self.imports: list[tuple[list[Any], list[Any]]] = [
@@ -181,8 +143,9 @@ class Restore:
         for where, kept in self.spaces + self.fields:
             _put_back(where, kept)
         for cls, saved in self.classes:
-            if _unchanged(vars(cls), _snapshot(saved)):
-                continue
+            now = vars(cls)
+            if len(now) == len(saved) and all(map(is_, now.values(), saved.values())) and all(map(is_, now, saved)):
+                continue  # unchanged: the same names bound to the same objects, in the same order
             for name in set(vars(cls)) - set(saved):
                 _quietly(delattr, cls, name)
             for name, value in saved.items():
@@ -218,7 +181,7 @@ def _snapshot(space: dict) -> tuple[tuple, tuple]:
     return tuple(space), tuple(space.values())
 
 
-def _unchanged(space: Mapping, snapshot: tuple[tuple, tuple]) -> bool:
+def _unchanged(space: dict, snapshot: tuple[tuple, tuple]) -> bool:
     """Whether ``space`` binds the same names to the same objects, in the same order (by identity:
     an object's ``==`` is not to be trusted, nor called)."""
     keys, values = snapshot
