@@ -2,7 +2,7 @@
 sub-path, as on a GitHub Pages project site, driven by Playwright in Chromium.
 
 Every request to any other origin fails (the browser resolves no other host) and
-is counted; a test fails if one was made. Every context any test opens watches the
+is counted; a test fails if one was made. Every context a test opens (new_context) watches the
 site's Content-Security-Policy (``policy_watch.py``): a test fails if the policy
 blocked anything while it ran. Tests marked ``uncached`` (the offline
 ones) also route every request, which turns the browser's HTTP cache off. The browser is Playwright's own where installed, else Debian's
@@ -105,7 +105,7 @@ watch_every_context()
 
 @pytest.fixture(autouse=True)
 def policy_kept():
-    """No test may see the site's policy block anything, in any page or worker of any context."""
+    """No test may see the site's policy block anything in a page of any context it opened."""
     BLOCKED.clear()
     yield BLOCKED
     found = list(BLOCKED)
