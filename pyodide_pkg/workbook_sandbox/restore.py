@@ -43,7 +43,7 @@ import builtins
 import random
 import sys
 import types
-from collections.abc import Iterable
+from collections.abc import Iterable, Mapping
 from operator import attrgetter, is_
 from typing import Any, cast
 
@@ -117,7 +117,8 @@ class Restore:
             + [vars(obj) for obj in self.objects if hasattr(obj, "__dict__")]
         functions = {id(fn): fn for space in holders for value in list(space.values())
                      if isinstance(value, _HOLDS_CODE) for fn in _functions_of(value)}
-        self.functions = tuple(functions.values()), _function_states(tuple(functions.values()))
+        found = tuple(functions.values())
+        self.functions = found, _function_states(found)
         self.recursion = sys.getrecursionlimit()
         self.hooks = sys.gettrace(), sys.getprofile()
         self.imports: list[tuple[list[Any], list[Any]]] = [
@@ -143,9 +144,8 @@ class Restore:
         for where, kept in self.spaces + self.fields:
             _put_back(where, kept)
         for cls, saved in self.classes:
-            now = vars(cls)
-            if len(now) == len(saved) and all(map(is_, now.values(), saved.values())) and all(map(is_, now, saved)):
-                continue  # unchanged: the same names bound to the same objects, in the same order
+            if _same_binding(vars(cls), saved):
+                continue
             for name in set(vars(cls)) - set(saved):
                 _quietly(delattr, cls, name)
             for name, value in saved.items():
@@ -188,9 +188,15 @@ def _unchanged(space: dict, snapshot: tuple[tuple, tuple]) -> bool:
     return len(space) == len(keys) and all(map(is_, space, keys)) and all(map(is_, space.values(), values))
 
 
+def _same_binding(space: Mapping, saved: Mapping) -> bool:
+    """Whether ``space`` binds the names of ``saved`` to the same objects, in the same order (by
+    identity, as :func:`_unchanged`, against a saved copy instead of a snapshot)."""
+    return len(space) == len(saved) and all(map(is_, space, saved)) and all(map(is_, space.values(), saved.values()))
+
+
 def _same_items(container: Any, saved: Any) -> bool:
     if isinstance(container, dict):
-        return _unchanged(container, _snapshot(saved))
+        return _same_binding(container, saved)
     if isinstance(container, list):
         return len(container) == len(saved) and all(map(is_, container, saved))
     return container == saved

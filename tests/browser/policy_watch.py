@@ -4,7 +4,9 @@
 ``context`` and ``page`` fixtures call too; not ``Browser.new_page``, which only the test of a
 page opened from a file uses) add a watcher to each new context: the
 document's ``securitypolicyviolation`` events, in every page and frame, and the
-console's reports of a blocked load (how Chromium reports one in a worker). What
+console messages of its pages that report a blocked load. (What the policy blocks
+inside a dedicated worker reaches neither; the sandbox's attack tests check its
+worker themselves.) What
 is seen goes into ``BLOCKED``; conftest's ``policy_kept`` fails the test that was
 running. So every test that uses the site also checks that nothing it does breaks
 the policy (test_csp.py checks that the watcher sees a violation when there is one).

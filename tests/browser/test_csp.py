@@ -6,8 +6,8 @@ grades, runs a Build exercise in the editor and the sandbox, moves a figure's sl
 opens a derivation (KaTeX and its fonts), searches (the theme's search worker),
 navigates instantly or stores the site for offline use fails if the policy blocked
 anything on the way. Here: the policy itself, proof that the watcher sees a
-violation when there is one, and every page of the sitemap loaded under the policy
-with the service worker serving it."""
+violation when there is one, and every page of the sitemap loaded under the policy,
+the service worker allowed (registered, and beginning the offline copy, on the home page)."""
 
 from __future__ import annotations
 

@@ -65,7 +65,6 @@ function waitsForWord() {
   return metered() || Boolean(window.matchMedia?.(NARROW).matches);
 }
 
-
 /** Ask once (ever, per site) for storage the browser will not evict on its own. */
 async function askToPersist(note) {
   const storage = navigator.storage;
