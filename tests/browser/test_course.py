@@ -228,11 +228,14 @@ def test_class_page_runs_build_code_again(page, site_url):
     assert page.evaluate("() => window.workbook.sandbox.restarts + (window.workbook.sandbox.recycles || 0)") >= 1
 
 
+COURSE_PAGES = ("teach/", LINK, "class/")  # audited here; test_a11y's pages are the rest (test_csp checks the union)
+
+
 @pytest.mark.parametrize("width", [1280, 360])
 def test_axe_finds_nothing_on_the_course_pages(page, site_url, width):
     page.set_viewport_size({"width": width, "height": 800})
     found = {}
-    for path in ("teach/", LINK, "class/"):
+    for path in COURSE_PAGES:
         page.goto(site_url + path)
         if path == "teach/":
             page.wait_for_selector("[data-wb-teach] form")
