@@ -96,6 +96,21 @@ def test_same_id_same_numbers_in_two_browsers_and_the_class_page_recomputes_them
         attempts = data["records"]["0.1"]["assigned"][CODE]["attempts"]
         assert [t["status"] for t in attempts] == ["incorrect", "correct"] and attempts[0]["slip"].startswith("slip: ")
         assert data["records"]["0.1"]["slips"] == {attempts[0]["slip"]: 1}
+        # A reload shows the last answer given to the assignment's numbers again, solved. The chapter's
+        # own last answer (to its own numbers, which chains carry forward) is not the assignment's.
+        a.reload()
+        wait_assigned(a)
+        ex = a.locator("[data-wb-slot='0.1'] [data-exercise-id]")
+        assert ex.locator(role("answer")).input_value() == typed("0.1", want["0.1"], made.key)
+        assert ex.get_attribute("data-state") == "correct"
+        assert a.evaluate("() => window.workbook.progress.get('0.1').last ?? null") is None
+        # Back from practice numbers, the same.
+        ex.locator(role("new-variant")).click()
+        a.wait_for_function("() => document.querySelector(\"[data-wb-slot='0.1'] [data-exercise-id]\").dataset.wbAssigned === 'false'")
+        assert ex.locator(role("answer")).input_value() == ""
+        a.locator("[data-wb-slot='0.1'] [data-wb-action='assigned-numbers']").click()
+        wait_assigned(a)
+        assert ex.locator(role("answer")).input_value() == typed("0.1", want["0.1"], made.key)
         # The class page recomputes the numbers from the class code and the id, and grades them.
         a.goto(site_url + "class/")
         a.locator("#wb-class-files").set_input_files(str(handed))

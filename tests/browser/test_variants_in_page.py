@@ -143,6 +143,8 @@ def test_the_review_queue_after_a_miss_and_after_a_solve(page, site_url):
     assert settle(el) == "correct"
     r = record(page, EX)
     assert r["box"] == 2 and n in r["clean"] and n in r["done"]
+    # The chapter's last answer (to its own numbers, 0: chains carry it as such) is still the miss.
+    assert r["last"] == "12345" and r.get("variant", 0) == 0
     expect(page.locator(".wb-practise-status")).to_contain_text("comes back in 24 hours")
     assert "variant" not in page.url  # the Practise page does not change the chapter's numbers
     page.goto(site_url)

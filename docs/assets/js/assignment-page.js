@@ -81,7 +81,13 @@ function markVariant(node, assigned, back) {
   back.hidden = mine;
 }
 
-async function showExercise(slot, manifest, id, siteRoot, shared, variant) {
+/** The last answer graded for class `key`'s numbers of exercise `id` (the variant `variant`), if any. */
+function lastAssigned(progress, key, id, variant) {
+  const entry = progress.get(id).assigned?.[key];
+  return entry?.variant === variant ? entry.attempts.at(-1)?.answer ?? null : null;
+}
+
+async function showExercise(slot, manifest, id, siteRoot, shared, variant, key) {
   const chapter = manifest.chapters.find((c) => c.ids.includes(id));
   const href = new URL(chapter.url, siteRoot).href;
   const doc = await chapterPage(href);
@@ -95,9 +101,10 @@ async function showExercise(slot, manifest, id, siteRoot, shared, variant) {
   slot.replaceChildren(heading, from, node, back);
   if (variant) {
     new MutationObserver(() => markVariant(node, variant, back)).observe(node, { attributes: true, attributeFilter: [ATTR.variant] });
-    back.addEventListener("click", () => showExercise(slot, manifest, id, siteRoot, shared, variant).then(() => slot.querySelector("h2")?.focus?.()));
+    back.addEventListener("click", () => showExercise(slot, manifest, id, siteRoot, shared, variant, key).then(() => slot.querySelector("h2")?.focus?.()));
   }
-  initExercise(node, { ...shared, ...(variant ? { start: variant } : {}) });
+  // A reload, or the way back from practice numbers, shows the last answer given to the assignment's numbers.
+  initExercise(node, { ...shared, ...(variant ? { start: variant, resume: lastAssigned(shared.progress, key, id, variant) } : {}) });
 }
 
 function handIn(progress, assignment, student) {
@@ -150,7 +157,7 @@ export async function initAssignment(shared, siteRoot) {
       const slot = el("li", { className: "wb-practise-card" }, el("p", { textContent: `Loading exercise ${id}…` }));
       slot.dataset.wbSlot = id;
       list.append(slot);
-      showExercise(slot, manifest, id, siteRoot, mine, variants.get(id)).catch((err) => {
+      showExercise(slot, manifest, id, siteRoot, mine, variants.get(id), assignment.code).catch((err) => {
         slot.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Reload the page to try again.` }));
       });
     }

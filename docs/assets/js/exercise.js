@@ -117,6 +117,9 @@ function exerciseContext(el, shared) {
     // The variant on screen: a Derive exercise's numbers (variants.js changes it), a Build exercise's
     // hidden tests (a review starts a fresh seed), and what a review's answers count for.
     variant: shared.start ?? 0,
+    // The answer to put back in the variant `start` forces (the assignment page: the last one
+    // graded for the assignment's numbers), else null; the chapter's own is the record's `last`.
+    resume: shared.resume ?? null,
     remember: false, // variants.js: whether the variant on screen is kept (in the record and the address)
     reviewed: REVIEW_KINDS.includes(kind), // Derive, Build and Debug join the review queue
     guessable: kind === "debug", // a bug found after wrong lines is solved, not clean (review.js)

@@ -17,14 +17,18 @@ export async function init(ctx) {
   ctx.steps = initSteps(ctx); // "Work it in steps", when the exercise has checked steps
   if (ctx.el.hasAttribute(ATTR.templates)) await initVariants(ctx, { start: ctx.start ?? null });
   const saved = ctx.progress.get(ctx.id);
-  if (saved.last !== undefined && ctx.start == null && ctx.variant === (saved.variant ?? 0)) field.restore(saved.last);
+  if (ctx.start == null) {
+    if (saved.last !== undefined && ctx.variant === (saved.variant ?? 0)) field.restore(saved.last);
+  } else if (ctx.resume != null && ctx.variant === ctx.start) field.restore(ctx.resume);
   if (ctx.start == null) await ctx.steps?.restore();
   ownQuery(ctx.el, "form").addEventListener("submit", async (event) => {
     event.preventDefault();
     const answer = field.value();
     const steps = ctx.steps?.answers();
+    // The record's `last` is the chapter's answer, to its own numbers: an answer to numbers a page forced
+    // (the Practise page's review, an assignment's) is not put there, or the chapter would show it.
     const reply = await ctx.submit("grade", { answer, given: givenFor(ctx), ...(steps && Object.keys(steps).length ? { steps } : {}) },
-      { saved: { last: answer } });
+      { saved: ctx.start == null ? { last: answer } : {} });
     field.show?.(reply);
     showCarried(ctx.el, reply);
     afterFinal(ctx, reply);
