@@ -81,9 +81,9 @@ def pytest_configure(config):
 
 # The longest files first, so that the two processes end together (longest job first); a file
 # that sets ``SPREAD = True`` has tests that share nothing, and they are shared out one by one.
-LONGEST_FIRST = ("test_a11y", "test_sandbox", "test_offline", "test_chapters", "test_skeleton", "test_offline_truth",
-                 "test_progress_kept", "test_nothing_undone", "test_progress", "test_course", "test_first_hour",
-                 "test_code_the_robot", "test_offline_state", "test_scorm", "test_answer_kinds", "test_start_explained")  # as measured (summed test time per file)
+LONGEST_FIRST = ("test_a11y", "test_sandbox", "test_offline", "test_chapters", "test_skeleton", "test_course",
+                 "test_progress_kept", "test_first_hour", "test_nothing_undone", "test_offline_truth", "test_progress",
+                 "test_code_the_robot", "test_scorm", "test_offline_state", "test_answer_kinds", "test_page_keeps")  # as measured (summed test time per file)
 
 
 def pytest_collection_modifyitems(config, items):

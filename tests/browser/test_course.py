@@ -47,6 +47,12 @@ def shown_variants(page: Page) -> dict[str, int]:
       .map(e => [e.dataset.exerciseId, Number(e.dataset.variant)]))""")
 
 
+def practice_numbers(page: Page, ex_id: str) -> None:
+    """Press "New numbers" on exercise ``ex_id`` of the assignment and wait until its practice numbers are shown."""
+    page.locator(f"[data-wb-slot='{ex_id}'] [data-exercise-id] " + role("new-variant")).click()
+    page.wait_for_function("id => document.querySelector(`[data-wb-slot='${id}'] [data-exercise-id]`).dataset.wbAssigned === 'false'", arg=ex_id)
+
+
 def typed(ex_id: str, variant: int, value) -> str:
     answer = bank.variant(ex_id, variant).answer
     return str(answer.typed(value))
@@ -72,8 +78,7 @@ def test_same_id_same_numbers_in_two_browsers_and_the_class_page_recomputes_them
         assert shown_variants(a) == want
         # New numbers are practice, marked so; the button brings the assignment's back.
         ex = a.locator("[data-wb-slot='0.1'] [data-exercise-id]")
-        ex.locator(role("new-variant")).click()
-        a.wait_for_function("() => document.querySelector(\"[data-wb-slot='0.1'] [data-exercise-id]\").dataset.wbAssigned === 'false'")
+        practice_numbers(a, "0.1")
         assert "Practice numbers" in ex.locator(role("variant-label")).text_content()
         a.locator("[data-wb-slot='0.1'] [data-wb-action='assigned-numbers']").click()
         wait_assigned(a)
@@ -105,8 +110,7 @@ def test_same_id_same_numbers_in_two_browsers_and_the_class_page_recomputes_them
         assert ex.get_attribute("data-state") == "correct"
         assert a.evaluate("() => window.workbook.progress.get('0.1').last ?? null") is None
         # Back from practice numbers, the same.
-        ex.locator(role("new-variant")).click()
-        a.wait_for_function("() => document.querySelector(\"[data-wb-slot='0.1'] [data-exercise-id]\").dataset.wbAssigned === 'false'")
+        practice_numbers(a, "0.1")
         assert ex.locator(role("answer")).input_value() == ""
         a.locator("[data-wb-slot='0.1'] [data-wb-action='assigned-numbers']").click()
         wait_assigned(a)

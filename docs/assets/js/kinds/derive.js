@@ -19,8 +19,8 @@ export async function init(ctx) {
   const saved = ctx.progress.get(ctx.id);
   if (ctx.start == null) {
     if (saved.last !== undefined && ctx.variant === (saved.variant ?? 0)) field.restore(saved.last);
+    await ctx.steps?.restore();
   } else if (ctx.resume != null && ctx.variant === ctx.start) field.restore(ctx.resume);
-  if (ctx.start == null) await ctx.steps?.restore();
   ownQuery(ctx.el, "form").addEventListener("submit", async (event) => {
     event.preventDefault();
     const answer = field.value();
