@@ -72,8 +72,9 @@ def test_progress_survives_reload_and_instant_navigation(page, site_url):
     page.reload()
     wait_runtime(page, timeout=120_000)
     assert exercise(page, "0.1").get_attribute("data-state") == "correct"
-    assert exercise(page, "0.1").locator(role("answer")).input_value() == "3"
-    assert exercise(page, "0.3").locator(role("choice") + '[value="a"]').is_checked()
+    # put back as each exercise starts, which may end after the grader is ready
+    expect(exercise(page, "0.1").locator(role("answer"))).to_have_value("3")
+    expect(exercise(page, "0.3").locator(role("choice") + '[value="a"]')).to_be_checked()
     expect(page.locator(SOLVED_BAR)).to_contain_text(f"1 of {len(bank.chapter(0))} exercises")
 
     # Instant navigation: the same document all along.
