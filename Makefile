@@ -36,7 +36,7 @@ OVERRIDES := $(shell find docs/overrides -type f)
 PAGES := $(shell find docs -type f -not -path 'docs/assets/vendor/*' -not -path 'docs/assets/dist/*' \
   -not -path 'docs/assets/js/*' -not -path 'docs/hooks/*' -not -path 'docs/overrides/*' -not -name '*.pyc')
 
-.PHONY: serve site lint test test-unit test-browser bench deps browser clean dev lock python312 scorm
+.PHONY: serve site lint test test-unit test-browser bench deps browser full-browser clean dev lock python312 scorm
 
 # ---- Python 3.12 -------------------------------------------------------------------
 # Where none is found, the first install says so and provides one with uv (`make python312`).
@@ -156,6 +156,19 @@ browser: $(BIN)/.test
 	  { echo "make browser: no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; }
 	@echo "browser: $$($(BIN)/python scripts/find_browser.py)"
 
+# The bench measures the whole browser, as learners run it (not the tests' headless shell):
+# Debian's chromium, installed the same way where there is none.
+full-browser: $(BIN)/.test
+	@if $(BIN)/python scripts/find_browser.py --full >/dev/null; then :; \
+	elif command -v apt-get >/dev/null; then \
+	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo "sudo -n" ); \
+	  echo "make full-browser: installing Debian's Chromium: $$SUDO apt-get install chromium"; \
+	  ( $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium >/dev/null ) || \
+	    echo "make full-browser: could not install it"; fi
+	@$(BIN)/python scripts/find_browser.py --full >/dev/null || \
+	  { echo "make full-browser: no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; }
+	@echo "browser for the bench: $$($(BIN)/python scripts/find_browser.py --full)"
+
 # Both suites run on TEST_JOBS processes (pytest-xdist): the unit tests one by one, the browser
 # tests a file at a time (a file's tests share its fixtures), longest file first, and the tests of
 # a file that declares SPREAD one by one (tests/browser/conftest.py).
@@ -186,7 +199,7 @@ test: lint site browser
 	$(UNIT)
 	$(BROWSER)
 
-bench: site browser
+bench: site full-browser
 	cd scripts && ../$(BIN)/python -m bench $(BENCH_ARGS)
 
 clean:

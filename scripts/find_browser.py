@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Print the Chromium the tests drive. Exits 1 when there is none. Used by the Makefile,
+"""Print the Chromium the tests drive (``--full``: the whole browser, which the bench drives).
+Exits 1 when there is none. Used by the Makefile,
 tests/browser/conftest.py and scripts/bench (which asks for the full browser, as learners run it).
 
 Headless Chromium comes in two builds of one engine: the full browser run without a window,
@@ -57,7 +58,7 @@ if __name__ == "__main__":
             sys.exit(0)
         path = find_browser()
         sys.exit(0 if path and Path(path).name in SHELLS else 1)
-    path = find_browser()
+    path = find_browser(shell=sys.argv[1:] != ["--full"])  # --full: the whole browser (make bench)
     if not path:
         sys.exit(1)
     print(path)

@@ -8,8 +8,10 @@ is wrong, the grader asks whether it follows from what the learner wrote before:
   graded (right or wrong), and the learner's wrong answers to the earlier
   exercises; a step left out is recomputed by the generator;
 - the key is recomputed by the exercise's own generator, ``make(p, given=...)``,
-  and compared with a tolerance that also has an absolute floor from the
-  question's scale (a key that cancels to near 0 is not judged on figures);
+  and each entry is compared as a direct answer's entry is (``tolerance.agrees``),
+  except an entry that cancels to near 0 on the question's scale (no larger than
+  1e-3 of its largest entry): that one is within that much, as a key of 0 is,
+  not judged on figures;
 - when it follows, the verdict names the **last** of the learner's wrong values it
   follows from (replacing that value by the right one would break it), and where
   that value's slip started: a step of this exercise, an earlier exercise, or,
@@ -195,8 +197,12 @@ def _entries(key: Any) -> list[float]:
 
 
 def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
-    """``answer`` (read as ``kind`` reads it) agrees with ``target``'s key, with a floor from the
-    scale of the question: the larger of the right key's and the recomputed key's entries."""
+    """``answer`` (read as ``kind`` reads it) agrees with ``target``'s key, entry by entry as a
+    direct answer does. The scale of the question (the largest of the right key's and the
+    recomputed key's entries) sets a floor for the entries that cancel only: an entry of the
+    recomputed key within 1e-3 of that scale of 0 takes any value within as much of it. Every
+    other entry is held to its own figures: a floor for all of them would credit 0.101 for 0.1
+    beside an entry of 3.8, which a direct answer's check refuses."""
     reading = kind.reader.read(kind, answer)
     if isinstance(reading, Verdict):
         return False
@@ -220,7 +226,8 @@ def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
         want = clean(want)
         if turn:
             value = want + math.remainder(value - want, turn)
-        if not agrees(value, want, rel=getattr(kind, "rel_tol", REL), half_unit=half, floor=floor):
+        cancels = abs(want) <= floor
+        if not agrees(value, want, rel=getattr(kind, "rel_tol", REL), half_unit=half, floor=floor if cancels else 0.0):
             return False
     return True
 

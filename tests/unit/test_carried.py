@@ -148,3 +148,32 @@ def test_after_a_wrong_3_7_the_steps_of_3_8_point_to_3_7():
         two = grade(v, v.step_answers["FPF"].typed(fpf.key), step="FPF", mine={"FP": t1}, given=given)
         for said in (one, two):
             assert said["tag"] == "carried" and said["data"]["carried"].get("from") == "3.7", said
+
+
+def test_only_an_entry_that_cancels_is_judged_on_the_questions_scale():
+    """3.8 after a wrong 3.7: the answer as the learner's F gives it is carried; with one entry
+    that does not cancel off by 0.9 of the floor the question's scale sets (beyond that entry's
+    own figures, which a direct answer's check holds it to), it is not."""
+    rng = random.Random(39)
+    checked = 0
+    for v in variants("3.8", 30):
+        (link,) = v.uses
+        at = link.variant(v.params)
+        if at is None:
+            continue
+        source = bank.variant("3.7", at)
+        rows = [list(r) for r in source.answer.key]
+        rows[0][2] += 0.5 + rng.random()
+        typed = source.answer.typed(tuple(map(tuple, rows)))
+        given = {"3.7": {"answer": typed, "variant": at}}
+        key = v.carried_answer({"F": read(source.answer, typed)}).key
+        floor = 1e-3 * max(abs(x) for row in (*key, *v.answer.key) for x in row)
+        small = [(abs(x), i, j) for i, row in enumerate(key) for j, x in enumerate(row) if abs(x) > 3 * floor]
+        _, i, j = min(small)
+        answer = v.answer.typed(key)
+        assert grade(v, answer, given=given)["tag"] == "carried"
+        answer[i][j] = f"{key[i][j] + 0.9 * floor:.8g}"
+        said = grade(v, answer, given=given)
+        assert said["tag"] != "carried" and said["status"] != "correct", (v.seed, key[i][j], answer[i][j], said)
+        checked += 1
+    assert checked >= 10
