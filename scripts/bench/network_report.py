@@ -49,22 +49,37 @@ def _med(net: dict, profile: str, key: str):
     return ((net.get(profile) or {}).get("metrics", {}).get(key) or {}).get("median")
 
 
+def wire_ratio(net: dict, profile: str) -> float | None:
+    """Ready over the time the bytes fetched before ready take on the profile's link, plus one
+    round trip (issue 29: a start bound by the network, not by the CPU, stays within 1.5x of it)."""
+    link = PROFILES[profile].link if profile in PROFILES else None
+    ready, sent = _med(net, profile, "ready_ms"), _med(net, profile, "bytes_before_ready")
+    if link is None or not ready or not sent:
+        return None
+    return ready / (sent * 8 / link.bandwidth_bps * 1000 + link.rtt_ms)
+
+
 def network_targets(net: dict) -> list[dict]:
-    """Issue 14's targets for the network profiles (the localhost ones are in report.py)."""
+    """Issues 14's and 29's targets for the network profiles (the localhost ones are in report.py)."""
     targets = []
 
     def add(name, value, limit, note=""):
         targets.append({"target": name, "value": value, "limit": limit,
                         "met": None if value is None else value <= limit, "note": note})
 
-    add("10 Mbps: ready <= 0.8 x baseline", _med(net, "10mbps", "ratio_ready_ms"), 0.8, "median of per-run ratios")
+    add("10 Mbps: ready <= 0.7 x baseline", _med(net, "10mbps", "ratio_ready_ms"), 0.7,
+        "median of per-run ratios (issue 29; issue 14 asked 0.8)")
+    wire = wire_ratio(net, "10mbps")
+    add("10 Mbps: ready <= 1.5 x its own wire time", wire, 1.5,
+        "median ready / (median bytes before ready at the link's bandwidth + one round trip): "
+        "a lower bound of the wire time, so the ratio errs high")
     add("10 Mbps: bytes before ready <= 0.8 x baseline", _med(net, "10mbps", "ratio_bytes_before_ready"), 0.8,
         "median of per-run ratios, bytes as sent (gzip)")
-    add("phone: ready <= 1.0 x baseline", _med(net, "phone", "ratio_ready_ms"), 1.0,
-        "median of per-run ratios; CPU x4 slows the main thread only, not our worker")
+    add("phone: ready <= 0.6 x baseline", _med(net, "phone", "ratio_ready_ms"), 0.6,
+        "median of per-run ratios (issue 29; issue 14 asked 1.0); CPU x4 slows the main thread only, not our worker")
     lcp = _med(net, "phone", "lcp_ms")
     add("phone: largest contentful paint <= 2.5 s", None if lcp is None else lcp / 1000, 2.5, "seconds, median")
-    # Issue 14 sets these two "on this machine": the profiles without a CPU slowdown.
+    # Issue 14 sets the first grade "on this machine": the profiles without a CPU slowdown.
     # The phone profile's numbers (4x slower main thread) are shown beside them.
     native = [p for p in net if p not in PROFILES or PROFILES[p].cpu_slowdown <= 1]
     slowed = [p for p in net if p not in native]
@@ -76,9 +91,9 @@ def network_targets(net: dict) -> list[dict]:
     def shown(key, fmt):
         return ", ".join(f"{p} {fmt(_med(net, p, key))}" for p in net if _med(net, p, key) is not None)
 
-    add("total blocking time nav -> ready <= 300 ms (this machine: profiles without CPU slowdown)",
-        worst("tbt_ms"), 300.0, "worst median; " + shown("tbt_ms", lambda v: f"{v:.0f} ms")
-        + (f" ({', '.join(slowed)}: CPU x4, for information)" if slowed else ""))
+    tbt = [v for v in (_med(net, p, "tbt_ms") for p in net) if v is not None]
+    add("total blocking time nav -> ready <= 300 ms on every profile (issue 29; CPU x4 on the phone included)",
+        max(tbt) if tbt else None, 300.0, "worst median; " + shown("tbt_ms", lambda v: f"{v:.0f} ms"))
     counts = {p: (net[p]["metrics"].get("fetched_twice_count") or {}).get("max") for p in net}
     known = [v for v in counts.values() if v is not None]
     files = sorted({f for p in net for f in net[p]["fetched_twice"]})

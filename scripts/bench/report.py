@@ -90,6 +90,10 @@ def evaluate_targets(m: dict, runs: list[dict]) -> list[dict]:
 
     rw, rc = med("ratio_warm"), med("ratio_cold")
     add("warm ready <= 0.5 x baseline warm", rw, 0.5, None if rw is None else rw <= 0.5, "median of per-run ratios")
+    warm, cold = med("ready_warm_ms"), med("ready_cold_ms")
+    both = bool(warm and cold)
+    add("warm ready never slower than a cold start (ours, warm / cold)", warm / cold if both else None, 1.0,
+        warm <= cold if both else None, "medians (issue 29)")
     add("localhost: cold ready <= 0.6 x baseline cold", rc, 0.6, None if rc is None else rc <= 0.6,
         "median of per-run ratios (issue 14; was 0.8)")
     p50s = {k: med(f"grade_{k}_p50_ms") for k in GRADED}
