@@ -6,27 +6,19 @@
 // browser is idle after the Python runtime has started, or at once when the
 // learner clicks, focuses or runs it: opening a chapter never waits for, or
 // stutters on, an editor nobody is looking at yet.
-import { ATTR, ROLE, RUNTIME, ownRole } from "../contract.js";
+import { ROLE, ownRole } from "../contract.js";
 import { renderTests, setPending, showMessage } from "../feedback.js";
 import { runFigure } from "../run-figure.js";
 import { withSandbox } from "../sandbox-client.js";
 import { showSandboxStart } from "../loading.js";
+import { delay, idle, runtimeReady, runtimeSettled } from "../wait.js";
 
-const runtimeSettled = new Promise((resolve) => {
-  const done = () => document.documentElement.getAttribute(ATTR.runtime) !== RUNTIME.loading;
-  if (done()) return resolve();
-  const onChange = () => done() && (document.removeEventListener("workbook:runtime", onChange), resolve());
-  document.addEventListener("workbook:runtime", onChange);
-  setTimeout(resolve, 8000); // a slow start should not keep the editor away for long
-});
-// The grader ready (not merely given up on): the sandbox's start must not compete with the grader's.
-const graderReady = new Promise((resolve) => {
-  const ready = () => document.documentElement.getAttribute(ATTR.runtime) === RUNTIME.ready;
-  if (ready()) return resolve();
-  const onChange = () => ready() && (document.removeEventListener("workbook:runtime", onChange), resolve());
-  document.addEventListener("workbook:runtime", onChange);
-});
-const whenIdle = () => new Promise((resolve) => (self.requestIdleCallback ? requestIdleCallback(resolve, { timeout: 1500 }) : setTimeout(resolve, 50)));
+const EDITOR_WAITS_MS = 8000; // a slow start of the grader should not keep the editor away for long
+const IDLE_MS = 1500;
+// The editor, once the grader has settled (or a while has passed) and the browser is idle.
+const editorMayOpen = () => Promise.race([runtimeSettled(), delay(EDITOR_WAITS_MS)]).then(() => idle(IDLE_MS));
+// The sandbox, once the grader is ready (its start must not compete with the grader's) and the browser is idle.
+const sandboxMayStart = () => runtimeReady().then(() => idle(IDLE_MS));
 
 /** The plain code first, the editor when it is wanted; `code()` is always the latest text. */
 function lazyEditor(ctx, host, onRun) {
@@ -67,7 +59,7 @@ function lazyEditor(ctx, host, onRun) {
   const nearView = new IntersectionObserver((entries) => {
     if (!entries.some((entry) => entry.isIntersecting)) return;
     nearView.disconnect();
-    runtimeSettled.then(whenIdle).then(open);
+    editorMayOpen().then(open);
   }, { rootMargin: "400px 0px" });
   nearView.observe(host);
   const openNow = () => {
@@ -105,7 +97,7 @@ export function init(ctx) {
   const nearSandbox = new IntersectionObserver((entries) => {
     if (!entries.some((entry) => entry.isIntersecting)) return;
     nearSandbox.disconnect();
-    graderReady.then(whenIdle).then(prepare);
+    sandboxMayStart().then(prepare);
   }, { rootMargin: "150% 0px" });
   nearSandbox.observe(ctx.el);
   ctx.el.addEventListener("focusin", prepare, { once: true });
