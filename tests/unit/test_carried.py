@@ -129,8 +129,10 @@ def test_a_folded_elbow_leaves_theta1_undefined():
     pytest.fail("no draw of 6.3 asks for θ1")
 
 
-def test_after_a_wrong_3_7_the_steps_of_3_8_point_to_3_7():
-    rng = random.Random(38)
+def after_a_wrong_3_7(seed: int):
+    """Draws of 3.8 that carry 3.7's result, each with a wrong F(1,3) typed in 3.7:
+    (the draw, 3.7's answer kind, the wrong F as typed, the request's ``given``)."""
+    rng = random.Random(seed)
     for v in variants("3.8", 30):
         (link,) = v.uses
         at = link.variant(v.params)
@@ -140,11 +142,15 @@ def test_after_a_wrong_3_7_the_steps_of_3_8_point_to_3_7():
         rows = [list(r) for r in source.answer.key]
         rows[0][2] += 0.5 + rng.random()
         typed = source.answer.typed(tuple(map(tuple, rows)))
-        given = {"3.7": {"answer": typed, "variant": at}}
-        fp = v.carried_steps({"F": read(source.answer, typed)})["FP"]
+        yield v, source.answer, typed, {"3.7": {"answer": typed, "variant": at}}
+
+
+def test_after_a_wrong_3_7_the_steps_of_3_8_point_to_3_7():
+    for v, source, typed, given in after_a_wrong_3_7(38):
+        fp = v.carried_steps({"F": read(source, typed)})["FP"]
         t1 = v.step_answers["FP"].typed(fp.key)
         one = grade(v, t1, step="FP", given=given)
-        fpf = v.carried_steps({"F": read(source.answer, typed), "FP": read(v.step_answers["FP"], t1)})["FPF"]
+        fpf = v.carried_steps({"F": read(source, typed), "FP": read(v.step_answers["FP"], t1)})["FPF"]
         two = grade(v, v.step_answers["FPF"].typed(fpf.key), step="FPF", mine={"FP": t1}, given=given)
         for said in (one, two):
             assert said["tag"] == "carried" and said["data"]["carried"].get("from") == "3.7", said
@@ -154,19 +160,9 @@ def test_only_an_entry_that_cancels_is_judged_on_the_questions_scale():
     """3.8 after a wrong 3.7: the answer as the learner's F gives it is carried; with one entry
     that does not cancel off by 0.9 of the floor the question's scale sets (beyond that entry's
     own figures, which a direct answer's check holds it to), it is not."""
-    rng = random.Random(39)
     checked = 0
-    for v in variants("3.8", 30):
-        (link,) = v.uses
-        at = link.variant(v.params)
-        if at is None:
-            continue
-        source = bank.variant("3.7", at)
-        rows = [list(r) for r in source.answer.key]
-        rows[0][2] += 0.5 + rng.random()
-        typed = source.answer.typed(tuple(map(tuple, rows)))
-        given = {"3.7": {"answer": typed, "variant": at}}
-        key = v.carried_answer({"F": read(source.answer, typed)}).key
+    for v, source, typed, given in after_a_wrong_3_7(39):
+        key = v.carried_answer({"F": read(source, typed)}).key
         floor = 1e-3 * max(abs(x) for row in (*key, *v.answer.key) for x in row)
         small = [(abs(x), i, j) for i, row in enumerate(key) for j, x in enumerate(row) if abs(x) > 3 * floor]
         _, i, j = min(small)
