@@ -141,33 +141,32 @@ $(SCORM_ZIPS) &: site/.stamp scripts/scorm_package.py $(wildcard scripts/scorm/*
 scorm: $(SCORM_ZIPS)
 
 # ---- Tests ----------------------------------------------------------------------------
-# A browser for the tests: a headless shell of Chromium (scripts/find_browser.py says why),
-# Debian's or Playwright's own. Where there is none, this installs Debian's
-# chromium-headless-shell with apt-get, and says so first; if that cannot be done, a full
-# Chromium already there is used instead (slower, the same results).
-browser: $(BIN)/.test
-	@if $(BIN)/python scripts/find_browser.py --shell; then :; \
+# $(call chromium,TARGET,THERE,PACKAGE,WHAT,FIND): where `find_browser.py THERE` finds none, install
+# Debian's PACKAGE (WHAT, for the message) with apt-get (with sudo when not root), saying so first;
+# then `find_browser.py FIND` must name one, else the target fails with what to do.
+define chromium
+	@if $(BIN)/python scripts/find_browser.py $(2) >/dev/null; then :; \
 	elif command -v apt-get >/dev/null; then \
 	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo "sudo -n" ); \
-	  echo "make browser: installing Debian's headless Chromium: $$SUDO apt-get install chromium-headless-shell"; \
-	  ( $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium-headless-shell >/dev/null ) || \
-	    echo "make browser: could not install it"; fi
-	@$(BIN)/python scripts/find_browser.py >/dev/null || \
-	  { echo "make browser: no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; }
-	@echo "browser: $$($(BIN)/python scripts/find_browser.py)"
+	  echo "make $(1): installing Debian's $(4): $$SUDO apt-get install $(3)"; \
+	  ( $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq $(3) >/dev/null ) || \
+	    echo "make $(1): could not install it"; fi
+	@$(BIN)/python scripts/find_browser.py $(5) >/dev/null || \
+	  { echo "make $(1): no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; }
+	@echo "$(1): $$($(BIN)/python scripts/find_browser.py $(5))"
+endef
+
+# A browser for the tests: a headless shell of Chromium (scripts/find_browser.py says why),
+# Debian's or Playwright's own. Where there is none, this installs Debian's
+# chromium-headless-shell, and says so first; if that cannot be done, a full
+# Chromium already there is used instead (slower, the same results).
+browser: $(BIN)/.test
+	$(call chromium,browser,--shell,chromium-headless-shell,headless Chromium,)
 
 # The bench measures the whole browser, as learners run it (not the tests' headless shell):
 # Debian's chromium, installed the same way where there is none.
 full-browser: $(BIN)/.test
-	@if $(BIN)/python scripts/find_browser.py --full >/dev/null; then :; \
-	elif command -v apt-get >/dev/null; then \
-	  SUDO=$$( [ "$$(id -u)" = 0 ] || echo "sudo -n" ); \
-	  echo "make full-browser: installing Debian's Chromium: $$SUDO apt-get install chromium"; \
-	  ( $$SUDO apt-get update -qq && $$SUDO apt-get install -y -qq chromium >/dev/null ) || \
-	    echo "make full-browser: could not install it"; fi
-	@$(BIN)/python scripts/find_browser.py --full >/dev/null || \
-	  { echo "make full-browser: no Chromium found: install one, or set WORKBOOK_CHROMIUM=/path/to/chrome"; exit 1; }
-	@echo "browser for the bench: $$($(BIN)/python scripts/find_browser.py --full)"
+	$(call chromium,full-browser,--full,chromium,Chromium,--full)
 
 # Both suites run on TEST_JOBS processes (pytest-xdist): the unit tests one by one, the browser
 # tests a file at a time (a file's tests share its fixtures), longest file first, and the tests of

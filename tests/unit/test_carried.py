@@ -13,6 +13,7 @@ import pytest
 import carried_probe
 from carried_probe import grade, read, variants
 from workbook import bank
+from workbook.tolerance import REL
 
 
 @pytest.fixture(scope="module")
@@ -163,7 +164,7 @@ def test_only_an_entry_that_cancels_is_judged_on_the_questions_scale():
     checked = 0
     for v, source, typed, given in after_a_wrong_3_7(39):
         key = v.carried_answer({"F": read(source, typed)}).key
-        floor = 1e-3 * max(abs(x) for row in (*key, *v.answer.key) for x in row)
+        floor = REL * max(abs(x) for row in (*key, *v.answer.key) for x in row)  # the question's scale
         small = [(abs(x), i, j) for i, row in enumerate(key) for j, x in enumerate(row) if abs(x) > 3 * floor]
         _, i, j = min(small)
         answer = v.answer.typed(key)
