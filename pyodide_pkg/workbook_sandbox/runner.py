@@ -209,7 +209,8 @@ class Run:
     def run(self, restore: Restore) -> dict[str, Any]:
         cases = self.report["cases"]
         self.preimport()
-        with contextlib.redirect_stdout(self.out), restore:
+        # The restore outside the redirection: it notes (and puts back) the real stdout, not this run's.
+        with restore, contextlib.redirect_stdout(self.out):
             fn = None
             try:
                 fn = self.load()
@@ -245,8 +246,12 @@ def run_json(job: str, code: str, restore: Restore | None = None) -> str:
     return json.dumps(run(json.loads(job), str(code), restore))
 
 
+# The sandbox's runs share one restore: its notes serve every run that loads no new module.
+_SANDBOX_RESTORE = Restore(STDLIB_HOMES)
+
+
 def run_in_sandbox(job: str, code: str) -> tuple[str, bool]:
     """The sandbox worker's call: the report as JSON text, and whether the sandbox should be
     replaced now (the run was stopped by an interrupt or by running out of memory)."""
-    report = run(json.loads(job), str(code))
+    report = run(json.loads(job), str(code), _SANDBOX_RESTORE)
     return json.dumps(report), report["stopped"] is not None

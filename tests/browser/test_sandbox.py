@@ -227,8 +227,16 @@ def test_the_sandbox_starts_from_its_snapshot_near_build_code_once_the_grader_is
     stages = page.evaluate("workbook.sandbox.startStages")
     assert stages["from"] == "snapshot"
     assert 0 < stages["booted"] <= stages["ready"] and stages["wasmBytes"] > 1_000_000
+    # Pyodide's WebAssembly compiled once: the sandbox starts from the grader's module (boot.js), not a second compile.
+    assert stages["wasm"] == "shared"
     set_editor(page, ex, GOOD)
     assert run_build(ex, LONG) == "correct"
+    # A sandbox replaced after code that was not plain starts from the same module.
+    spawns = page.evaluate("workbook.sandbox.spawns")
+    set_editor(page, ex, "import sys\n" + GOOD)
+    assert run_build(ex, LONG) == "correct"
+    page.wait_for_function("n => workbook.sandbox.spawns > n && workbook.sandbox.ready", arg=spawns, timeout=LONG)
+    assert page.evaluate("workbook.sandbox.startStages.wasm") == "shared"
 
 
 def test_runs_that_queue_up_are_sent_one_at_a_time(lab):

@@ -104,3 +104,45 @@ def test_a_run_s_hooks_and_planted_modules_do_not_outlive_it(attack):
     assert EX.check(GOOD).status == "correct"
     assert math.isclose(1.0, 2.0) is False
     assert bank.get("4.1").check("5").status in ("correct", "incorrect")
+
+
+# The sandbox keeps one restore for all its runs (runner.run_in_sandbox): it notes the interpreter
+# again only when a module was loaded or dropped since its last exit; otherwise its notes hold.
+JOB = {"function": "rotate_2d", "harness": "call", "cases": [[3, 0, math.pi / 2], [1, 2, 0.5]]}
+ROTATE = EX.solution
+
+
+def test_one_restore_serves_runs_that_load_nothing_and_still_undoes_each():
+    from workbook_sandbox import runner
+    from workbook_sandbox.restore import STDLIB_HOMES, Restore
+
+    restore = Restore(STDLIB_HOMES)
+    honest = runner.run(JOB, ROTATE, restore)
+    notes = restore.spaces
+    cos, sin = math.cos, math.sin
+    for tamper in ("import math\nmath.cos = lambda t: 1.0\n", "import math\nmath.sin = abs\nmath.extra = 1\n"):
+        runner.run(JOB, tamper + ROTATE, restore)
+        assert restore.spaces is notes  # noted once, not on every run
+        assert (math.cos, math.sin, hasattr(math, "extra")) == (cos, sin, False)
+    assert runner.run(JOB, ROTATE, restore)["cases"] == honest["cases"]
+
+
+def test_a_module_loaded_between_runs_is_noted_before_the_next():
+    import sys
+    import types
+
+    from workbook_sandbox import runner
+    from workbook_sandbox.restore import STDLIB_HOMES, Restore
+
+    restore = Restore(STDLIB_HOMES)
+    runner.run(JOB, ROTATE, restore)
+    probe = types.ModuleType("wb_probe_loaded_late")
+    probe.value = 1
+    sys.modules[probe.__name__] = probe  # as an import before the run would (runner.preimport)
+    try:
+        runner.run(JOB, f"import {probe.__name__} as p\np.value = 2\np.added = 3\n" + ROTATE, restore)
+        assert probe.value == 1 and not hasattr(probe, "added")
+    finally:
+        sys.modules.pop(probe.__name__, None)
+    runner.run(JOB, ROTATE, restore)  # and with it gone again, the next run notes afresh
+    assert probe.__name__ not in restore.table

@@ -1,6 +1,6 @@
 // Starting Pyodide in a worker: the one place that knows how.
 //
-//   const { py, from, why, stages, step } = await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
+//   const { py, from, why, stages, step, module } = await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
 //
 // Both workers start here: the grader (worker.js: the core standard library and a
 // snapshot) and the sandbox for learners' code (sandbox.js: its own standard
@@ -12,6 +12,9 @@
 //   to restore instead of booting; null boots plainly.
 // - `linkSpeed`: the link's speed in bytes per ms when the caller knows it (the
 //   sandbox: the grader measured it on the same link), else measured here.
+// - `module`: Pyodide's WebAssembly already compiled, to start from instead of
+//   compiling it again (the sandbox: the grader's, which the page passes on). The
+//   result's `module` is the one this start used, for the caller to share.
 // - `onProgress({phase, loaded, total, step})`: phase "download" (bytes of the runtime
 //   files, counted as they arrive), "start" (Python starting), then the caller
 //   says "ready"; `step` (boot-steps.js) what is happening now: the start's steps
@@ -220,12 +223,15 @@ function checkSnapshot(bytes) {
 // compiled here. On a first visit Pyodide fetches and compiles it as usual
 // (compiling early then competed with the downloads and was slower), and its
 // bytes are counted for the progress bar. If the compile here fails, Pyodide
-// compiles after all.
-function patchWasm(url, meter, compiledStep) {
+// compiles after all. A module the caller already has (`given`) is used at once:
+// nothing is fetched or compiled, and the compiled code (with what the browser has
+// optimised of it since) is shared, not made again. `used.module` is the module
+// the start instantiated, however it came.
+function patchWasm(url, meter, compiledStep, given, used) {
   const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
-  const stored = isStored(url);
-  const compiled = stored.then((hit) => (hit ? WebAssembly.compileStreaming(networkFetch(url)) : null));
+  const stored = given ? Promise.resolve(true) : isStored(url);
+  const compiled = given ? Promise.resolve(given) : stored.then((hit) => (hit ? WebAssembly.compileStreaming(networkFetch(url)) : null));
   compiled.catch(() => {}); // handled below
   const standIn = new Response(null);
   const restore = () => {
@@ -243,6 +249,7 @@ function patchWasm(url, meter, compiledStep) {
     restore();
     const instantiated = (result) => {
       meter.step(compiledStep()); // compiled: Python starts now
+      used.module = result.module;
       return result;
     };
     if (response !== standIn) {
@@ -256,7 +263,7 @@ function patchWasm(url, meter, compiledStep) {
       stages.wasm = "compiled by Pyodide";
       return realInstantiate(realFetch(url), imports).then(instantiated);
     }
-    stages.wasm = "precompiled";
+    stages.wasm = given ? "shared" : "precompiled";
     meter.done(meter.fileName(url));
     return instantiated({ module, instance: await WebAssembly.instantiate(module, imports) });
   };
@@ -265,7 +272,7 @@ function patchWasm(url, meter, compiledStep) {
 
 // ---- The start ----------------------------------------------------------------------------
 export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null, lockFileURL = null,
-  quiet = false, linkSpeed: knownSpeed = null }) {
+  quiet = false, linkSpeed: knownSpeed = null, module: given = null }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
   const lock = lockFileURL ? fileIn(indexURL, lockFileURL) : "pyodide-lock.json"; // the lock this start reads
   const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", lock, fileIn(indexURL, stdLibURL)];
@@ -276,7 +283,8 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
   const snapshot = download ? readSnapshot(download) : null; // rejects without DecompressionStream where the file is still gzipped
   snapshot?.then(() => mark("snapshot"), () => {}); // handled below
   let skipped = !download;
-  const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore));
+  const used = { module: null };
+  const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore), given, used);
   importScripts(indexURL + "pyodide.js");
   meter.done("pyodide.js");
   mark("pyodide.js");
@@ -299,17 +307,17 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
     const py = await loadPyodide(options);
     if (skipped) {
       mark("booted");
-      return { py, from: "boot", stages, step };
+      return { py, from: "boot", stages, step, module: used.module };
     }
     mark("restored");
     py.runPython("import random; random.seed()"); // the snapshot's generator state is everyone's
-    return { py, from: "snapshot", stages, step };
+    return { py, from: "snapshot", stages, step, module: used.module };
   } catch (err) {
     if (skipped) throw err;
     unpatch();
     skipped = true;
     meter.step(BOOT_STEP.boot);
     const py = await loadPyodide(plain);
-    return { py, from: "boot", why: String((err && err.message) || err), stages, step };
+    return { py, from: "boot", why: String((err && err.message) || err), stages, step, module: null };
   }
 }

@@ -103,6 +103,8 @@ export function createEditor(host, doc, { onChange, onRun }) {
       view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: code } });
     },
     markLine(line) {
+      // Clearing a mark that is not there changes nothing: no update (and no layout it would force).
+      if (line == null && view.state.field(errorLine).size === 0) return;
       view.dispatch({ effects: setErrorLine.of(line) });
     },
   };

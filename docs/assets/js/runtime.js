@@ -58,6 +58,7 @@ export class Runtime {
     this.restarts = 0; // runs stopped by terminating the worker
     this.interrupts = 0; // runs stopped by KeyboardInterrupt
     this.lastStop = null; // "interrupt" | "terminate"
+    this.wasmModule = null; // once ready: the compiled WebAssembly its worker started from, when it says
     this.spawn(early);
   }
 
@@ -117,6 +118,7 @@ export class Runtime {
       this.readyAt = performance.now();
       this.startedFrom = data.from; // "snapshot", or "boot" when the snapshot could not be used
       this.startStages = data.stages;
+      this.wasmModule = data.module ?? null; // Pyodide's compiled WebAssembly (the grader's: the sandbox starts from it)
       if (data.why) console.warn("Python runtime: booted without the snapshot:", data.why);
       this.reportBoot({ phase: BOOT_PHASE.ready, loaded: this.boot?.total || 0, total: this.boot?.total || 0, step: null });
       this.setState(RUNTIME.ready);

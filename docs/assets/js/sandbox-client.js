@@ -10,7 +10,10 @@
 // moves into one, or at the first Run, if that comes first), from a blob: URL, so
 // that it inherits the page's Content-Security-Policy. It starts from a memory
 // snapshot of its own when that is stored or the link is fast (the grader's
-// measure of the link is passed on). A Run that has to wait for its start says so
+// measure of the link is passed on), and from the grader's compiled WebAssembly
+// when the grader has one: the same code, compiled and optimised once for both
+// (a second compile took a second of CPU just as the learner reached the code,
+// and slowed everything on the page meanwhile). A Run that has to wait for its start says so
 // (`onWait`: the exercise shows the start's progress, loading.js).
 // It is driven by the same Runtime class as the grader, so time limits work
 // the same way (interrupt when cross-origin isolated, else terminate and start
@@ -26,15 +29,22 @@ let sandbox = null;
 /** The link's speed the grader measured as it started (bytes per ms), if it did (boot.js). */
 const linkSpeedOf = (grader) => (typeof grader?.startStages?.link === "number" ? grader.startStages.link : null);
 
-/** The tab's sandbox, started now if it is not running yet (or again, if it could not start). */
-export function startSandbox(graderURL, linkSpeed = null) {
+/** The tab's sandbox, started now if it is not running yet (or again, if it could not start);
+ *  `module`: the grader's compiled WebAssembly, if it has one. */
+export function startSandbox(graderURL, linkSpeed = null, module = null) {
   if (sandbox?.failure) sandbox.worker.terminate();
   if (!sandbox || sandbox.failure) {
     const script = new URL("sandbox.js", graderURL).href;
-    const settings = { indexURL: new URL("../vendor/pyodide/", script).href, linkSpeed };
+    // `module`: whether the first message brings the compiled WebAssembly (sandbox.js waits for it).
+    const settings = { indexURL: new URL("../vendor/pyodide/", script).href, linkSpeed, module: Boolean(module) };
     const source = `self.WB_SANDBOX = ${JSON.stringify(settings)};\nimportScripts(${JSON.stringify(script)});\n`;
     const url = URL.createObjectURL(new Blob([source], { type: "text/javascript" }));
-    sandbox = new Runtime(() => new Worker(url, { name: "sandbox" }), null, { role: "sandbox", ackMs: ACK_MS });
+    const spawn = () => {
+      const worker = new Worker(url, { name: "sandbox" });
+      if (module) worker.postMessage({ type: "wasm-module", module });
+      return worker;
+    };
+    sandbox = new Runtime(spawn, null, { role: "sandbox", ackMs: ACK_MS });
     if (window.workbook) window.workbook.sandbox = sandbox; // for tests and tools
   }
   return sandbox;
@@ -44,7 +54,7 @@ async function runBuild(grader, { code, ...request }, options) {
   const cases = await grader.request({ ...request, op: "cases", code });
   if (!cases.ok) return cases;
   const { job, plain, limit } = cases.value;
-  const box = startSandbox(grader.workerURL, linkSpeedOf(grader));
+  const box = startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule);
   if (!box.ready && !box.failure) options.onWait?.();
   const { interrupts, restarts } = box;
   const ran = await box.request({ op: "run", job, code }, { ...options, limitMs: limit * 1000 || options.limitMs });
@@ -64,6 +74,6 @@ export function withSandbox(grader) {
   return {
     request: (request, options = {}) => (request.op === "run" ? runBuild(grader, request, options) : grader.request(request, options)),
     /** Start the sandbox ahead of the first run (a page without a grader has none). */
-    prepare: () => grader instanceof Runtime && startSandbox(grader.workerURL, linkSpeedOf(grader)),
+    prepare: () => grader instanceof Runtime && startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule),
   };
 }

@@ -18,12 +18,14 @@
 // and nothing else. Learner code reaches neither, so a message from here is only
 // ever this file's: the report of a run, which the grader reads as data.
 //
-// Messages in: {type: "interrupt-buffer", buffer}; {id, op: "run", job, code}.
+// Messages in: {type: "wasm-module", module} first, when the page has the grader's compiled
+// WebAssembly to start from (settings.module says it comes); {type: "interrupt-buffer", buffer};
+// {id, op: "run", job, code}.
 // Out: {type: "boot", phase, loaded, total, step} as it starts (boot.js), {type: "ready"|"failed"}; per request {id, type: "received"} at once,
 // {type: "progress"}, {type: "started"} when the code starts (the page's time
 // limit starts then) and {type: "reply", reply}: {ok: true, value: REPORT,
 // recycle} or {ok: false, error}.
-import { startPyodide } from "./boot.js";
+import { startPyodide, stages as bootStages } from "./boot.js";
 import { ERROR } from "./contract.js";
 import { BOOT_STEP } from "./boot-steps.js";
 
@@ -43,6 +45,8 @@ for (const type of ["error", "unhandledrejection"]) self.addEventListener(type, 
 
 let requests = null; // messages that came before start-up ended
 let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the request running
+let takeModule = null; // resolves the compiled WebAssembly the page sends first (settings.module)
+const given = settings.module ? new Promise((resolve) => (takeModule = resolve)) : Promise.resolve(null);
 
 // Registered first, before anything else can listen: later listeners (an
 // `onmessage` set by learner code) never see a message.
@@ -51,7 +55,10 @@ self.addEventListener("message", (event) => {
   event.stopImmediatePropagation();
   if (!event.isTrusted) return;
   const msg = event.data;
-  if (msg?.type === "interrupt-buffer") {
+  if (msg?.type === "wasm-module") {
+    takeModule?.(msg.module instanceof WebAssembly.Module ? msg.module : null);
+    takeModule = null; // once: before start-up
+  } else if (msg?.type === "interrupt-buffer") {
     interruptBuffer = msg.buffer;
     ready.then(({ py }) => py.setInterruptBuffer(interruptBuffer)).catch(() => {});
   } else if (msg && typeof msg.id === "number") {
@@ -88,9 +95,10 @@ const ready = (async () => {
   const lock = networkFetch(LOCK).then((r) => r.json());
   const reportBoot = (progress) => post({ type: "boot", ...progress });
   const { py, from, step } = await startPyodide({ indexURL, stdLibURL: STDLIB, lockFileURL: LOCK, snapshotURL: SNAPSHOT,
-    quiet: true, onProgress: reportBoot, linkSpeed: settings.linkSpeed });
+    quiet: true, onProgress: reportBoot, linkSpeed: settings.linkSpeed, module: await given });
   mark("booted");
   stages.from = from;
+  stages.wasm = bootStages.wasm; // "shared": started from the grader's compiled WebAssembly
   step(BOOT_STEP.import);
   const runner = py.pyimport("workbook_sandbox.runner");
   const allowed = new Set(Object.values((await lock).packages).map((p) => new URL(p.file_name, indexURL).href));

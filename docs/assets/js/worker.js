@@ -56,7 +56,9 @@ const ready = (async () => {
   api.destroy();
   mark("ready");
   stages.timeOrigin = performance.timeOrigin; // to line the stages up with the page's clock
-  self.postMessage({ type: "ready", ms: performance.now() - t0, from: started.from, why: started.why, stages });
+  // `module`: the compiled WebAssembly, which the page hands to the sandbox (sandbox-client.js).
+  self.postMessage({ type: "ready", ms: performance.now() - t0, from: started.from, why: started.why, stages,
+    module: started.module });
 })().catch((err) => {
   self.postMessage({ type: "failed", message: String((err && err.message) || err) });
   throw err;
