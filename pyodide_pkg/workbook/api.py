@@ -60,7 +60,7 @@ TEXTS_CAP = 50_000  # characters of a draw's templates
 # The type of each field a request may carry (None stands for a field left out); a figure's
 # params are the figure's to check (an error of kind "figure").
 FIELDS: dict[str, type] = {"exercise": str, "code": str, "text": str, "figure": str, "outputs": str, "texts": dict,
-                           "given": dict, "step": str, "steps": dict}
+                           "given": dict, "step": str, "steps": dict, "figureLater": bool}
 
 
 def _exercise(request: dict[str, Any], kind: str | None = None):
@@ -110,11 +110,22 @@ def _cases(request: dict[str, Any]) -> dict[str, Any]:
     return {"job": ex.job(), "plain": plain(request.get("code") or ""), "limit": ex.time_limit}
 
 
-def _judge(request: dict[str, Any]) -> dict[str, Any]:
+def _outputs(request: dict[str, Any], what: str) -> tuple[Any, str]:
+    """The Build exercise of a request and the sandbox's report it carries."""
     ex = _exercise(request, "build")
     if not isinstance(request.get("outputs"), str):
-        raise GradingError("bad-request", f"A judgement of exercise {ex.id} needs the sandbox's report.")
-    return ex.judge(request["outputs"]).to_dict()
+        raise GradingError("bad-request", f"{what} of exercise {ex.id} needs the sandbox's report.")
+    return ex, request["outputs"]
+
+
+def _judge(request: dict[str, Any]) -> dict[str, Any]:
+    ex, outputs = _outputs(request, "A judgement")
+    return ex.judge(outputs, figure=not request.get("figureLater")).to_dict()
+
+
+def _run_figure(request: dict[str, Any]) -> dict[str, Any]:
+    ex, outputs = _outputs(request, "The run figure")
+    return {"figure": ex.drawn(outputs)}
 
 
 def _figure(request: dict[str, Any]) -> dict[str, Any]:
@@ -156,7 +167,7 @@ def _draw(request: dict[str, Any]) -> dict[str, Any]:
 
 TEXTS = ("title", "prompt", "hint", "solution")
 HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read, "draw": _draw,
-            "cases": _cases, "judge": _judge}
+            "cases": _cases, "judge": _judge, "run-figure": _run_figure}
 assert set(HANDLERS) == set(OPS), "every op in contract.json has one handler"
 
 

@@ -134,8 +134,13 @@ def editor_code(ex: Locator) -> str:
 
 
 def run_build(ex: Locator, timeout: float = 60_000) -> str:
+    """Run a Build exercise; its verdict, once its run figure (if it has one) is the new run's too: the
+    figure comes after the verdict, and is marked busy (aria-busy) until then."""
     ex.locator('[data-role="run"]').click()
-    return settle(ex, timeout)
+    state = settle(ex, timeout)
+    ex.page.wait_for_function("el => !el.querySelector('[data-role=\"run-figure\"][aria-busy=\"true\"]')",
+                              arg=ex.element_handle(), timeout=timeout)
+    return state
 
 
 def feedback(ex: Locator) -> str:

@@ -14,7 +14,7 @@ from playwright.sync_api import Locator, Page, expect
 
 from conftest import ROOT
 from formula_cues import WIDER_THAN_BOX, check_formulas, formulas_ready
-from helpers import CHAPTERS, exercise, fill_matrix, open_chapter, role, settle, wait_runtime
+from helpers import CHAPTERS, exercise, fill_matrix, open_chapter, role, run_build, settle, wait_runtime
 from workbook import bank
 from workbook.number_format import fmt
 
@@ -189,8 +189,7 @@ def test_exercise_feedback_states_pass_the_audit(page, site_url, width):
         fill_matrix(li, grid(rows))
         assert check_and_settle(page, li, "work-step-check") == "incorrect", name
     build = exercise(page, "3.10")
-    build.locator(role("run")).click()
-    settle(build, timeout=SLOW)
+    run_build(build, timeout=SLOW)  # its verdict, then its run figure
     assert build.locator(role("test-result")).count() > 0
     debug = exercise(page, "3.5")
     line = next(n for n in range(1, 50) if n != bank.get("3.5").bug_line)

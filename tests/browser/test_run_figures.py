@@ -72,3 +72,30 @@ def test_a_wrong_run_shows_its_largest_error(tour):
     expect(fig).to_be_visible()
     expect(fig.locator(role("readout"))).to_have_text(re.compile(r"^Largest error 0\.\d+ at run \d"))
     expect(fig.locator(role("run-case-label"))).to_have_text(re.compile(r"error 0\.\d+"))
+
+
+def test_the_verdict_is_shown_before_the_figure_is_drawn(tour):
+    """The figure is asked for once the verdict is on screen (run-figure): held back here, the verdict
+    and its test rows are shown, and the last run's figure stays marked busy until the new one comes."""
+    page = tour(6)
+    ex = exercise(page, "6.5")
+    set_editor(page, ex, bank.get("6.5").solution)
+    assert run_build(ex) == "correct"
+    fig = figure(ex)
+    expect(fig).to_be_visible()
+    page.evaluate("""() => {
+      const grader = window.workbook.runtime, request = grader.request.bind(grader);
+      window.__heldFigure = null;
+      grader.request = (msg, options) => msg.op !== "run-figure" ? request(msg, options)
+        : new Promise((resolve) => { window.__heldFigure = () => resolve(request(msg, options)); });
+    }""")
+    set_editor(page, ex, bank.get("6.5").starter)
+    ex.locator(role("run")).click()
+    page.wait_for_function("() => window.__heldFigure !== null")
+    assert ex.get_attribute("data-state") == "incorrect"
+    assert ex.locator(role("test-result")).count() > 0
+    assert fig.get_attribute("aria-busy") == "true"
+    expect(fig.locator(role("readout"))).to_have_text(re.compile(r"^Largest error 0( m)?: yours agrees"))  # the last run's
+    page.evaluate("() => window.__heldFigure()")
+    expect(fig).not_to_have_attribute("aria-busy", "true")
+    expect(fig.locator(role("readout"))).to_have_text(re.compile(r"^Largest error \d[\d.]*( m)? at "))  # the new run's

@@ -22,6 +22,7 @@ from helpers import (
     role,
     run_build,
     set_editor,
+    settle,
 )
 from workbook import bank
 
@@ -277,3 +278,32 @@ def test_a_sandbox_that_could_not_start_is_started_again(page, site_url):
     set_editor(page, ex, GOOD)
     assert run_build(ex, LONG) == "correct"  # the first Run starts a fresh one
     assert failures
+
+
+def test_a_second_run_starts_in_the_sandbox_while_the_grader_reads_the_code(lab):
+    """From an exercise's second run on, its job is known (seeded cases): the sandbox runs the code
+    while the grader's `cases` says whether it is plain; held back here, the run still starts, and the
+    verdict waits for it. Code that is not plain still replaces the sandbox afterwards."""
+    page, _ = lab
+    ex = exercise(page, "0.5")
+    set_editor(page, ex, GOOD)
+    assert run_build(ex, LONG) == "correct"  # the job of 0.5's variant 0 is known from here on
+    page.evaluate("""() => {
+      const grader = window.workbook.runtime, request = grader.request.bind(grader);
+      const box = window.workbook.sandbox, run = box.request.bind(box);
+      window.__held = null; window.__ranWhileHeld = 0;
+      grader.request = (msg, options) => msg.op !== "cases" ? request(msg, options)
+        : new Promise((resolve) => { window.__held = () => resolve(request(msg, options)); });
+      box.request = (msg, options) => { if (window.__held) window.__ranWhileHeld += 1; return run(msg, options); };
+    }""")
+    ex.locator(role("run")).click()
+    page.wait_for_function("() => window.__ranWhileHeld === 1", timeout=LONG)
+    assert ex.get_attribute("data-state") == "pending"  # the verdict needs the grader's word too
+    page.evaluate("() => window.__held()")
+    assert settle(ex, LONG) == "correct"
+    spawns = page.evaluate("workbook.sandbox.spawns")
+    page.evaluate("() => { delete window.workbook.runtime.request; delete window.workbook.sandbox.request; }")
+    set_editor(page, ex, "import sys\n" + GOOD)  # not plain: the sandbox is replaced after its run
+    assert run_build(ex, LONG) == "correct"
+    assert page.evaluate("workbook.sandbox.spawns") == spawns + 1
+    page.wait_for_function("() => window.workbook.sandbox.ready", timeout=LONG)

@@ -67,6 +67,7 @@ def test_the_build_functions_in_contract_md_are_the_banks():
 REQUESTS = {  # a well-formed request of each op that names an exercise
     "grade": {"answer": "1"}, "run": {"code": "x = 1\n"}, "split": {"text": "1 2"}, "read": {"answer": "1"},
     "draw": {"variant": 1, "texts": {}}, "cases": {"code": "x = 1\n"}, "judge": {"outputs": '{"cases": []}'},
+    "run-figure": {"outputs": '{"cases": []}'},
 }
 
 

@@ -174,6 +174,37 @@ def test_the_api_returns_the_figure_with_the_verdict():
     assert reply["ok"] and reply["value"]["data"]["figure"]["name"] == "arm"
 
 
+def _api(**request):
+    return json.loads(handle(json.dumps(request)))
+
+
+@pytest.mark.parametrize("variant", [0, 7])
+def test_the_figure_asked_for_later_is_the_one_the_verdict_would_hold(variant):
+    """The page shows the verdict first (judge with figureLater), then asks for the figure
+    (run-figure): the same verdict without its figure, and the same figure, for a wrong run too."""
+    ex = bank.get("6.5")
+    wrong = ex.solution.replace("L1 * math.cos(theta1)", "L1 * math.sin(theta1)")
+    assert wrong != ex.solution
+    for code in (ex.solution, wrong):
+        job = _api(op="cases", exercise="6.5", code=code, variant=variant)["value"]["job"]
+        report = runner.run_json(job, code)
+        whole = _api(op="judge", exercise="6.5", outputs=report, variant=variant)["value"]
+        first = _api(op="judge", exercise="6.5", outputs=report, variant=variant, figureLater=True)["value"]
+        later = _api(op="run-figure", exercise="6.5", outputs=report, variant=variant)["value"]
+        figure = whole["data"].pop("figure")
+        assert "figure" not in first["data"] and first == whole
+        assert later == {"figure": figure}
+    assert whole["status"] == "incorrect"
+
+
+def test_a_run_that_did_not_load_has_no_figure_later():
+    job = _api(op="cases", exercise="6.5", code="def nope(:\n")["value"]["job"]
+    report = runner.run_json(job, "def nope(:\n")
+    assert _api(op="run-figure", exercise="6.5", outputs=report)["value"] == {"figure": None}
+    assert _api(op="run-figure", exercise="6.5", outputs="not json")["error"]["kind"] == "bad-request"
+    assert _api(op="run-figure", exercise="0.1", outputs="{}")["error"]["kind"] == "wrong-op"
+
+
 def test_the_widget_holds_the_run_figure_roles():
     html = bank.get("6.5").widget("ex-6-5", None)
     for role in ("run_figure", "run_canvas", "run_description", "readout", "run_case", "run_previous", "run_next",

@@ -1,12 +1,12 @@
 // A Build exercise's run figure (role "run-figure"): after a run, the grader draws
-// the learner's function beside the reference (verdict data.figure: one frame per
-// case, SVG and words computed in Python). This module only places a frame and
+// the learner's function beside the reference (the run-figure op, asked for once the
+// verdict is shown: one frame per case, SVG and words computed in Python). This module only places a frame and
 // steps through them: the range input (arrow keys), Previous and Next.
 import { ROLE, findRole } from "./contract.js";
 
 export function runFigure(el) {
   const box = findRole(el, ROLE.runFigure);
-  if (!box) return { show() {} };
+  if (!box) return { wanted: false, busy() {}, show() {} };
   const part = (role) => findRole(box, role);
   const [canvas, readout, description, range, previous, next, caseLabel] = [
     ROLE.runCanvas, ROLE.readout, ROLE.runDescription, ROLE.runCase, ROLE.runPrevious, ROLE.runNext, ROLE.runCaseLabel,
@@ -32,9 +32,17 @@ export function runFigure(el) {
   next.addEventListener("click", () => figure && showFrame(Number(range.value) + 1));
 
   return {
-    /** Show the figure of a reply (or hide it when the run drew none). */
+    wanted: true,
+    /** A run has started: the figure on screen is the last run's until the new one comes. */
+    busy() {
+      box.setAttribute("aria-busy", "true");
+    },
+    /** Show the figure of a reply (a verdict's data.figure, or run-figure's {figure}), or hide it
+     *  when the run drew none (or `reply` is null). */
     show(reply) {
-      figure = (reply.ok && reply.value.data?.figure) || null;
+      const value = reply?.ok ? reply.value : null;
+      figure = value?.figure || value?.data?.figure || null;
+      box.removeAttribute("aria-busy");
       box.hidden = !figure?.frames?.length;
       if (box.hidden) return;
       range.max = String(figure.frames.length - 1);

@@ -1,9 +1,12 @@
 // A Build run, in three steps: the grader picks the cases, the sandbox runs the
-// learner's code on them, the grader judges what came back.
+// learner's code on them, the grader judges what came back; then, once the
+// verdict is shown, the grader draws the run figure of the same report. From an
+// exercise's second run on, the first two go side by side (its job is known).
 //
-//   grader  {op: "cases", exercise, code}    -> {job, plain, limit}
-//   sandbox {op: "run", job, code}           -> the report (JSON text), as data
-//   grader  {op: "judge", exercise, outputs} -> the verdict
+//   grader  {op: "cases", exercise, code}                 -> {job, plain, limit}
+//   sandbox {op: "run", job, code}                        -> the report (JSON text), as data
+//   grader  {op: "judge", exercise, outputs, figureLater} -> the verdict
+//   grader  {op: "run-figure", exercise, outputs}         -> {figure} (asked for by kinds/build.js)
 //
 // The sandbox (sandbox.js) is one worker per tab, started on a page with a Build
 // exercise once the grader is ready and the page is idle (or when the learner
@@ -25,6 +28,7 @@ import { Runtime } from "./runtime.js";
 
 const ACK_MS = 5_000; // a sandbox that has not acknowledged a request by then is gone
 let sandbox = null;
+const reports = new Map(); // exercise -> {variant, outputs}: the report of its last run, for its run figure
 
 /** The link's speed the grader measured as it started (bytes per ms), if it did (boot.js). */
 const linkSpeedOf = (grader) => (typeof grader?.startStages?.link === "number" ? grader.startStages.link : null);
@@ -50,29 +54,53 @@ export function startSandbox(graderURL, linkSpeed = null, module = null) {
   return sandbox;
 }
 
+// An exercise's job for a variant never changes (its hidden cases are seeded): after the first run of
+// one, the next starts in the sandbox at once, while the grader says whether the code is plain.
+const jobs = new Map(); // "exercise variant" -> {job, limit}
+
 async function runBuild(grader, { code, ...request }, options) {
-  const cases = await grader.request({ ...request, op: "cases", code });
-  if (!cases.ok) return cases;
-  const { job, plain, limit } = cases.value;
+  const asked = grader.request({ ...request, op: "cases", code });
+  const key = `${request.exercise} ${request.variant}`;
+  if (!jobs.has(key)) {
+    const cases = await asked;
+    if (!cases.ok) return cases;
+    jobs.set(key, { job: cases.value.job, limit: cases.value.limit });
+  }
+  const { job, limit } = jobs.get(key);
   const box = startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule);
   if (!box.ready && !box.failure) options.onWait?.();
   const { interrupts, restarts } = box;
   const ran = await box.request({ op: "run", job, code }, { ...options, limitMs: limit * 1000 || options.limitMs });
-  // Replace the sandbox after code that may have left a trace, and after a run it stopped
-  // (an interrupt may land in the runner's own code). A terminated one (a time-out past the
-  // interrupt's grace, a crash) was replaced already: one replacement per stopped run, not two.
+  const cases = await asked; // whether the code is plain; a refusal of the code is the reply
+  // Replace the sandbox after code that may have left a trace (or that the grader did not look at),
+  // and after a run it stopped (an interrupt may land in the runner's own code). A terminated one (a
+  // time-out past the interrupt's grace, a crash) was replaced already: one replacement per stopped run.
+  const plain = cases.ok && cases.value.plain;
   if (box.restarts === restarts && (!plain || ran.recycle || box.interrupts !== interrupts)) {
     box.recycles = (box.recycles || 0) + 1;
     box.replace();
   }
+  if (!cases.ok) return cases;
   if (!ran.ok) return ran; // a time-out, a crash, a package that would not load
-  return grader.request({ ...request, op: "judge", outputs: ran.value });
+  reports.set(request.exercise, { variant: request.variant, outputs: ran.value });
+  return grader.request({ ...request, op: "judge", outputs: ran.value, figureLater: true });
+}
+
+/** The run figure of the exercise's last run ({figure: null} when there is none to draw). */
+function runFigure(grader, request, options) {
+  const last = reports.get(request.exercise);
+  if (!last || last.variant !== request.variant) return Promise.resolve({ ok: true, value: { figure: null } });
+  return grader.request({ ...request, outputs: last.outputs }, options);
 }
 
 /** The grader's runtime, with "run" requests fulfilled through the sandbox. */
 export function withSandbox(grader) {
   return {
-    request: (request, options = {}) => (request.op === "run" ? runBuild(grader, request, options) : grader.request(request, options)),
+    request(request, options = {}) {
+      if (request.op === "run") return runBuild(grader, request, options);
+      if (request.op === "run-figure") return runFigure(grader, request, options);
+      return grader.request(request, options);
+    },
     /** Start the sandbox ahead of the first run (a page without a grader has none). */
     prepare: () => grader instanceof Runtime && startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule),
   };

@@ -127,20 +127,38 @@ class Build(Exercise):
         diagnose = self.diagnose
         return lambda got: diagnose(tuple(args), got, want)
 
-    def judge(self, report: Any) -> Verdict:
-        """The verdict on a run, from the sandbox's report (JSON text or a dict)."""
+    def judge(self, report: Any, figure: bool = True) -> Verdict:
+        """The verdict on a run, from the sandbox's report (JSON text or a dict), with the run figure in
+        its data; without it when ``figure`` is false (the page shows the verdict first, then asks for
+        the figure: :meth:`drawn`)."""
         arguments = self.arguments()
-        figure = runs.trace_job(self)
-        read = read_report(report, len(arguments), len(figure["cases"]) if figure else 0)
+        read = self._read(report, arguments)
         cases = self.cases(arguments)
         verdict = build_judge.judge(read, cases, self.signature, len(self.examples), self.rel_tol, self.abs_tol,
                                     self.angles)
-        if self.run_figure and read.load is None and not read.missing:
-            try:
-                verdict.data["figure"] = runs.draw_run(self, read, cases, arguments)
-            except Exception:  # a fault of the drawing must never cost the learner the verdict
-                pass  # (tests/unit/test_run_figures.py looks for the figure on every odd output)
+        drawn = self._draw(read, cases, arguments) if figure else None
+        if drawn is not None:
+            verdict.data["figure"] = drawn
         return verdict
+
+    def drawn(self, report: Any) -> dict[str, Any] | None:
+        """The run figure of the sandbox's report, as :meth:`judge` puts it in a verdict (None when the
+        run draws none: the exercise has no run figure, or the code did not load)."""
+        arguments = self.arguments()
+        read = self._read(report, arguments)
+        return self._draw(read, self.cases(arguments), arguments)
+
+    def _read(self, report: Any, arguments: list[list]) -> Any:
+        figure = runs.trace_job(self)
+        return read_report(report, len(arguments), len(figure["cases"]) if figure else 0)
+
+    def _draw(self, read: Any, cases: list[Case], arguments: list[list]) -> dict[str, Any] | None:
+        if not (self.run_figure and read.load is None and not read.missing):
+            return None
+        try:
+            return runs.draw_run(self, read, cases, arguments)
+        except Exception:  # a fault of the drawing must never cost the learner the verdict
+            return None  # (tests/unit/test_run_figures.py looks for the figure on every odd output)
 
     def check(self, code: object) -> Verdict:
         """The whole run in this process: job, the learner's code, judgement."""

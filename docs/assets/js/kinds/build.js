@@ -106,9 +106,12 @@ export function init(ctx) {
   const limitMs = Number(host.dataset.timeLimit || 5) * 1000;
   const editor = lazyEditor(ctx, host, () => run());
   const figure = runFigure(ctx.el);
+  let runs = 0; // a figure that comes after a later run started is not shown
 
   async function run() {
+    const thisRun = ++runs;
     setPending(ctx.el); // at once: building the editor first may take a moment
+    figure.busy();
     runButton.disabled = true;
     const ed = await editor.latest();
     ed.markLine(null);
@@ -116,9 +119,13 @@ export function init(ctx) {
       limitMs, onProgress: (text) => showMessage(ctx.el, text), onWait: () => showSandboxStart(ctx.el) });
     runButton.disabled = false;
     renderTests(ctx.el, reply);
-    figure.show(reply);
     const line = reply.ok && reply.value.data?.error?.line;
     if (line) ed.markLine(line);
+    // The verdict first; then the run's figure (sandbox-client.js), drawn by the grader meanwhile.
+    const drawn = figure.wanted && reply.ok
+      ? await ctx.runtime.request({ op: "run-figure", exercise: ctx.id, variant: ctx.variant })
+      : null;
+    if (thisRun === runs) figure.show(drawn);
   }
   runButton.addEventListener("click", run);
   ownRole(ctx.el, ROLE.reset).addEventListener("click", async () => {
