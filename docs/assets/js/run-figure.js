@@ -1,7 +1,8 @@
 // A Build exercise's run figure (role "run-figure"): after a run, the grader draws
-// the learner's function beside the reference (the run-figure op, asked for once the
-// verdict is shown: one frame per case, SVG and words computed in Python). This module only places a frame and
-// steps through them: the range input (arrow keys), Previous and Next.
+// the learner's function beside the reference (the run-figure op, asked for once
+// the verdict is shown: one frame per case, SVG and words computed in Python).
+// This module only places a frame and steps through them: the range input (arrow
+// keys), Previous and Next.
 import { ROLE, findRole } from "./contract.js";
 
 export function runFigure(el) {

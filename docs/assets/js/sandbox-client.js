@@ -15,9 +15,9 @@
 // snapshot of its own when that is stored or the link is fast (the grader's
 // measure of the link is passed on), and from the grader's compiled WebAssembly
 // when the grader has one: the same code, compiled and optimised once for both
-// (a second compile took a second of CPU just as the learner reached the code,
-// and slowed everything on the page meanwhile). A Run that has to wait for its start says so
-// (`onWait`: the exercise shows the start's progress, loading.js).
+// (a compile of its own competed with the grader and the page just as the learner
+// reached the code). A Run that has to wait for its start says so (`onWait`: the
+// exercise shows the start's progress, loading.js).
 // It is driven by the same Runtime class as the grader, so time limits work
 // the same way (interrupt when cross-origin isolated, else terminate and start
 // afresh), the limit starting when the code starts. It is replaced after every
