@@ -239,11 +239,14 @@ function patchWasm(url, meter, compiledStep, given, used) {
     return realFetch(resource, init).then((response) => (name ? meter.watch(name, response) : response));
   };
   // The file's one download starts now, with the worker, whichever way it is then compiled (the
-  // service worker answers it from its copy when it has one).
-  let download = given ? null : counted(url, { credentials: "same-origin" });
+  // service worker answers it from its copy when it has one). Its bytes are counted for the
+  // progress bar on a first visit only: counting reads a copy of the stream and reports every
+  // piece to the page, which a revisit (the whole file from the cache at once) felt.
+  const fresh = () => realFetch(url, { credentials: "same-origin" });
+  let download = given ? null : fresh();
   download?.catch(() => {}); // reported where it is used
   const takeDownload = () => {
-    const mine = download ?? counted(url, { credentials: "same-origin" });
+    const mine = download ?? fresh();
     download = null;
     return mine;
   };
@@ -255,8 +258,9 @@ function patchWasm(url, meter, compiledStep, given, used) {
     self.fetch = realFetch;
     WebAssembly.instantiateStreaming = realInstantiate;
   };
+  const countedDownload = () => takeDownload().then((response) => meter.watch(meter.fileName(url), response));
   self.fetch = (resource, init) =>
-    String(resource) === url ? stored.then((hit) => (hit ? standIn : takeDownload())) : counted(resource, init);
+    String(resource) === url ? stored.then((hit) => (hit ? standIn : countedDownload())) : counted(resource, init);
   WebAssembly.instantiateStreaming = async (source, imports) => {
     const response = await source;
     restore();
