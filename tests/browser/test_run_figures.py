@@ -20,6 +20,17 @@ def figure(ex):
     return ex.locator(role("run-figure"))
 
 
+def run_shown(tour, chapter: int, ex_id: str, code: str, state: str):
+    """Run ``code`` in exercise ``ex_id`` of chapter ``chapter``: its page, exercise and run figure, shown."""
+    page = tour(chapter)
+    ex = exercise(page, ex_id)
+    set_editor(page, ex, code)
+    assert run_build(ex) == state
+    fig = figure(ex)
+    expect(fig).to_be_visible()
+    return page, ex, fig
+
+
 @pytest.mark.parametrize("chapter, ex_id", [(6, "6.5"), (8, "8.4"), (5, "5.10")])
 def test_a_correct_run_draws_the_learners_function(tour, chapter, ex_id):
     page = tour(chapter)
@@ -64,12 +75,7 @@ def test_the_keyboard_steps_through_the_cases(tour):
 
 
 def test_a_wrong_run_shows_its_largest_error(tour):
-    page = tour(8)
-    ex = exercise(page, "8.4")
-    set_editor(page, ex, bank.get("8.4").starter)
-    assert run_build(ex) == "incorrect"
-    fig = figure(ex)
-    expect(fig).to_be_visible()
+    _, _, fig = run_shown(tour, 8, "8.4", bank.get("8.4").starter, "incorrect")
     expect(fig.locator(role("readout"))).to_have_text(re.compile(r"^Largest error 0\.\d+ at run \d"))
     expect(fig.locator(role("run-case-label"))).to_have_text(re.compile(r"error 0\.\d+"))
 
@@ -77,12 +83,7 @@ def test_a_wrong_run_shows_its_largest_error(tour):
 def test_the_verdict_is_shown_before_the_figure_is_drawn(tour):
     """The figure is asked for once the verdict is on screen (run-figure): held back here, the verdict
     and its test rows are shown, and the last run's figure stays marked busy until the new one comes."""
-    page = tour(6)
-    ex = exercise(page, "6.5")
-    set_editor(page, ex, bank.get("6.5").solution)
-    assert run_build(ex) == "correct"
-    fig = figure(ex)
-    expect(fig).to_be_visible()
+    page, ex, fig = run_shown(tour, 6, "6.5", bank.get("6.5").solution, "correct")
     page.evaluate("""() => {
       const grader = window.workbook.runtime, request = grader.request.bind(grader);
       window.__heldFigure = null;
