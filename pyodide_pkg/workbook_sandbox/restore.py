@@ -110,15 +110,19 @@ class Restore:
         whatever ran between them (Pyodide loading a package, a snapshot's own set-up) is seen."""
         if not self.held or not _same_binding(sys.modules, self.table):
             return False
-        functions, states = self.functions
         return (all(_same_binding(space, saved) for space, saved in self.first)
                 and all(_unchanged(space, kept) for space, kept in self.spaces + self.fields)
                 and all(_same_binding(vars(cls), saved) for cls, saved in self.classes)
                 and all(_same_items(container, saved) for container, saved in self.containers)
-                and all(all(map(is_, now, then)) for now, then in zip(_function_states(functions), states))
+                and self._functions_unchanged()
                 and all(_same_items(lst, items) for lst, items in self.imports)
                 and (sys.gettrace(), sys.getprofile()) == self.hooks and sys.getrecursionlimit() == self.recursion
                 and _numpy_state() == self.numpy)
+
+    def _functions_unchanged(self) -> bool:
+        """Whether every noted function still has the code and defaults noted (by identity)."""
+        functions, states = self.functions
+        return all(all(map(is_, now, then)) for now, then in zip(_function_states(functions), states))
 
     def __enter__(self) -> Restore:
         if self._notes_hold():
@@ -178,8 +182,8 @@ class Restore:
             if not _same_items(container, saved):
                 container.clear()
                 (container.update if not isinstance(container, list) else container.extend)(saved)
-        functions, states = self.functions
-        if not all(all(map(is_, now, then)) for now, then in zip(_function_states(functions), states)):  # by identity
+        if not self._functions_unchanged():
+            functions, states = self.functions
             for fn, code, defaults, kwdefaults in zip(functions, *states):
                 if not all(map(is_, _function_state(fn), (code, defaults, kwdefaults))):
                     _quietly(setattr, fn, "__code__", code)

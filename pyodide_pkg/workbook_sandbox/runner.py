@@ -246,7 +246,8 @@ def run_json(job: str, code: str, restore: Restore | None = None) -> str:
     return json.dumps(run(json.loads(job), str(code), restore))
 
 
-# The sandbox's runs share one restore: its notes serve every run that loads no new module.
+# The sandbox's runs share one restore: its notes serve every run before which the interpreter
+# still binds what they say (Restore._notes_hold), and are taken again otherwise.
 _SANDBOX_RESTORE = Restore(STDLIB_HOMES)
 
 

@@ -225,9 +225,9 @@ function checkSnapshot(bytes) {
 // starts here, with the worker: Pyodide asks for the file only once
 // pyodide.asm.js has arrived and run, and asking the cache first takes a while
 // on a first visit, which on a slow link left the largest file of the start to
-// begin 1.6 s after the others (its bytes are counted for the progress bar). If
-// the compile here fails, Pyodide
-// compiles after all. A module the caller already has (`given`) is used at once:
+// begin 1.6 s after the others (on a first visit its bytes are counted for the
+// progress bar). If the compile here fails, Pyodide compiles after all. A module
+// the caller already has (`given`) is used at once:
 // nothing is fetched or compiled, and the compiled code (with what the browser has
 // optimised of it since) is shared, not made again. `used.module` is the module
 // the start instantiated, however it came.

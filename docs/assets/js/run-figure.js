@@ -38,11 +38,10 @@ export function runFigure(el) {
     busy() {
       box.setAttribute("aria-busy", "true");
     },
-    /** Show the figure of a reply (a verdict's data.figure, or run-figure's {figure}), or hide it
-     *  when the run drew none (or `reply` is null). */
+    /** Show the figure of a run-figure reply ({figure}), or hide it when the run drew none (or
+     *  `reply` is null). */
     show(reply) {
-      const value = reply?.ok ? reply.value : null;
-      figure = value?.figure || value?.data?.figure || null;
+      figure = (reply?.ok && reply.value.figure) || null;
       box.removeAttribute("aria-busy");
       box.hidden = !figure?.frames?.length;
       if (box.hidden) return;
