@@ -14,7 +14,10 @@ and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
 
 Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
 and so are the search's word splitters and stemmers for other languages when the
-search is in English only (it then never loads them). ``sitemap.xml`` is left
+search is in English only (it then never loads them). So is the compiled core of
+the standard library: only a first visit over a link that is not fast takes it
+(docs/assets/js/boot.js); a stored site starts from its snapshot, and a start
+without one takes the sources. ``sitemap.xml`` is left
 out too: it holds absolute URLs that hosts and test servers rewrite, so the
 service worker writes it from the manifest's pages, for its own scope.
 Under ``mkdocs serve`` the service worker only unregisters itself, so a worker
@@ -35,7 +38,7 @@ log = logging.getLogger("mkdocs.hooks.offline")
 TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map",)
-SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml"}
+SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml", "assets/vendor/pyodide/python_stdlib.core.compiled.zip"}
 INFLATED = ".snapshot.gz"  # stored inflated by the service worker
 LUNR_LANGUAGES = "assets/javascripts/lunr/"
 _serving = False

@@ -131,3 +131,31 @@ def test_the_sandbox_holds_no_grading_package():
     sandbox_lock = json.loads((VENDOR / "pyodide-lock.sandbox.json").read_text())
     assert set(sandbox_lock["packages"]) == set(lock()["packages"]) - {"robotics-workbook"}
     assert all("workbook" not in entry["imports"] for entry in sandbox_lock["packages"].values())
+
+
+def test_the_compiled_core_is_the_core_compiled():
+    """A plain start on a fast enough link imports the core compiled (scripts/split_stdlib.py): every
+    module of the core and nothing else, each compiled by Python 3.12 (Pyodide's) from the core's own
+    source, naming the source's place; every other file (the rest's index, the package's data) as is.
+    The offline copy leaves it out: a stored site starts from its snapshot, with the sources."""
+    import importlib.util
+    import marshal
+    import sys
+
+    assert sys.version_info[:2] == (3, 12)  # the venv's, as the build's: the magic number below is 3.12's
+    with zipfile.ZipFile(VENDOR / "python_stdlib.core.zip") as core, \
+            zipfile.ZipFile(VENDOR / "python_stdlib.core.compiled.zip") as compiled:
+        sources = {n for n in core.namelist() if n.endswith(".py")}
+        assert {n for n in compiled.namelist() if n.endswith(".pyc")} == {n + "c" for n in sources}
+        others = set(core.namelist()) - sources
+        assert set(compiled.namelist()) - {n + "c" for n in sources} == others and "stdlib-rest.txt" in others
+        for name in others:
+            assert compiled.read(name) == core.read(name), name
+        for name in sorted(sources):
+            pyc = compiled.read(name + "c")
+            assert pyc[:4] == importlib.util.MAGIC_NUMBER, name
+            code = marshal.loads(pyc[16:])
+            assert code.co_filename == f"/lib/python312.zip/{name}", name
+            assert code.co_code == compile(core.read(name), code.co_filename, "exec", dont_inherit=True).co_code, name
+    manifest = (SITE / "sw.js").read_text()
+    assert "python_stdlib.core.compiled.zip" not in manifest and '"assets/vendor/pyodide/python_stdlib.core.zip"' in manifest

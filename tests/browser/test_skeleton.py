@@ -99,6 +99,8 @@ def test_runtime_starts_from_the_memory_snapshot(page, site_url):
     assert page.evaluate("workbook.runtime.startedFrom") == "snapshot"
     # A first visit: Pyodide fetches and compiles its WebAssembly itself (see test_offline for later visits).
     assert page.evaluate("workbook.runtime.startStages.wasm") == "compiled by Pyodide"
+    # The snapshot's zip importer knows the core's sources: a snapshot start never takes the compiled core.
+    assert page.evaluate("workbook.runtime.startStages.stdlib") == "sources"
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     # The snapshot's random generator is reseeded at every start: no two starts draw alike.
     draws = []
@@ -121,6 +123,7 @@ def test_runtime_boots_without_a_usable_snapshot(page, site_url):
     wait_runtime(page, timeout=120_000)
     assert page.evaluate("workbook.runtime.startedFrom") == "boot"
     assert any("booted without the snapshot" in m for m in messages)
+    assert page.evaluate("workbook.runtime.startStages.stdlib") == "sources"  # the snapshot was chosen, then failed
     assert answer_derive(exercise(page, "0.1"), "3") == "correct"
     set_editor(page, exercise(page, "0.5"), ROTATE_OK)
     assert run_build(exercise(page, "0.5")) == "correct"

@@ -7,7 +7,9 @@
 // library, lock file and snapshot, Python's output silenced: `lockFileURL`,
 // `quiet`).
 // - `stdLibURL`: the standard library zip to start with (the grader: the small
-//   core of scripts/split_stdlib.py, which holds the grading package too).
+//   core of scripts/split_stdlib.py, which holds the grading package too);
+//   `compiledStdLibURL`: the same compiled, for a plain start where the link
+//   brings its extra bytes in less time than compiling the sources takes.
 // - `snapshotURL`: a memory snapshot made at build time (scripts/build_snapshot.mjs)
 //   to restore instead of booting; null boots plainly.
 // - `linkSpeed`: the link's speed in bytes per ms when the caller knows it (the
@@ -102,6 +104,12 @@ function progressMeter(indexURL, files, onProgress) {
       expected.delete(name);
       report(true);
     },
+    /** Count `to` instead of `from` (the start took another file for the same part). */
+    swap(from, to) {
+      expected.delete(from);
+      expected.set(to, SIZES[to] || 0);
+      report(true);
+    },
     phase(next) {
       phase = next;
       report(true);
@@ -117,17 +125,18 @@ function progressMeter(indexURL, files, onProgress) {
 }
 
 // ---- The memory snapshot ------------------------------------------------------------
-// On a first visit the snapshot is a 4.8 MB download that a plain start does
-// not need: on a slow link (3.9 s at 10 Mbps, 24 s at 1.6 Mbps) it costs far
-// more than booting Python and installing the wheel (under a second). From the
+// On a first visit the snapshot is a 5.7 MB download that a plain start does
+// not need: on a slow link (4.6 s at 10 Mbps, 29 s at 1.6 Mbps) it costs more
+// than booting Python and importing the grading package (1.2 s in Node with the
+// compiled core, 2.7 s from the sources). From the
 // stored copy (a revisit) it is always used. Otherwise its download waits until
 // Pyodide asks for it (after loading pyodide.asm.js, which comes with the
 // WebAssembly on the same link): if the link carried pyodide.asm.js fast
 // enough to bring the snapshot in under BOOT_COST_MS (about 26 Mbps), it is fetched and used;
 // if not, Pyodide boots plainly and the service worker stores the snapshot
 // with the offline copy, for the next visit.
-const BOOT_COST_MS = 1500; // a plain start costs under a second; the margin keeps a loaded machine on localhost on the snapshot
-const SNAPSHOT_BYTES = 4.9e6; // about; the file is 4.6-4.9 MB
+const BOOT_COST_MS = 1500; // a plain start's extra time over a restore, with a margin that keeps a loaded machine on localhost on the snapshot
+const SNAPSHOT_BYTES = 4.9e6; // what the rule was tuned with (the file has since grown to 5.7 MB; the rule leans to the snapshot)
 
 /** Bytes per ms the link brought pyodide.asm.js's body at (Resource Timing), or null. */
 function linkSpeed(indexURL) {
@@ -144,7 +153,8 @@ function snapshotDownload(url, indexURL, meter, knownSpeed) {
   let decide;
   const decided = new Promise((resolve) => (decide = resolve)); // the response, or null: skipped
   // Stored: read it at once (through the service worker, which checks its bytes).
-  isStored(url).then((hit) => {
+  const stored = isStored(url);
+  stored.then((hit) => {
     fromCache = hit;
     if (hit) decide(networkFetch(url));
   });
@@ -159,6 +169,7 @@ function snapshotDownload(url, indexURL, meter, knownSpeed) {
   let use = null;
   return {
     bytes,
+    stored, // whether the service worker's copy holds it (then it is always used)
     /** Whether to use the snapshot (asked when Pyodide wants it, synchronously; decided once). */
     worthIt() {
       if (use !== null) return use;
@@ -214,6 +225,37 @@ function checkSnapshot(bytes) {
   return bytes;
 }
 
+// ---- The standard library's core: sources or compiled ---------------------------------
+// A plain start (the snapshot skipped on a slow first visit) imports the core,
+// and compiling its sources was most of that start: in Node, booting and
+// importing took 2.7 s from the sources and 1.2 s compiled; at 10 Mbps ready
+// came 0.5 s sooner compiled although the compiled core is 1.1 MB larger. On
+// a slower link (a phone's) those bytes cost more than they save: there, and
+// for a snapshot start (which imports nothing, and whose zip importer knows the
+// sources' file), the sources. Pyodide asks for the zip as it starts but waits
+// for it only once Python starts, after the snapshot is decided: its request is
+// held until then (`choose`), or until the snapshot is found stored.
+const COMPILED_MIN_SPEED = 200; // bytes per ms of pyodide.asm.js's share of the link (335 at 10 Mbps; the break-even is near 6 Mbps)
+
+function coreChoice(sourceURL, compiledURL, meter) {
+  let choose;
+  let decided = !compiledURL; // nothing to choose: the sources
+  const chosen = decided ? Promise.resolve(sourceURL) : new Promise((resolve) => (choose = resolve));
+  return {
+    /** The URL Pyodide's request for `resource` stands for, once chosen; null for any other request. */
+    held: (resource) => (String(resource) === sourceURL ? chosen : null),
+    /** Decide (the first call only): the compiled core for a plain start on a link at least COMPILED_MIN_SPEED fast. */
+    choose(plain, speed) {
+      if (decided) return;
+      decided = true;
+      const compiled = plain && speed >= COMPILED_MIN_SPEED;
+      stages.stdlib = compiled ? "compiled" : "sources";
+      if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL));
+      choose(compiled ? compiledURL : sourceURL);
+    },
+  };
+}
+
 // ---- The WebAssembly -------------------------------------------------------------------
 // Pyodide 0.27 reads the whole snapshot before it starts compiling its
 // WebAssembly. When the service worker has stored the WebAssembly, compiling it
@@ -231,7 +273,7 @@ function checkSnapshot(bytes) {
 // nothing is fetched or compiled, and the compiled code (with what the browser has
 // optimised of it since) is shared, not made again. `used.module` is the module
 // the start instantiated, however it came.
-function patchWasm(url, meter, compiledStep, given, used) {
+function patchWasm(url, meter, compiledStep, given, used, core) {
   const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
   const counted = (resource, init) => {
@@ -259,8 +301,11 @@ function patchWasm(url, meter, compiledStep, given, used) {
     WebAssembly.instantiateStreaming = realInstantiate;
   };
   const countedDownload = () => takeDownload().then((response) => meter.watch(meter.fileName(url), response));
-  self.fetch = (resource, init) =>
-    String(resource) === url ? stored.then((hit) => (hit ? standIn : countedDownload())) : counted(resource, init);
+  self.fetch = (resource, init) => {
+    if (String(resource) === url) return stored.then((hit) => (hit ? standIn : countedDownload()));
+    const held = core.held(resource);
+    return held ? held.then((chosen) => counted(chosen, init)) : counted(resource, init);
+  };
   WebAssembly.instantiateStreaming = async (source, imports) => {
     const response = await source;
     restore();
@@ -288,8 +333,8 @@ function patchWasm(url, meter, compiledStep, given, used) {
 }
 
 // ---- The start ----------------------------------------------------------------------------
-export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, onProgress = null, lockFileURL = null,
-  quiet = false, linkSpeed: knownSpeed = null, module: given = null }) {
+export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = null, snapshotURL = null, onProgress = null,
+  lockFileURL = null, quiet = false, linkSpeed: knownSpeed = null, module: given = null }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
   const lock = lockFileURL ? fileIn(indexURL, lockFileURL) : "pyodide-lock.json"; // the lock this start reads
   const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", lock, fileIn(indexURL, stdLibURL)];
@@ -301,7 +346,9 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
   snapshot?.then(() => mark("snapshot"), () => {}); // handled below
   let skipped = !download;
   const used = { module: null };
-  const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore), given, used);
+  const core = coreChoice(stdLibURL, compiledStdLibURL, meter);
+  download?.stored.then((hit) => hit && core.choose(false, null)); // a stored snapshot is used: the sources, at once
+  const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore), given, used, core);
   importScripts(indexURL + "pyodide.js");
   meter.done("pyodide.js");
   mark("pyodide.js");
@@ -313,9 +360,15 @@ export async function startPyodide({ indexURL, stdLibURL, snapshotURL = null, on
     enumerable: false,
     get() {
       meter.done("pyodide.asm.js");
-      if (download?.worthIt()) return snapshot;
+      if (download?.worthIt()) {
+        core.choose(false, null);
+        return snapshot;
+      }
       skipped = true;
       if (download) stages.snapshot = "skipped: a slow link";
+      // Compiled only where the link was measured: a start without a snapshot to skip (the sandbox's
+      // replacement, say) has no measure here, and takes the sources.
+      core.choose(Boolean(download), knownSpeed > 0 ? knownSpeed : linkSpeed(indexURL));
       return undefined;
     },
   });

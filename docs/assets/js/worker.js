@@ -18,11 +18,13 @@ let lazyStdlib = null; // workbook.lazy_stdlib
 // boot.js starts Pyodide: it restores the memory snapshot made at build time
 // (the interpreter with the grading package imported), or boots when that is
 // not worth it or fails. Either way Python's standard library is the small
-// core, which holds the grading package too; the rest is mounted on first use
+// core, which holds the grading package too (compiled for a plain start on a
+// link fast enough to bring its extra bytes: boot.js); the rest is mounted on first use
 // (scripts/split_stdlib.py, workbook/lazy_stdlib.py). Its progress (bytes of
 // the runtime files, then Python's start) goes to the page as it happens.
 
 const STDLIB_CORE = indexURL + "python_stdlib.core.zip";
+const STDLIB_CORE_COMPILED = indexURL + "python_stdlib.core.compiled.zip"; // for a plain start on a fast enough link
 const STDLIB_REST = indexURL + "python_stdlib.rest.zip";
 const SNAPSHOT = indexURL + "workbook.snapshot.gz";
 
@@ -44,7 +46,8 @@ const answer = (request) => JSON.parse(handle(JSON.stringify(request)));
 // ---- Requests ------------------------------------------------------------------
 const ready = (async () => {
   const t0 = performance.now();
-  const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE, snapshotURL: SNAPSHOT, onProgress: reportBoot });
+  const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE, compiledStdLibURL: STDLIB_CORE_COMPILED,
+    snapshotURL: SNAPSHOT, onProgress: reportBoot });
   pyodide = started.py;
   started.step(BOOT_STEP.import); // the grading package and this page's exercises
   lazyStdlib = pyodide.pyimport("workbook.lazy_stdlib");
