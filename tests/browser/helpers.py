@@ -124,13 +124,16 @@ def open_editor(ex: Locator) -> None:
 
 
 def set_editor(page: Page, ex: Locator, code: str) -> None:
-    open_editor(ex)
-    ex.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbEditor.setCode(code)", code)
+    """The exercise's code, typed into the editor it opens (in one step: the editor set is the one
+    that was opened, whatever the page did between two of Playwright's calls)."""
+    ex.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbOpenEditor().then((ed) => { ed.setCode(code); })",
+                code)
+    ex.locator(".cm-editor").wait_for()
 
 
 def editor_code(ex: Locator) -> str:
     open_editor(ex)
-    return ex.evaluate("el => el.querySelector('[data-role=editor]').wbEditor.getCode()")
+    return ex.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor().then((ed) => ed.getCode())")
 
 
 def run_build(ex: Locator, timeout: float = 60_000) -> str:
