@@ -128,11 +128,9 @@ def set_editor(page: Page, ex: Locator, code: str) -> None:
     that was opened, whatever the page did between two of Playwright's calls)."""
     ex.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbOpenEditor().then((ed) => { ed.setCode(code); })",
                 code)
-    ex.locator(".cm-editor").wait_for()
 
 
 def editor_code(ex: Locator) -> str:
-    open_editor(ex)
     return ex.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor().then((ed) => ed.getCode())")
 
 

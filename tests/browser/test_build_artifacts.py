@@ -9,9 +9,12 @@ import ast
 import base64
 import gzip
 import hashlib
+import importlib.util
 import json
+import marshal
 import re
 import struct
+import sys
 import zipfile
 from pathlib import Path
 
@@ -138,10 +141,6 @@ def test_the_compiled_core_is_the_core_compiled():
     module of the core and nothing else, each compiled by Python 3.12 (Pyodide's) from the core's own
     source, naming the source's place; every other file (the rest's index, the package's data) as is.
     The offline copy leaves it out: a stored site starts from its snapshot, with the sources."""
-    import importlib.util
-    import marshal
-    import sys
-
     assert sys.version_info[:2] == (3, 12)  # the venv's, as the build's: the magic number below is 3.12's
     with zipfile.ZipFile(VENDOR / "python_stdlib.core.zip") as core, \
             zipfile.ZipFile(VENDOR / "python_stdlib.core.compiled.zip") as compiled:

@@ -170,10 +170,12 @@ function snapshotDownload(url, indexURL, meter, knownSpeed) {
   return {
     bytes,
     stored, // whether the service worker's copy holds it (then it is always used)
+    speed: null, // the link's speed worthIt() decided by (bytes per ms), null when stored or unknown
     /** Whether to use the snapshot (asked when Pyodide wants it, synchronously; decided once). */
     worthIt() {
       if (use !== null) return use;
       const speed = fromCache ? null : knownSpeed > 0 ? knownSpeed : linkSpeed(indexURL);
+      this.speed = speed;
       use = speed === null || SNAPSHOT_BYTES / speed < BOOT_COST_MS;
       if (!use) meter.drop(meter.fileName(url));
       else if (!fromCache) decide(networkFetch(url).then((r) => meter.watch(meter.fileName(url), r)));
@@ -368,7 +370,7 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
       if (download) stages.snapshot = "skipped: a slow link";
       // Compiled only where the link was measured: a start without a snapshot to skip (the sandbox's
       // replacement, say) has no measure here, and takes the sources.
-      core.choose(Boolean(download), knownSpeed > 0 ? knownSpeed : linkSpeed(indexURL));
+      core.choose(Boolean(download), download?.speed ?? null);
       return undefined;
     },
   });

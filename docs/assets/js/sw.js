@@ -61,7 +61,7 @@ async function sha256(buffer) {
  *  Its body is taken as a Blob, which for a stored response is a handle on the stored bytes, not a copy:
  *  the bytes are read once, to be hashed, and the response returned serves the same Blob as the
  *  stored one would. (Hashing a clone teed the body, so that the response served afterwards streamed
- *  through this worker's script: a revisit's start waited about 0.4 s longer for its largest files.) */
+ *  through this worker's script: a revisit's snapshot read ended 0.25-0.4 s later.) */
 async function genuine(response, entry) {
   try {
     const blob = await response.blob();
