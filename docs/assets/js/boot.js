@@ -246,14 +246,18 @@ function coreChoice(sourceURL, compiledURL, meter) {
   return {
     /** The URL Pyodide's request for `resource` stands for, once chosen; null for any other request. */
     held: (resource) => (String(resource) === sourceURL ? chosen : null),
-    /** Decide (the first call only): the compiled core for a plain start on a link at least COMPILED_MIN_SPEED fast. */
-    choose(plain, speed) {
+    /** Decide (the first call only): the compiled core for a plain start on a link at least COMPILED_MIN_SPEED
+     *  fast, never for a stored site (`stored`: a promise; the offline copy holds the sources only, and a
+     *  loaded machine can make even the stored copy's link look slow before the cache has answered). */
+    choose(plain, speed, stored = Promise.resolve(false)) {
       if (decided) return;
       decided = true;
-      const compiled = plain && speed >= COMPILED_MIN_SPEED;
-      stages.stdlib = compiled ? "compiled" : "sources";
-      if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL));
-      choose(compiled ? compiledURL : sourceURL);
+      stored.then((hit) => {
+        const compiled = plain && speed >= COMPILED_MIN_SPEED && !hit;
+        stages.stdlib = compiled ? "compiled" : "sources";
+        if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL));
+        choose(compiled ? compiledURL : sourceURL);
+      });
     },
   };
 }
@@ -370,7 +374,7 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
       if (download) stages.snapshot = "skipped: a slow link";
       // Compiled only where the link was measured: a start without a snapshot to skip (the sandbox's
       // replacement, say) has no measure here, and takes the sources.
-      core.choose(Boolean(download), download?.speed ?? null);
+      core.choose(Boolean(download), download?.speed ?? null, download?.stored);
       return undefined;
     },
   });
