@@ -117,8 +117,27 @@ def arrange_design(ex: Locator, order: list[str]) -> None:
             ex.locator(f'[data-role="step"][data-step="{key}"] [data-role="move-up"]').click()
 
 
+# A Build exercise's editor host gets wbOpenEditor when its widget starts (kinds/build.js). That is
+# later than the exercise's own data-wb-ready, which is set when the widget's module starts loading.
+EDITORS_STARTED = """() => [...document.querySelectorAll('[data-role=editor]')]
+  .every((host) => typeof host.wbOpenEditor === 'function')"""
+EDITOR_STARTED = "el => typeof el.querySelector('[data-role=editor]')?.wbOpenEditor === 'function'"
+
+
+def editor_started(ex: Locator, timeout: float = 60_000) -> None:
+    """Wait until the exercise's Build widget has started (its editor can be opened)."""
+    ex.page.wait_for_function(EDITOR_STARTED, arg=ex.element_handle(), timeout=timeout)
+
+
+def open_all_editors(page: Page, timeout: float = 60_000) -> None:
+    """Build every editor on the page now, once every Build widget has started."""
+    page.wait_for_function(EDITORS_STARTED, timeout=timeout)
+    page.evaluate("() => Promise.all([...document.querySelectorAll('[data-role=editor]')].map((h) => h.wbOpenEditor())).then(() => null)")
+
+
 def open_editor(ex: Locator) -> None:
     """Build the exercise's CodeMirror editor now (the page builds it lazily)."""
+    editor_started(ex)
     ex.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor().then(() => null)")  # not the editor: serialising it back costs ~0.3 s
     ex.locator(".cm-editor").wait_for()
 
@@ -126,11 +145,13 @@ def open_editor(ex: Locator) -> None:
 def set_editor(page: Page, ex: Locator, code: str) -> None:
     """The exercise's code, typed into the editor it opens (in one step: the editor set is the one
     that was opened, whatever the page did between two of Playwright's calls)."""
+    editor_started(ex)
     ex.evaluate("(el, code) => el.querySelector('[data-role=editor]').wbOpenEditor().then((ed) => { ed.setCode(code); })",
                 code)
 
 
 def editor_code(ex: Locator) -> str:
+    editor_started(ex)
     return ex.evaluate("el => el.querySelector('[data-role=editor]').wbOpenEditor().then((ed) => ed.getCode())")
 
 

@@ -14,7 +14,17 @@ from playwright.sync_api import Locator, Page, expect
 
 from conftest import ROOT
 from formula_cues import WIDER_THAN_BOX, check_formulas, formulas_ready
-from helpers import CHAPTERS, exercise, fill_matrix, open_chapter, role, run_build, settle, wait_runtime
+from helpers import (
+    CHAPTERS,
+    exercise,
+    fill_matrix,
+    open_all_editors,
+    open_chapter,
+    role,
+    run_build,
+    settle,
+    wait_runtime,
+)
 from workbook import bank
 from workbook.number_format import fmt
 
@@ -37,7 +47,7 @@ SLOW = 120_000  # ms: generous, for a test machine busy with other work (a page'
 def settle_page(page: Page) -> None:
     """Wait until the page's script has drawn everything it draws (editors built now)."""
     page.wait_for_function("() => [...document.querySelectorAll('[data-exercise-id]')].every(e => e.dataset.wbReady)", timeout=SLOW)
-    page.evaluate("() => Promise.all([...document.querySelectorAll('" + role("editor") + "')].map(h => h.wbOpenEditor())).then(() => null)")
+    open_all_editors(page, timeout=SLOW)
     page.wait_for_function("""() => {
       const exercises = [...document.querySelectorAll('[data-exercise-id]')];
       const builds = exercises.filter(e => e.dataset.kind === 'build');

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from playwright.sync_api import expect
 
-from helpers import CHAPTERS, exercise, open_chapter, open_editor, role, wait_runtime
+from helpers import CHAPTERS, editor_code, exercise, open_all_editors, open_chapter, open_editor, role, wait_runtime
 from workbook import bank
 from workbook.number_format import fmt
 
@@ -82,10 +82,6 @@ def test_in_page_links_keep_every_verdict_and_back_to_exercise_focuses_its_answe
 
 
 BUILD = "1.7"
-
-
-def editor_code(ex):
-    return ex.evaluate("el => el.querySelector('[data-role=editor]').wbEditor.getCode()")
 
 
 def in_editor(page):
@@ -197,7 +193,7 @@ def test_every_tab_stop_is_visible_and_ringed(page, site_url):
         page.set_viewport_size({"width": width, "height": height})
         open_chapter(page, site_url, 0)
         # the page drawn to its end first (editors built), so nothing moves under the focus
-        page.evaluate("() => Promise.all([...document.querySelectorAll('[data-role=editor]')].map((h) => h.wbOpenEditor())).then(() => null)")
+        open_all_editors(page)
         # measured as they are, not halfway through the theme's transitions (the skip link fades in)
         page.add_style_tag(content="*, *::before, *::after { transition: none !important; }")
         for stop in range(60):
