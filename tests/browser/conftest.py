@@ -79,7 +79,7 @@ def pytest_configure(config):
     config.addinivalue_line("markers", "xdist_group(name): run in one test process (pytest-xdist's mark)")
 
 
-# The longest files first, so that the two processes end together (longest job first); a file
+# The longest files first, so that the processes end together (longest job first); a file
 # that sets ``SPREAD = True`` has tests that share nothing, and they are shared out one by one.
 LONGEST_FIRST = ("test_a11y", "test_sandbox", "test_offline", "test_chapters", "test_skeleton", "test_course",
                  "test_progress_kept", "test_first_hour", "test_nothing_undone", "test_offline_truth", "test_progress",
@@ -87,7 +87,7 @@ LONGEST_FIRST = ("test_a11y", "test_sandbox", "test_offline", "test_chapters", "
 
 
 def pytest_collection_modifyitems(config, items):
-    """Group each file's tests for ``pytest -n 2 --dist loadgroup`` (a file's tests share its
+    """Group each file's tests for ``pytest -n 3 --dist loadgroup`` (a file's tests share its
     module fixtures and run in one process), except in files that spread, and order the files
     longest first."""
     def rank(item):

@@ -28,7 +28,7 @@ from helpers import (
 from workbook import bank
 from workbook.number_format import fmt
 
-SPREAD = True  # its tests share nothing: the two test processes share them out (conftest.py)
+SPREAD = True  # its tests share nothing: the test processes share them out (conftest.py)
 AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
 EVERY_PAGE = [*PAGES, "practise/", "performance/"]  # the last is the developers' page, out of the menu
