@@ -11,9 +11,22 @@ import re
 
 from playwright.sync_api import expect
 
-from helpers import CHAPTERS, exercise, open_chapter, reveal, role, settle, solve, wait_runtime
+from helpers import (
+    CHAPTERS,
+    entry_values,
+    exercise,
+    fill_matrix,
+    open_chapter,
+    reveal,
+    role,
+    settle,
+    solve,
+    wait_runtime,
+    widget_ready,
+)
 from workbook import bank
 from workbook.contract import ATTR
+from workbook.number_format import fmt
 
 EX = "0.1"
 
@@ -87,6 +100,84 @@ def test_a_reload_keeps_the_variant_and_a_link_opens_it(page, site_url, context)
     other.wait_for_function("([el, a]) => el.getAttribute(a) === '4242'", arg=[el.element_handle(), ATTR.variant])
     shows(el, 4242)
     assert link.endswith(f"variant={EX}-{n}#ex-0-1")
+
+
+def test_a_reload_keeps_the_answer_and_step_work_given_to_new_numbers(page, site_url):
+    """What a learner typed to drawn numbers comes back with them: a number answer (0.1), and the
+    answer and checked steps of a matrix exercise worked in steps (3.8). Leaving the numbers for
+    others drops them (they answered numbers no longer on screen)."""
+    open_chapter(page, site_url, 0)
+    el = exercise(page, EX)
+    n = draw(el)
+    el.locator(role("answer")).fill("12.5")
+    el.locator(role("check")).click()
+    assert settle(el) == "incorrect"
+    page.reload()
+    wait_runtime(page)
+    el = exercise(page, EX)
+    page.wait_for_function("([el, a, v]) => el.getAttribute(a) === v && !el.hasAttribute('aria-busy')",
+                           arg=[el.element_handle(), ATTR.variant, str(n)])
+    widget_ready(el)
+    assert el.locator(role("answer")).input_value() == "12.5"
+    assert record(page, EX)["last"] == "12.5"
+    other = draw(el)  # other numbers: the answer to the old ones goes
+    assert el.locator(role("answer")).input_value() == "" and record(page, EX)["last"] is None and other != n
+
+    steps = bank.get("3.8")
+    open_chapter(page, site_url, 3)
+    el = exercise(page, "3.8")
+    m = draw(el)
+    v = steps.variant(m)
+    el.locator(role("work-steps-open")).click()
+    first = el.locator(role("work-step", f'[{ATTR.stepName}="FP"]'))
+    wrong = [[fmt(x + 1) for x in row] for row in v.step_answers["FP"].cleaned]
+    fill_matrix(first, wrong)
+    first.locator(role("work-step-check")).click()
+    page.wait_for_function("el => el.dataset.state && el.dataset.state !== 'pending'", arg=first.element_handle())
+    own = el.locator("form").first
+    answer = [[fmt(x) for x in row] for row in v.answer.cleaned]
+    fill_matrix(own, answer)
+    own.locator(role("check")).click()
+    assert settle(el) == "correct"
+    page.reload()
+    wait_runtime(page)
+    el = exercise(page, "3.8")
+    page.wait_for_function("([el, a, v]) => el.getAttribute(a) === v && !el.hasAttribute('aria-busy')",
+                           arg=[el.element_handle(), ATTR.variant, str(m)])
+    el.locator("form[data-wb-ready]").first.wait_for(state="attached")  # the exercise's own form (its steps have theirs)
+    assert entry_values(el.locator("form").first) == answer, "the answer to the drawn numbers was lost"
+    assert record(page, "3.8")["stepWork"], "the step work on the drawn numbers was lost"
+    el.locator(role("work-steps-open")).click()
+    first = el.locator(role("work-step", f'[{ATTR.stepName}="FP"]'))
+    assert entry_values(first) == wrong
+    assert page.js_errors == []
+
+
+def test_an_answer_typed_before_the_widget_starts_is_the_one_checked(page, site_url):
+    """A learner who types and presses Check before the exercise's script has loaded, on a page
+    that holds an earlier answer, has what they typed checked: the earlier answer does not come
+    back over it."""
+    open_chapter(page, site_url, 0)
+    el = exercise(page, EX)
+    el.locator(role("answer")).fill("12345")
+    el.locator(role("check")).click()
+    assert settle(el) == "incorrect"
+    held = []
+    page.route("**/chunks/derive-*.js", lambda route: held.append(route))
+    page.reload()
+    el = exercise(page, EX)
+    worked = bank.get(EX).worked_text()
+    el.locator(role("answer")).fill(worked)
+    el.locator(role("answer")).press("Enter")
+    assert held, "the Derive widget's script was not held back"
+    for route in held:
+        route.continue_()
+    page.unroute("**/chunks/derive-*.js")
+    page.wait_for_function("el => ['correct', 'incorrect', 'invalid'].includes(el.dataset.state)",
+                           arg=el.element_handle(), timeout=120_000)
+    assert el.get_attribute(ATTR.state) == "correct", "the earlier answer was checked, not the one typed"
+    assert el.locator(role("answer")).input_value() == worked
+    assert record(page, EX)["last"] == worked
 
 
 def test_a_bad_variant_in_a_link_says_so_in_the_page(page, site_url):

@@ -113,7 +113,9 @@ function showControls(ctx, n) {
 
 /**
  * Draw variant `n` and put it on the page. `remember`: also into the address
- * and the progress record (not on the Practise page). Resolves to true once the
+ * and the progress record (not on the Practise page); the record's answer and
+ * step work go with numbers the learner leaves, and stay with the numbers the
+ * record already holds (a reload brings them back). Resolves to true once the
  * variant is on screen, false if the grader could not draw it (the numbers on
  * screen then stay, and say so).
  */
@@ -150,7 +152,9 @@ export async function showVariant(ctx, n, { remember = true } = {}) {
   el.setAttribute(ATTR.state, record.done?.includes(v.variant) ? STATE.correct : STATE.unanswered);
   showControls(ctx, v.variant);
   if (remember) {
-    ctx.progress.update(ctx.id, { variant: v.variant, last: null, stepWork: null }); // null, not absent: an older copy must not bring the old answer back
+    if ((record.variant ?? 0) !== v.variant) {
+      ctx.progress.update(ctx.id, { variant: v.variant, last: null, stepWork: null }); // null, not absent: an older copy must not bring the old answer back
+    }
     history.replaceState(history.state, "", variantHref(ctx.id, v.variant, el.id));
   }
   el.setAttribute(ATTR.variant, String(v.variant));

@@ -54,7 +54,7 @@ export function init(ctx) {
   return {
     value: () => Array.from({ length: rows }, (_, i) => Array.from({ length: cols }, (_, j) => at(i + 1, j + 1)?.value ?? "")),
     restore(last) {
-      if (Array.isArray(last)) fill(last);
+      if (Array.isArray(last) && entries.every((input) => !input.value)) fill(last); // what the learner typed meanwhile stays
     },
     clear() {
       for (const input of entries) {

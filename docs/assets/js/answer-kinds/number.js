@@ -6,7 +6,7 @@ export function init(ctx) {
   return {
     value: () => input.value,
     restore(last) {
-      if (typeof last === "string") input.value = last;
+      if (typeof last === "string" && !input.value) input.value = last; // what the learner typed meanwhile stays
     },
     clear() {
       input.value = "";
