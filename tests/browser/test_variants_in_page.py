@@ -13,6 +13,7 @@ from playwright.sync_api import expect
 
 from helpers import (
     CHAPTERS,
+    check,
     entry_values,
     exercise,
     fill_matrix,
@@ -178,6 +179,32 @@ def test_an_answer_typed_before_the_widget_starts_is_the_one_checked(page, site_
     assert el.get_attribute(ATTR.state) == "correct", "the earlier answer was checked, not the one typed"
     assert el.locator(role("answer")).input_value() == worked
     assert record(page, EX)["last"] == worked
+
+
+def test_a_trace_option_picked_before_the_widget_starts_is_the_one_checked(page, site_url):
+    """The same for a Trace exercise (0.3): a stored pick does not come back over the learner's."""
+    ex = bank.get("0.3")
+    keys = [option.key for option in ex.options]
+    wrong = next(k for k in keys if k != ex.answer)
+    open_chapter(page, site_url, 0)
+    el = exercise(page, ex.id)
+    widget_ready(el)
+    el.locator(f'[data-role="choice"][value="{wrong}"]').check()
+    assert check(el) == "incorrect"
+    held = []
+    page.route("**/chunks/trace-*.js", lambda route: held.append(route))
+    page.reload()
+    el = exercise(page, ex.id)
+    el.locator(f'[data-role="choice"][value="{ex.answer}"]').check()
+    el.locator(role("check")).click()
+    assert held, "the Trace widget's script was not held back"
+    for route in held:
+        route.continue_()
+    page.unroute("**/chunks/trace-*.js")
+    page.wait_for_function("el => ['correct', 'incorrect', 'invalid'].includes(el.dataset.state)",
+                           arg=el.element_handle(), timeout=120_000)
+    assert el.get_attribute(ATTR.state) == "correct", "the stored pick was checked, not the one made"
+    assert record(page, ex.id)["last"] == ex.answer
 
 
 def test_a_bad_variant_in_a_link_says_so_in_the_page(page, site_url):
