@@ -181,6 +181,36 @@ def test_an_answer_typed_before_the_widget_starts_is_the_one_checked(page, site_
     assert record(page, EX)["last"] == worked
 
 
+def test_a_check_before_the_widget_starts_is_not_graded_against_numbers_it_did_not_answer(page, site_url):
+    """On a page that brings back drawn numbers, the page first shows the workbook's numbers: an
+    answer typed and checked before the exercise's script starts answered those. It is not graded
+    against the drawn numbers that then come back; the exercise says so and shows the answer
+    last checked to them."""
+    open_chapter(page, site_url, 0)
+    el = exercise(page, EX)
+    n = draw(el)
+    el.locator(role("answer")).fill("12.5")
+    assert check(el) == "incorrect"
+    attempts = record(page, EX)["attempts"]
+    held = []
+    page.route("**/chunks/derive-*.js", lambda route: held.append(route))
+    page.goto(site_url + CHAPTERS[0])  # the chapter's address: its numbers come from the record
+    el = exercise(page, EX)
+    assert el.get_attribute(ATTR.variant) == "0"
+    el.locator(role("answer")).fill(bank.get(EX).worked_text())  # right for the numbers on screen now
+    el.locator(role("answer")).press("Enter")
+    assert held, "the Derive widget's script was not held back"
+    for route in held:
+        route.continue_()
+    page.unroute("**/chunks/derive-*.js")
+    page.wait_for_function("([el, v]) => el.getAttribute('data-variant') === v && !el.hasAttribute('aria-busy')",
+                           arg=[el.element_handle(), str(n)], timeout=120_000)
+    expect(el.locator(role("feedback"))).to_contain_text("Not checked")
+    assert record(page, EX)["attempts"] == attempts, "the answer was graded against numbers it did not answer"
+    assert el.locator(role("answer")).input_value() == "12.5"
+    assert page.js_errors == []
+
+
 def test_a_trace_option_picked_before_the_widget_starts_is_the_one_checked(page, site_url):
     """The same for a Trace exercise (0.3): a stored pick does not come back over the learner's."""
     ex = bank.get("0.3")

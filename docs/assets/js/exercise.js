@@ -87,8 +87,10 @@ function initHelp(ctx) {
 }
 
 // The page's head holds back a Check pressed before the widget was ready
-// (docs/overrides/main.html); now that it is, check that answer.
-function replayEarlySubmit(el) {
+// (docs/overrides/main.html); now that it is, check that answer, unless the
+// widget's start changed the numbers it answered (the learner's own drawn
+// numbers came back): it answered numbers no longer on screen.
+function replayEarlySubmit(el, numbersBefore) {
   const form = ownQuery(el, "form");
   if (!form) return;
   form.dataset.wbReady = "true";
@@ -96,6 +98,10 @@ function replayEarlySubmit(el) {
   const at = early.indexOf(form);
   if (at >= 0) {
     early.splice(at, 1);
+    if (el.getAttribute(ATTR.variant) !== numbersBefore) {
+      showMessage(el, "Not checked: the numbers you had here last time are back, so the answer you typed was for other numbers. Check your answer to these.");
+      return;
+    }
     form.requestSubmit();
   }
 }
@@ -146,9 +152,10 @@ export function initExercise(el, shared) {
     showMessage(el, saved.solvedAfterReveal ? "Solved earlier (after revealing the solution)." : "Solved earlier.");
   }
   initHelp(ctx);
+  const numbersBefore = el.getAttribute(ATTR.variant); // the numbers a Check pressed before the widget started answered
   import(`./kinds/${kind}.js`)
     .then((module) => module.init(ctx))
-    .then(() => replayEarlySubmit(el))
+    .then(() => replayEarlySubmit(el, numbersBefore))
     .catch((err) => {
       el.setAttribute(ATTR.state, STATE.error);
       showMessage(el, `This exercise could not start: ${err.message}`);
