@@ -154,6 +154,33 @@ def test_a_reload_keeps_the_answer_and_step_work_given_to_new_numbers(page, site
     assert page.js_errors == []
 
 
+def test_an_answer_comes_back_with_the_numbers_it_answered_whatever_another_tab_drew(page, site_url, context):
+    """Tab A draws new numbers; tab B, still on the workbook's numbers, answers those. The record
+    names the numbers of its answer, so the chapter opened again shows that answer with the numbers
+    it answered, not under tab A's."""
+    other = context.new_page()  # tab B, open on the workbook's numbers
+    open_chapter(other, site_url, 0)
+    theirs = exercise(other, EX)
+    widget_ready(theirs)
+    open_chapter(page, site_url, 0)  # tab A
+    el = exercise(page, EX)
+    draw(el)
+    assert theirs.get_attribute(ATTR.variant) == "0"
+    worked = bank.get(EX).worked_text()
+    theirs.locator(role("answer")).fill(worked)
+    assert check(theirs) == "correct"
+    other.close()
+    page.goto(site_url + CHAPTERS[0])  # the chapter's address: its numbers come from the record
+    wait_runtime(page)
+    el = exercise(page, EX)
+    widget_ready(el)
+    page.wait_for_function("el => !el.hasAttribute('aria-busy')", arg=el.element_handle())
+    assert el.get_attribute(ATTR.variant) == "0", "the answer's numbers were not the ones shown"
+    assert el.locator(role("answer")).input_value() == worked
+    assert el.get_attribute(ATTR.state) == "correct"
+    assert page.js_errors == []
+
+
 def test_an_answer_typed_before_the_widget_starts_is_the_one_checked(page, site_url):
     """A learner who types and presses Check before the exercise's script has loaded, on a page
     that holds an earlier answer, has what they typed checked: the earlier answer does not come

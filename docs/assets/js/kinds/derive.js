@@ -26,9 +26,12 @@ export async function init(ctx) {
     const answer = field.value();
     const steps = ctx.steps?.answers();
     // The record's `last` is the chapter's answer, to its own numbers: an answer to numbers a page forced
-    // (the Practise page's review, an assignment's) is not put there, or the chapter would show it.
+    // (the Practise page's review, an assignment's) is not put there, or the chapter would show it. The
+    // record's variant names the numbers `last` answered: another tab may have drawn others meanwhile.
+    const recorded = ctx.progress.get(ctx.id).variant ?? 0;
+    const saved = ctx.start != null ? {} : recorded === ctx.variant ? { last: answer } : { last: answer, variant: ctx.variant };
     const reply = await ctx.submit("grade", { answer, given: givenFor(ctx), ...(steps && Object.keys(steps).length ? { steps } : {}) },
-      { saved: ctx.start == null ? { last: answer } : {} });
+      { saved });
     field.show?.(reply);
     showCarried(ctx.el, reply);
     afterFinal(ctx, reply);
