@@ -88,8 +88,9 @@ function initHelp(ctx) {
 
 // The page's head holds back a Check pressed before the widget was ready
 // (docs/overrides/main.html); now that it is, check that answer, unless the
-// widget's start changed the numbers it answered (the learner's own drawn
-// numbers came back): it answered numbers no longer on screen.
+// widget's start changed the numbers it answered (numbers drawn earlier came
+// back, an address or a page asked for others): it answered numbers no longer
+// on screen.
 function replayEarlySubmit(el, numbersBefore) {
   const form = ownQuery(el, "form");
   if (!form) return;
@@ -99,7 +100,8 @@ function replayEarlySubmit(el, numbersBefore) {
   if (at >= 0) {
     early.splice(at, 1);
     if (el.getAttribute(ATTR.variant) !== numbersBefore) {
-      showMessage(el, "Not checked: the numbers you had here last time are back, so the answer you typed was for other numbers. Check your answer to these.");
+      // The numbers came back from the record (drawn earlier), from the address, or from a page that forces them.
+      showMessage(el, "Not checked: this exercise's numbers changed as it started, so the answer you typed was for other numbers. Check your answer to these.");
       return;
     }
     form.requestSubmit();
