@@ -181,6 +181,27 @@ def test_an_answer_comes_back_with_the_numbers_it_answered_whatever_another_tab_
     assert page.js_errors == []
 
 
+def before_the_widget(page, chunk: str, go, act) -> None:
+    """Open a page (``go``) with the widget's script (``chunk``, its bundle chunk) held back, do
+    what the learner does meanwhile (``act``), then let the script load."""
+    held = []
+    pattern = f"**/chunks/{chunk}-*.js"
+    page.route(pattern, lambda route: held.append(route))
+    go()
+    act()
+    assert held, f"the {chunk} widget's script was not held back"
+    for route in held:
+        route.continue_()
+    page.unroute(pattern)
+
+
+def graded(page, el) -> str:
+    """The exercise's state once a held Check has been graded."""
+    page.wait_for_function("el => ['correct', 'incorrect', 'invalid'].includes(el.dataset.state)",
+                           arg=el.element_handle(), timeout=120_000)
+    return el.get_attribute(ATTR.state)
+
+
 def test_an_answer_typed_before_the_widget_starts_is_the_one_checked(page, site_url):
     """A learner who types and presses Check before the exercise's script has loaded, on a page
     that holds an earlier answer, has what they typed checked: the earlier answer does not come
@@ -188,22 +209,15 @@ def test_an_answer_typed_before_the_widget_starts_is_the_one_checked(page, site_
     open_chapter(page, site_url, 0)
     el = exercise(page, EX)
     el.locator(role("answer")).fill("12345")
-    el.locator(role("check")).click()
-    assert settle(el) == "incorrect"
-    held = []
-    page.route("**/chunks/derive-*.js", lambda route: held.append(route))
-    page.reload()
-    el = exercise(page, EX)
+    assert check(el) == "incorrect"
     worked = bank.get(EX).worked_text()
-    el.locator(role("answer")).fill(worked)
-    el.locator(role("answer")).press("Enter")
-    assert held, "the Derive widget's script was not held back"
-    for route in held:
-        route.continue_()
-    page.unroute("**/chunks/derive-*.js")
-    page.wait_for_function("el => ['correct', 'incorrect', 'invalid'].includes(el.dataset.state)",
-                           arg=el.element_handle(), timeout=120_000)
-    assert el.get_attribute(ATTR.state) == "correct", "the earlier answer was checked, not the one typed"
+
+    def type_and_check():
+        el.locator(role("answer")).fill(worked)
+        el.locator(role("answer")).press("Enter")
+
+    before_the_widget(page, "derive", page.reload, type_and_check)
+    assert graded(page, el) == "correct", "the earlier answer was checked, not the one typed"
     assert el.locator(role("answer")).input_value() == worked
     assert record(page, EX)["last"] == worked
 
@@ -219,17 +233,14 @@ def test_a_check_before_the_widget_starts_is_not_graded_against_numbers_it_did_n
     el.locator(role("answer")).fill("12.5")
     assert check(el) == "incorrect"
     attempts = record(page, EX)["attempts"]
-    held = []
-    page.route("**/chunks/derive-*.js", lambda route: held.append(route))
-    page.goto(site_url + CHAPTERS[0])  # the chapter's address: its numbers come from the record
-    el = exercise(page, EX)
-    assert el.get_attribute(ATTR.variant) == "0"
-    el.locator(role("answer")).fill(bank.get(EX).worked_text())  # right for the numbers on screen now
-    el.locator(role("answer")).press("Enter")
-    assert held, "the Derive widget's script was not held back"
-    for route in held:
-        route.continue_()
-    page.unroute("**/chunks/derive-*.js")
+
+    def type_and_check():
+        assert el.get_attribute(ATTR.variant) == "0"
+        el.locator(role("answer")).fill(bank.get(EX).worked_text())  # right for the numbers on screen now
+        el.locator(role("answer")).press("Enter")
+
+    # the chapter's address: its numbers come from the record
+    before_the_widget(page, "derive", lambda: page.goto(site_url + CHAPTERS[0]), type_and_check)
     page.wait_for_function("([el, v]) => el.getAttribute('data-variant') === v && !el.hasAttribute('aria-busy')",
                            arg=[el.element_handle(), str(n)], timeout=120_000)
     expect(el.locator(role("feedback"))).to_contain_text("Not checked")
@@ -241,26 +252,19 @@ def test_a_check_before_the_widget_starts_is_not_graded_against_numbers_it_did_n
 def test_a_trace_option_picked_before_the_widget_starts_is_the_one_checked(page, site_url):
     """The same for a Trace exercise (0.3): a stored pick does not come back over the learner's."""
     ex = bank.get("0.3")
-    keys = [option.key for option in ex.options]
-    wrong = next(k for k in keys if k != ex.answer)
+    wrong = next(option.key for option in ex.options if option.key != ex.answer)
     open_chapter(page, site_url, 0)
     el = exercise(page, ex.id)
     widget_ready(el)
     el.locator(f'[data-role="choice"][value="{wrong}"]').check()
     assert check(el) == "incorrect"
-    held = []
-    page.route("**/chunks/trace-*.js", lambda route: held.append(route))
-    page.reload()
-    el = exercise(page, ex.id)
-    el.locator(f'[data-role="choice"][value="{ex.answer}"]').check()
-    el.locator(role("check")).click()
-    assert held, "the Trace widget's script was not held back"
-    for route in held:
-        route.continue_()
-    page.unroute("**/chunks/trace-*.js")
-    page.wait_for_function("el => ['correct', 'incorrect', 'invalid'].includes(el.dataset.state)",
-                           arg=el.element_handle(), timeout=120_000)
-    assert el.get_attribute(ATTR.state) == "correct", "the stored pick was checked, not the one made"
+
+    def pick_and_check():
+        el.locator(f'[data-role="choice"][value="{ex.answer}"]').check()
+        el.locator(role("check")).click()
+
+    before_the_widget(page, "trace", page.reload, pick_and_check)
+    assert graded(page, el) == "correct", "the stored pick was checked, not the one made"
     assert record(page, ex.id)["last"] == ex.answer
 
 
