@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from urllib.parse import urlsplit
 
 from playwright.sync_api import Locator, Page
@@ -91,6 +92,27 @@ def answer_derive(ex: Locator, text: str) -> str:
 def widget_ready(ex: Locator) -> None:
     """Wait until the exercise's widget has started (its form is marked ready): a click before that selects nothing."""
     ex.locator("form[data-wb-ready]").wait_for(state="attached")
+
+
+def before_the_widget(page: Page, chunk: str, go: Callable[[], object], act: Callable[[], object]) -> None:
+    """Open a page (``go``) with the widget's script (``chunk``, its bundle chunk) held back, do
+    what the learner does meanwhile (``act``), then let the script load."""
+    held = []
+    pattern = f"**/chunks/{chunk}-*.js"
+    page.route(pattern, lambda route: held.append(route))
+    go()
+    act()
+    assert held, f"the {chunk} widget's script was not held back"
+    for route in held:
+        route.continue_()
+    page.unroute(pattern)
+
+
+def graded(page: Page, el: Locator) -> str:
+    """The exercise's state once a held Check has been graded."""
+    page.wait_for_function("el => ['correct', 'incorrect', 'invalid'].includes(el.dataset.state)",
+                           arg=el.element_handle(), timeout=120_000)
+    return el.get_attribute(ATTR.state)
 
 
 def answer_trace(ex: Locator, key: str) -> str:

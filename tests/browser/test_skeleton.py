@@ -18,10 +18,12 @@ from helpers import (
     answer_derive,
     answer_trace,
     arrange_design,
+    before_the_widget,
     check,
     editor_code,
     exercise,
     feedback,
+    graded,
     open_chapter,
     role,
     run_build,
@@ -215,16 +217,13 @@ def test_opened_from_a_file_explains_how_to_serve(browser):
 
 def test_a_check_pressed_before_the_widget_is_ready_is_held_not_lost(page, site_url):
     """Enter in an answer field before the exercise's script has loaded: no reload, and the answer is checked."""
-    held = []
-    page.route("**/chunks/derive-*.js", lambda route: held.append(route))
-    page.goto(site_url + "chapters/00-rotations-2d/")
     ex = exercise(page, "0.1")
-    ex.locator(role("answer")).fill("3")
-    ex.locator(role("answer")).press("Enter")
-    page.wait_for_function("() => true")  # the page is still the same document
-    assert "?" not in page.url
-    assert held, "the Derive widget's script was not held back"
-    for route in held:
-        route.continue_()
-    page.unroute("**/chunks/derive-*.js")
-    page.wait_for_function("el => el.dataset.state === 'correct'", arg=ex.element_handle(), timeout=120_000)
+
+    def type_and_press_enter():
+        ex.locator(role("answer")).fill("3")
+        ex.locator(role("answer")).press("Enter")
+        page.wait_for_function("() => true")  # the page is still the same document
+        assert "?" not in page.url
+
+    before_the_widget(page, "derive", lambda: page.goto(site_url + "chapters/00-rotations-2d/"), type_and_press_enter)
+    assert graded(page, ex) == "correct"

@@ -13,10 +13,12 @@ from playwright.sync_api import expect
 
 from helpers import (
     CHAPTERS,
+    before_the_widget,
     check,
     entry_values,
     exercise,
     fill_matrix,
+    graded,
     open_chapter,
     reveal,
     role,
@@ -43,6 +45,12 @@ def draw(el) -> int:
     el.page.wait_for_function("([el, a, v]) => el.getAttribute(a) !== v",
                               arg=[el.element_handle(), ATTR.variant, before])
     return variant_of(el)
+
+
+def numbers_back(el, n: int) -> None:
+    """Wait until variant ``n`` is on screen again (after a reload) and drawn."""
+    el.page.wait_for_function("([el, a, v]) => el.getAttribute(a) === v && !el.hasAttribute('aria-busy')",
+                              arg=[el.element_handle(), ATTR.variant, str(n)], timeout=120_000)
 
 
 def shows(el, n: int) -> None:
@@ -111,13 +119,11 @@ def test_a_reload_keeps_the_answer_and_step_work_given_to_new_numbers(page, site
     el = exercise(page, EX)
     n = draw(el)
     el.locator(role("answer")).fill("12.5")
-    el.locator(role("check")).click()
-    assert settle(el) == "incorrect"
+    assert check(el) == "incorrect"
     page.reload()
     wait_runtime(page)
     el = exercise(page, EX)
-    page.wait_for_function("([el, a, v]) => el.getAttribute(a) === v && !el.hasAttribute('aria-busy')",
-                           arg=[el.element_handle(), ATTR.variant, str(n)])
+    numbers_back(el, n)
     widget_ready(el)
     assert el.locator(role("answer")).input_value() == "12.5"
     assert record(page, EX)["last"] == "12.5"
@@ -143,8 +149,7 @@ def test_a_reload_keeps_the_answer_and_step_work_given_to_new_numbers(page, site
     page.reload()
     wait_runtime(page)
     el = exercise(page, "3.8")
-    page.wait_for_function("([el, a, v]) => el.getAttribute(a) === v && !el.hasAttribute('aria-busy')",
-                           arg=[el.element_handle(), ATTR.variant, str(m)])
+    numbers_back(el, m)
     el.locator("form[data-wb-ready]").first.wait_for(state="attached")  # the exercise's own form (its steps have theirs)
     assert entry_values(el.locator("form").first) == answer, "the answer to the drawn numbers was lost"
     assert record(page, "3.8")["stepWork"], "the step work on the drawn numbers was lost"
@@ -179,27 +184,6 @@ def test_an_answer_comes_back_with_the_numbers_it_answered_whatever_another_tab_
     assert el.locator(role("answer")).input_value() == worked
     assert el.get_attribute(ATTR.state) == "correct"
     assert page.js_errors == []
-
-
-def before_the_widget(page, chunk: str, go, act) -> None:
-    """Open a page (``go``) with the widget's script (``chunk``, its bundle chunk) held back, do
-    what the learner does meanwhile (``act``), then let the script load."""
-    held = []
-    pattern = f"**/chunks/{chunk}-*.js"
-    page.route(pattern, lambda route: held.append(route))
-    go()
-    act()
-    assert held, f"the {chunk} widget's script was not held back"
-    for route in held:
-        route.continue_()
-    page.unroute(pattern)
-
-
-def graded(page, el) -> str:
-    """The exercise's state once a held Check has been graded."""
-    page.wait_for_function("el => ['correct', 'incorrect', 'invalid'].includes(el.dataset.state)",
-                           arg=el.element_handle(), timeout=120_000)
-    return el.get_attribute(ATTR.state)
 
 
 def test_an_answer_typed_before_the_widget_starts_is_the_one_checked(page, site_url):
@@ -241,8 +225,7 @@ def test_a_check_before_the_widget_starts_is_not_graded_against_numbers_it_did_n
 
     # the chapter's address: its numbers come from the record
     before_the_widget(page, "derive", lambda: page.goto(site_url + CHAPTERS[0]), type_and_check)
-    page.wait_for_function("([el, v]) => el.getAttribute('data-variant') === v && !el.hasAttribute('aria-busy')",
-                           arg=[el.element_handle(), str(n)], timeout=120_000)
+    numbers_back(el, n)
     expect(el.locator(role("feedback"))).to_contain_text("Not checked")
     assert record(page, EX)["attempts"] == attempts, "the answer was graded against numbers it did not answer"
     assert el.locator(role("answer")).input_value() == "12.5"

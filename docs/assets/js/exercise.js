@@ -100,7 +100,6 @@ function replayEarlySubmit(el, numbersBefore) {
   if (at >= 0) {
     early.splice(at, 1);
     if (el.getAttribute(ATTR.variant) !== numbersBefore) {
-      // The numbers came back from the record (drawn earlier), from the address, or from a page that forces them.
       showMessage(el, "Not checked: this exercise's numbers changed as it started, so the answer you typed was for other numbers. Check your answer to these.");
       return;
     }
