@@ -54,6 +54,7 @@ CASES = {
     "package-lock.json": ["node_modules/.installed", *RUNTIME],
     "requirements/serve.lock": [".venv/bin/.serve", VENV_TEST, *RUNTIME],
     "requirements/test.lock": [VENV_TEST],
+    "requirements/tools.lock": [".venv/bin/.serve", VENV_TEST, *RUNTIME],  # uv, which installs the other two
 }
 
 

@@ -44,9 +44,13 @@ def test_the_browser_is_installed_by_a_named_step_and_make_test_runs_as_the_read
 
 def test_python_comes_from_the_locks_only():
     makefile = (ROOT / "Makefile").read_text()
-    installs = [line for line in makefile.splitlines() if "$(PIP) install" in line]
-    assert installs and all("--require-hashes" in line or "-e pyodide_pkg" in line for line in installs)
-    for lock in ("serve.lock", "test.lock"):
+    installs = [line for line in makefile.splitlines() if "$(PIP) install" in line or "$(UV_INSTALL)" in line]
+    assert len(installs) == 4  # uv from tools.lock, the two locks with uv, the package itself
+    assert all("--require-hashes" in line or "-e pyodide_pkg" in line for line in installs if "$(PIP)" in line)
+    uv_install = next(line for line in makefile.splitlines() if line.startswith("UV_INSTALL ="))
+    assert "--require-hashes" in uv_install and "--no-deps" in uv_install
+    assert "-r requirements/tools.lock" in next(line for line in installs if "--target build/tools" in line)
+    for lock in ("serve.lock", "test.lock", "tools.lock"):
         lines = (ROOT / "requirements" / lock).read_text().splitlines()
         pins = [line for line in lines if "==" in line and not line.startswith(("#", " "))]
         assert pins and all(line.rstrip().endswith("\\") for line in pins), f"{lock}: every pin carries its hashes"
