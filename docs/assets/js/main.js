@@ -85,7 +85,7 @@ async function linkStray(box) {
 
 function initPage() {
   initDrawer(); // the page's menu is new after an instant navigation
-  renderMath(document);
+  setTimeout(() => renderMath(document), 0); // in slices of tasks of its own (math.js), none inside this one
   for (const el of exercises()) {
     try {
       initExercise(el, shared);
@@ -112,10 +112,22 @@ document.addEventListener("workbook:runtime", (event) => {
 document.addEventListener("workbook:progress-problem", () => showProgressProblems(progress));
 document.addEventListener("workbook:progress-saved", () => ["full", "blocked"].forEach((kind) => clearNotice(`progress-${kind}`)));
 
-// mkdocs-material emits every page (the first and each instant navigation) on document$.
+// mkdocs-material emits every page (the first and each instant navigation) on document$, from
+// inside its own DOMContentLoaded handler: the page starts in a task of its own after it, so that
+// the browser runs two shorter tasks instead of one long one (total blocking time, docs/performance.md).
+// Pages emitted before that task runs start once, on the page then shown.
 const startPage = () => (lmsSession ? lmsSession.then(initPage, initPage) : initPage());
+let startQueued = false;
+const startSoon = () => {
+  if (startQueued) return;
+  startQueued = true;
+  setTimeout(() => {
+    startQueued = false;
+    startPage();
+  }, 0);
+};
 if (window.document$ && typeof window.document$.subscribe === "function") {
-  window.document$.subscribe(() => startPage());
+  window.document$.subscribe(() => startSoon());
 } else if (document.readyState === "loading") {
   document.addEventListener("DOMContentLoaded", startPage);
 } else {
