@@ -13,6 +13,7 @@ import { classKey } from "./assignment-link.js";
 import { isAssigned, isSlips } from "./assignment-schema.js";
 import { EXPORT_FORMAT, cleanRecord, parseImport } from "./progress-schema.js";
 import { HAND_IN_FORMAT, HAND_IN_VERSION } from "./assignment-page.js";
+import { groupDigits } from "./number-text.js";
 
 export const MAX_FILE_BYTES = 4_000_000; // a hand-in holds a few exercises' records
 const has = (list, v) => Array.isArray(list) && list.includes(v);
@@ -22,7 +23,7 @@ class FileProblem extends Error {}
 
 /** One file's text -> a learner {student, code, ids, due, records, kind} or throws FileProblem (its message is for the page). */
 export function readLearner(name, text, known) {
-  if (typeof text !== "string" || text.length > MAX_FILE_BYTES) throw new FileProblem(`is larger than ${MAX_FILE_BYTES.toLocaleString("en")} characters`);
+  if (typeof text !== "string" || text.length > MAX_FILE_BYTES) throw new FileProblem(`is larger than ${groupDigits(MAX_FILE_BYTES)} characters`);
   let data;
   try {
     data = JSON.parse(text);

@@ -6,6 +6,7 @@
 import { MAX_IMPORT_BYTES, parseImport } from "./progress.js";
 import { exportProgress } from "./notice.js";
 import { el, plural, reviewText, tally } from "./progress-view.js";
+import { groupDigits } from "./number-text.js";
 
 /** A table cell: "3 of 7" (and more words) above a bar filled to value/max. */
 function countCell(value, max, text) {
@@ -97,7 +98,7 @@ function importAction(progress, say, knownIds) {
     file.value = "";
     if (!chosen) return;
     const result = chosen.size > MAX_IMPORT_BYTES
-      ? { ok: false, reason: `The file is too large (${chosen.size.toLocaleString("en")} bytes); a progress file is much smaller.` }
+      ? { ok: false, reason: `The file is too large (${groupDigits(chosen.size)} bytes); a progress file is much smaller.` }
       : parseImport(await chosen.text().catch(() => null), knownIds);
     if (!result.ok) say(`Import refused: ${result.reason} Nothing was changed.`, "error");
     else say(describeMerge(progress.merge(result.exercises)), "ok");

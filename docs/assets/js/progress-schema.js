@@ -17,6 +17,7 @@
 import { LIMIT } from "./contract.js";
 import { KEEP, TOP_BOX, migrateRecord } from "./review.js";
 import { isAssigned, isSlips, mergeAssigned, mergeSlips } from "./assignment-schema.js";
+import { groupDigits } from "./number-text.js";
 
 export const SCHEMA_VERSION = 5;
 export const EXPORT_FORMAT = "robotics-math-workbook-progress";
@@ -49,7 +50,7 @@ const isStepVerdict = (v) => isObject(v) && Object.keys(v).every((k) => ["answer
 const isStepWork = (v) => v === null || (isObject(v) && Object.keys(v).every((k) => k === "variant" || k === "steps")
   && isVariant(v.variant) && isObject(v.steps) && Object.keys(v.steps).length <= LIMIT.steps
   && Object.entries(v.steps).every(([name, step]) => STEP_NAME.test(name) && !FORBIDDEN_KEYS.has(name) && isStepVerdict(step)));
-const VARIANTS = { check: isVariantList, says: `a list of at most ${KEEP} variant numbers (0 to ${MAX_VARIANT.toLocaleString("en-US")})`, merge: "union" };
+const VARIANTS = { check: isVariantList, says: `a list of at most ${KEEP} variant numbers (0 to ${groupDigits(MAX_VARIANT)})`, merge: "union" };
 const TIME = "a time (milliseconds since 1970) not in the future";
 
 export const FIELDS = {
@@ -65,7 +66,7 @@ export const FIELDS = {
   draftOrder: { check: isKeyList, says: "a list of step keys", merge: "latest" },
   code: { check: isText, says: "text", merge: "latest" },
   updated: { check: notFuture, says: TIME, merge: "max" },
-  variant: { check: isVariant, says: `a variant number from 0 to ${MAX_VARIANT.toLocaleString("en-US")}`, merge: "latest" },
+  variant: { check: isVariant, says: `a variant number from 0 to ${groupDigits(MAX_VARIANT)}`, merge: "latest" },
   done: VARIANTS,
   clean: VARIANTS,
   missed: VARIANTS,
@@ -215,7 +216,7 @@ function sorted(value) {
 export function parseImport(text, knownIds) {
   try {
     if (typeof text !== "string") throw new ImportError("The file could not be read as text.");
-    if (text.length > MAX_IMPORT_BYTES) throw new ImportError(`The file is too large (over ${MAX_IMPORT_BYTES.toLocaleString("en")} characters); a progress file is much smaller.`);
+    if (text.length > MAX_IMPORT_BYTES) throw new ImportError(`The file is too large (over ${groupDigits(MAX_IMPORT_BYTES)} characters); a progress file is much smaller.`);
     let data;
     try {
       data = JSON.parse(text);

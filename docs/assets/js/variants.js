@@ -9,6 +9,7 @@ import { ATTR, LIMIT, ROLE, STATE, ownQuery, ownRole } from "./contract.js";
 import { decodeBase64 } from "./exercise.js";
 import { showMessage } from "./feedback.js";
 import { retitle } from "./jump.js";
+import { groupDigits } from "./number-text.js";
 
 const PARAM = "variant";
 export const MAX_VARIANT = LIMIT.variant;
@@ -191,7 +192,7 @@ export async function initVariants(ctx, { start = null } = {}) {
   if (bad !== null) {
     const now = ctx.variant ? "the numbers you had here last time are shown" : "the workbook's numbers are shown";
     showMessage(el, `This page's address asks for numbers ${quote(bad.slice(bad.lastIndexOf("-") + 1))} for this exercise, `
-      + `but a set of numbers is a whole number from 1 to ${MAX_VARIANT.toLocaleString("en-US")} (as in “variant=${ctx.id}-1234”): ${now}.`);
+      + `but a set of numbers is a whole number from 1 to ${groupDigits(MAX_VARIANT)} (as in “variant=${ctx.id}-1234”): ${now}.`);
   }
   return shown;
 }
