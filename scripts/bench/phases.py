@@ -158,6 +158,10 @@ class Phases:
     def build_series(self, page, ex_id: str, code: str, first_timeout: float, label: str = "plain") -> dict:
         """A first Build run of ``code`` on exercise ``ex_id``, then the repeats: their times and bytes."""
         ex = page.locator(exercise(ex_id))
+        # The editor host gets wbOpenEditor when the Build widget's script has run (kinds/build.js), a
+        # moment after the exercise is marked started: wait for it, as the tests do (helpers.editor_started).
+        page.wait_for_function("([el, sel]) => typeof el.querySelector(sel)?.wbOpenEditor === 'function'",
+                               arg=[ex.element_handle(), role(ROLE.editor)], timeout=READY_TIMEOUT_MS)
         ex.evaluate("(el, sel) => el.querySelector(sel).wbOpenEditor().then(() => null)", role(ROLE.editor))
         mark = self.b.server.mark()
         results = []
