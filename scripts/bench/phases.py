@@ -158,11 +158,7 @@ class Phases:
     def build_series(self, page, ex_id: str, code: str, first_timeout: float, label: str = "plain") -> dict:
         """A first Build run of ``code`` on exercise ``ex_id``, then the repeats: their times and bytes."""
         ex = page.locator(exercise(ex_id))
-        # The editor host gets wbOpenEditor when the Build widget's script has run (kinds/build.js), a
-        # moment after the exercise is marked started: wait for it, as the tests do (helpers.editor_started).
-        page.wait_for_function("([el, sel]) => typeof el.querySelector(sel)?.wbOpenEditor === 'function'",
-                               arg=[ex.element_handle(), role(ROLE.editor)], timeout=READY_TIMEOUT_MS)
-        ex.evaluate("(el, sel) => el.querySelector(sel).wbOpenEditor().then(() => null)", role(ROLE.editor))
+        ex.evaluate("(el, ms) => window.__bench.openEditor(el, ms).then(() => null)", READY_TIMEOUT_MS)
         mark = self.b.server.mark()
         results = []
         for i in range(1 + self.args.build_repeats):

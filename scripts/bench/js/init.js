@@ -60,6 +60,16 @@
 
   // Helpers for the bench's page scripts.
   B.exercise = (id) => document.querySelector(`[${A.exercise}="${CSS.escape(id)}"]`);
+  // A Build exercise's editor, opened. Its host gets wbOpenEditor when the Build widget's script has
+  // run (kinds/build.js), a moment after the exercise is marked started: waits for that first.
+  B.openEditor = async (el, timeoutMs) => {
+    const host = el.querySelector(C.sel.editor);
+    for (const until = performance.now() + timeoutMs; typeof host.wbOpenEditor !== "function";) {
+      if (performance.now() > until) throw new Error(`exercise ${el.getAttribute(A.exercise)}: its editor did not start within ${timeoutMs} ms`);
+      await new Promise((resolve) => setTimeout(resolve, 20));
+    }
+    return host.wbOpenEditor();
+  };
   // Clicks a button; resolves when the exercise leaves "pending" (timed in the page).
   B.clickAndWait = (el, button, timeoutMs) => {
     let mo, timer;

@@ -5,7 +5,7 @@ async ({ buildId, deriveId, code, answer, timeoutMs, C }) => {
   const build = B.exercise(buildId);
   const derive = B.exercise(deriveId);
   derive.querySelector(C.sel.answer).value = answer;
-  (await build.querySelector(C.sel.editor).wbOpenEditor()).setCode(code);
+  (await B.openEditor(build, timeoutMs)).setCode(code);
   const out = {};
   let timer;
   const observers = [];
