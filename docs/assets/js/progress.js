@@ -85,9 +85,14 @@ function parseStored(raw) {
 const emptyData = () => ({ version: SCHEMA_VERSION, exercises: {} });
 
 export class Progress {
-  constructor(siteRoot) {
+  /**
+   * @param {string} siteRoot the site's base address: each site keeps its own record
+   * @param {{learner?: string}} [options] `learner`: an opaque key (a hash, never a name or an id) that
+   *   gives one learner of a shared browser a record of their own (the LMS's learner, the assignment's student)
+   */
+  constructor(siteRoot, { learner = "" } = {}) {
     const scope = new URL(siteRoot).pathname.replace(/\/+$/, "") || "/";
-    this.key = `robotics-workbook:${scope}:progress`;
+    this.key = learner ? `robotics-workbook:${scope}:learner:${learner}:progress` : `robotics-workbook:${scope}:progress`;
     this.store = openStorage();
     this.listeners = new Set();
     this.problems = []; // {kind, message, download?}: what the page must tell the learner
