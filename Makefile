@@ -113,9 +113,14 @@ build/snapshot.stamp: build/stdlib.stamp scripts/build_snapshot.mjs
 	node scripts/build_snapshot.mjs --sandbox
 	touch $@
 
+# A student id's Unicode case folding, from the Python the grader runs (its unicodedata), so
+# that the page (assignment-hash.js) folds ids as workbook/assignment.py does.
+build/casefold.json: scripts/casefold_table.py $(BIN)/.serve
+	$(BIN)/python scripts/casefold_table.py $@
+
 # The page's JavaScript (esbuild); contract.js imports contract.json, the worker's boot
 # module reads the sizes of the runtime files it loads (a real progress bar).
-build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) pyodide_pkg/workbook/contract.json node_modules/.installed build/snapshot.stamp build/wheel.stamp
+build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) pyodide_pkg/workbook/contract.json build/casefold.json node_modules/.installed build/snapshot.stamp build/wheel.stamp
 	node scripts/bundle.mjs
 	mkdir -p build && touch $@
 

@@ -31,7 +31,7 @@ CASES = {
     "pyodide_pkg/workbook/bank/ch0_rotations_2d.py": PACKAGE,
     "pyodide_pkg/workbook/contract.json": PACKAGE,
     "pyodide_pkg/workbook_sandbox/restore.py": PACKAGE,  # the sandbox's own package, in its files and snapshot
-    "pyodide_pkg/pyproject.toml": [".venv/bin/.serve", VENV_TEST, *RUNTIME],
+    "pyodide_pkg/pyproject.toml": [".venv/bin/.serve", VENV_TEST, "build/casefold.json", *RUNTIME],
     "docs/assets/js/main.js": BUNDLE,
     "docs/assets/js/kinds/derive.js": BUNDLE,
     "docs/assets/js/answer-kinds/matrix.js": BUNDLE,
@@ -44,6 +44,7 @@ CASES = {
     "docs/overrides/main.html": SITE,
     "mkdocs.yml": SITE,
     "scripts/bundle.mjs": BUNDLE,
+    "scripts/casefold_table.py": ["build/casefold.json", *BUNDLE],  # a student id's folding, from the grader's Python
     "scripts/build_snapshot.mjs": ["build/snapshot.stamp", *BUNDLE],
     "scripts/split_stdlib.py": ["build/stdlib.stamp", "build/snapshot.stamp", *BUNDLE],
     "scripts/stdlib_probe.mjs": ["build/stdlib.stamp", "build/snapshot.stamp", *BUNDLE],
@@ -52,9 +53,9 @@ CASES = {
     "scripts/vendor.py": RUNTIME,
     "scripts/pyodide-0.27.7.sha256": RUNTIME,
     "package-lock.json": ["node_modules/.installed", *RUNTIME],
-    "requirements/serve.lock": [".venv/bin/.serve", VENV_TEST, *RUNTIME],
+    "requirements/serve.lock": [".venv/bin/.serve", VENV_TEST, "build/casefold.json", *RUNTIME],
     "requirements/test.lock": [VENV_TEST],
-    "requirements/tools.lock": [".venv/bin/.serve", VENV_TEST, *RUNTIME],  # uv, which installs the other two
+    "requirements/tools.lock": [".venv/bin/.serve", VENV_TEST, "build/casefold.json", *RUNTIME],  # uv, which installs the other two
 }
 
 
