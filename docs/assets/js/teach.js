@@ -55,13 +55,13 @@ function field(label, input, help) {
 
 function chapterBox(chapter, titles) {
   const all = el("input", { type: "checkbox", id: uid("chapter") });
-  all.dataset.wbChapter = chapter.url;
+  all.setAttribute(COURSE.attr.chapter, chapter.url);
   const boxes = chapter.ids.map((id) => {
     const box = el("input", { type: "checkbox", value: id, id: uid("ex") });
-    box.dataset.wbExercise = id;
+    box.setAttribute(COURSE.attr.exercise, id);
     return el("li", {}, box, el("label", { htmlFor: box.id, textContent: ` ${id} · ${titles?.[id] ?? ""}` }));
   });
-  const inputs = () => [...list.querySelectorAll("input[data-wb-exercise]")];
+  const inputs = () => [...list.querySelectorAll(`input[${COURSE.attr.exercise}]`)];
   const list = el("ul", { className: "wb-teach-exercises" }, ...boxes);
   all.addEventListener("change", () => inputs().forEach((b) => { b.checked = all.checked; }));
   list.addEventListener("change", () => {
@@ -74,7 +74,7 @@ function chapterBox(chapter, titles) {
 }
 
 export async function initTeach(siteRoot) {
-  const page = await listPage("data-wb-teach", siteRoot);
+  const page = await listPage(A.teach, siteRoot);
   if (!page) return;
   const { root, manifest } = page;
   const where = linkRoot(siteRoot);
@@ -88,6 +88,7 @@ export async function initTeach(siteRoot) {
   const out = el("input", { type: "text", readOnly: true, id: uid("link") });
   out.setAttribute(A.field, FIELD.link);
   const copy = el("button", { type: "button", className: "md-button", textContent: "Copy the link" });
+  copy.setAttribute(A.action, COURSE.action.copyLink);
   const result = el("div", { className: "wb-teach-result", hidden: true },
     el("label", { htmlFor: out.id, textContent: "The assignment link" }), out, el("div", { className: "wb-course-actions" }, copy));
   const form = el("form", { className: "wb-teach-form", noValidate: true },
@@ -100,7 +101,7 @@ export async function initTeach(siteRoot) {
   root.replaceChildren(...(warning ? [warning] : []), form);
   form.addEventListener("submit", (event) => {
     event.preventDefault();
-    const ids = [...form.querySelectorAll("input[data-wb-exercise]:checked")].map((b) => b.value);
+    const ids = [...form.querySelectorAll(`input[${COURSE.attr.exercise}]:checked`)].map((b) => b.value);
     const problems = [];
     if (!code.value.trim()) problems.push("Give the class code.");
     if (!ids.length) problems.push("Choose at least one exercise.");
