@@ -142,7 +142,7 @@ serve: site
 dev: $(RUNTIME_STAMPS)
 	$(BIN)/mkdocs serve -a $(HOST):$(PORT)
 
-# ---- SCORM packages (README, "Use it in a course"): the built site/ zipped for an LMS ----
+# ---- SCORM packages (docs/teaching/scorm.md): the built site/ zipped for an LMS ----
 # They zip site/ exactly as built, the same files `make test` tests (nothing is rebuilt for them).
 SCORM_ZIPS := dist/robotics-workbook-scorm12.zip dist/robotics-workbook-scorm2004.zip
 $(SCORM_ZIPS) &: site/.stamp scripts/scorm_package.py $(wildcard scripts/scorm/*.j2)
