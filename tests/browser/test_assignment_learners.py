@@ -176,7 +176,8 @@ def test_the_teach_page_says_where_its_links_lead(page, site_url):
     link = make_link(page)
     warning = page.locator("[data-wb-host-warning]")
     assert warning.get_attribute("data-wb-host-warning") == "local" and "this computer only" in warning.text_content()
-    assert "Host it for your class" in warning.text_content()
+    assert "Hosting the workbook for a class" in warning.text_content()
+    assert warning.locator("a").get_attribute("href") == site_url + "teaching/hosting/"
     assert link.startswith(site_url + "assignment/#")
     assert "Send it to your class" not in page.locator("[data-wb-teach] [role='status']").text_content()
 

@@ -36,7 +36,7 @@ function linkRoot(siteRoot) {
     return { root, local: false, warning: `This page is open at ${siteRoot}, on this computer only. The links it makes lead to the site's public address, ${root}, where your students open them.` };
   }
   return { root, local: true, warning: `This page is open at ${siteRoot}, an address on this computer only: links made here reach no one else. `
-    + "Host the site for your class (README, “Host it for your class”: GitHub Pages from a fork, any static host, or the SCORM package in your course's platform) and make the links there." };
+    + "Host the site for your class (GitHub Pages from a fork, any static host, or the SCORM package in your course's platform) and make the links there: " };
 }
 
 let serial = 0;
@@ -96,7 +96,8 @@ export async function initTeach(siteRoot) {
     field("Due date (optional)", due, "Shown to the learners; the workbook does not lock anything after it."),
     el("h2", { textContent: "Exercises" }), ...chapters,
     el("div", { className: "wb-course-actions" }, make), status, result);
-  const warning = where.warning ? el("p", { className: "wb-course-problem", textContent: where.warning }) : null;
+  const guide = el("a", { href: new URL("teaching/hosting/", siteRoot).href, textContent: "Hosting the workbook for a class" });
+  const warning = where.warning ? el("p", { className: "wb-course-problem" }, where.warning, ...(where.local ? [guide, "."] : [])) : null;
   if (warning) warning.setAttribute(A.hostWarning, where.local ? "local" : "public");
   root.replaceChildren(...(warning ? [warning] : []), form);
   form.addEventListener("submit", (event) => {
