@@ -44,13 +44,14 @@ import hashlib
 import re
 import unicodedata
 
+from .contract import LIMIT
 from .variants import MAX_SEED
 
 SALT = "robotics-math-workbook/assignment/1"
 # The tags that name a mistake (contract.json "tags"): the exercise's own slips, and those every answer kind knows.
 NAMED = ("slip", "close", "radians", "degrees", "sign", "transpose", "inverse", "sine-sign", "rows-swapped",
          "columns-swapped", "negated")
-NAME_CAP = 80  # characters of a slip's name
+NAME_CAP = LIMIT.slipName  # characters of a slip's name (contract.json, the page's limit too)
 # A number the variant chose; not a digit that is part of a name (θ1, atan2, e[k−1]) or an
 # entry's place (J(1,2), "the (2,2) entry"), which every variant shares.
 _NUMBER = re.compile(r"(?<![\w\[−\-])[−\-+]?\d+(?:[.,]\d+)*(?:e[−\-+]?\d+)?(?!\w)")

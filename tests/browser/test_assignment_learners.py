@@ -194,3 +194,28 @@ def test_the_teach_page_says_where_its_links_lead(page, site_url):
     assert link.startswith(public + "assignment/#class=ROB101&ex=")
     assert page.locator("[data-wb-host-warning]").get_attribute("data-wb-host-warning") == "public"
     assert "Send it to your class" in page.locator("[data-wb-teach] [role='status']").text_content()
+
+
+def test_answers_kept_before_records_were_per_learner_stay_with_their_student(page, site_url, tmp_path):
+    """A browser whose one record holds Ada's assignment answers (the page before this change kept
+    them there, for the student it knew): Ada's hand-in still carries them, once moved into her own
+    record; Grace, next on that browser, starts empty."""
+    scope = "robotics-workbook:" + (re.sub(r"^https?://[^/]+", "", site_url).rstrip("/") or "/")
+    v = assigned_variant(CODE, "Ada Lovelace", "0.1")
+    at = 1_790_000_000_000
+    old = {"answer": typed("0.1", v, bank.variant("0.1", v).answer.key), "status": "correct", "at": at}
+    store = {"version": 5, "exercises": {"0.1": {"updated": at, "assigned": {CODE: {"variant": v, "attempts": [old]}}}}}
+    page.goto(site_url)
+    page.evaluate("([scope, store]) => { localStorage.setItem(scope + ':progress', store); localStorage.setItem(scope + ':student', 'Ada Lovelace'); }",
+                  [scope, json.dumps(store)])
+    page.goto(site_url + LINK)
+    wait_assigned(page)
+    _, ada = hand_in(page, tmp_path)
+    assert ada["records"]["0.1"]["assigned"][CODE]["attempts"] == [old]
+    change_student(page, "Grace Hopper")
+    _, grace = hand_in(page, tmp_path)
+    assert "0.1" not in grace["records"]
+    page.reload()  # Grace is the student the page knows now: the old record is not hers
+    wait_assigned(page)
+    _, again = hand_in(page, tmp_path)
+    assert again["student"] == "Grace Hopper" and "0.1" not in again["records"]

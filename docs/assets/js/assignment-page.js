@@ -11,14 +11,14 @@
 // attempt at the assignment's numbers (attempt.js) is kept in that record (`assigned`,
 // assignment-schema.js); "Hand in" saves the file the teacher's class page reads (hand-in.js).
 
-import { ATTR, COURSE, ROLE, ownRole } from "./contract.js";
+import { ATTR, COURSE, ROLE, RUNTIME, ownRole } from "./contract.js";
 import { initExercise } from "./exercise.js";
 import { showExerciseCard } from "./exercise-card.js";
 import { el, listPage } from "./progress-view.js";
 import { assignedVariant, learnerKey, studentTag, tidy } from "./assignment-hash.js";
 import { addAttempt } from "./assignment-schema.js";
 import { onAttempt } from "./attempt.js";
-import { adoptOnce, readAssignment, savedStudent, saveStudent } from "./assignment-link.js";
+import { STUDENT_CAP, adoptOnce, readAssignment, savedStudent, saveStudent } from "./assignment-link.js";
 import { buildHandIn, handInName } from "./hand-in.js";
 import { download, showProgressProblems } from "./notice.js";
 import { Progress } from "./progress.js";
@@ -46,7 +46,7 @@ async function ownRecord(siteRoot, shared, student, assignment, first) {
 }
 
 function askStudent(root, siteRoot, then) {
-  const input = el("input", { type: "text", id: COURSE.id.wbStudentId, maxLength: 100, autocomplete: "off" });
+  const input = el("input", { type: "text", id: COURSE.id.wbStudentId, maxLength: STUDENT_CAP, autocomplete: "off" });
   input.setAttribute(A.field, FIELD.student);
   const say = el("p", { role: "status", className: "wb-course-status" });
   const form = el("form", { className: "wb-student-form" },
@@ -95,8 +95,9 @@ async function showExercise(slot, manifest, id, siteRoot, mine, variant, key) {
   initExercise(node, { ...mine, ...(variant ? { start: variant, resume: lastAssigned(mine.progress, key, id, variant) } : {}) });
 }
 
-/** The grader's {version, bank}, if it can say ({"op": "version"}); null otherwise. */
+/** The grader's {version, bank}, if it is running and can say ({"op": "version"}); null otherwise (a hand-in never waits for it). */
 async function graderVersion(runtime) {
+  if (document.documentElement.getAttribute(ATTR.runtime) !== RUNTIME.ready) return null;
   try {
     const reply = await runtime.request({ op: "version" });
     return reply.ok && reply.value && typeof reply.value === "object" ? reply.value : null;
