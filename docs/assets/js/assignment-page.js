@@ -27,8 +27,8 @@ const { attr: A, action: ACTION, field: FIELD } = COURSE;
 const records = new Map(); // learner key -> Progress: one store per learner for this page's life
 let stopRecording = () => {};
 
-/** The learner's own record store; the first time, an assignment's answers kept before records were per learner come along (adoptOnce). */
-async function ownRecord(siteRoot, shared, student, assignment, first) {
+/** The learner's own record store; the first time, the assignments' answers kept before records were per learner come along (adoptOnce). */
+async function ownRecord(siteRoot, shared, student, first) {
   const key = await learnerKey(student);
   if (!records.has(key)) {
     const mine = new Progress(siteRoot, { learner: key });
@@ -36,9 +36,8 @@ async function ownRecord(siteRoot, shared, student, assignment, first) {
     // The page kept the student it last knew and their assignment answers in the browser's one record: that
     // student's own, once; any other student starts empty.
     if (first && adoptOnce(siteRoot)) {
-      const carried = Object.fromEntries(assignment.ids.map((id) => [id, shared.progress.get(id).assigned]).filter(([, a]) => a)
-        .map(([id, assigned]) => [id, { assigned }]));
-      if (Object.keys(carried).length) mine.merge(carried);
+      const carried = Object.entries(shared.progress.all()).filter(([, r]) => r.assigned).map(([id, r]) => [id, { assigned: r.assigned }]);
+      if (carried.length) mine.merge(Object.fromEntries(carried));
     }
     showProgressProblems(mine);
   }
@@ -128,7 +127,7 @@ export async function initAssignment(shared, siteRoot) {
     const drawing = new Set(manifest.variants || []);
     const variants = new Map();
     for (const id of assignment.ids) variants.set(id, drawing.has(id) ? await assignedVariant(assignment.code, student, id) : 0);
-    const mine = { ...shared, progress: await ownRecord(siteRoot, shared, student, assignment, first) };
+    const mine = { ...shared, progress: await ownRecord(siteRoot, shared, student, first) };
     // Every graded attempt of this learner's exercises at the assignment's numbers is kept for the hand-in.
     stopRecording = onAttempt(({ id, variant, progress, attempt }) => {
       if (progress !== mine.progress || !variants.has(id) || variants.get(id) !== variant) return;
