@@ -1,11 +1,11 @@
 // A test LMS: scorm-again's real SCORM 1.2 or 2004 runtime in this window, the SCO in the
-// frame (tests/browser/test_scorm.py). What it keeps between sessions is what an LMS keeps:
-// suspend_data, the status and score, the objectives (and 2004's interactions), and
-// entry = "resume" after a session that exited with "suspend".
+// frame (tests/browser/test_scorm*.py). What it keeps between sessions is what an LMS keeps:
+// who the learner is and the course's mastery score, suspend_data, the status and score, the
+// objectives (and 2004's interactions), and entry = "resume" after a session that exited with "suspend".
 
 const KEPT = {
-  "1.2": /^cmi\.(suspend_data|core\.(lesson_status|score\.(raw|min|max))|objectives\.\d+\.(id|status|score\.(raw|min|max)))$/,
-  "2004": /^cmi\.(suspend_data|completion_status|success_status|progress_measure|score\.(raw|min|max|scaled)|objectives\.\d+\..+|interactions\.\d+\..+)$/,
+  "1.2": /^cmi\.(suspend_data|core\.(student_id|student_name|lesson_status|score\.(raw|min|max))|student_data\.mastery_score|objectives\.\d+\.(id|status|score\.(raw|min|max)))$/,
+  "2004": /^cmi\.(suspend_data|learner_id|learner_name|scaled_passing_score|completion_status|success_status|progress_measure|score\.(raw|min|max|scaled)|objectives\.\d+\..+|interactions\.\d+\..+)$/,
 };
 const NAMES = {
   "1.2": { global: "API", init: "LMSInitialize", finish: "LMSFinish", commit: "LMSCommit", set: "LMSSetValue", exit: "cmi.core.exit", entry: "cmi.core.entry" },
