@@ -116,8 +116,8 @@ def manifest(version: str, scos: list[dict], files: list[str], package_version: 
 
 def launchers(scos: list[dict]) -> dict[str, str]:
     """Each SCO's launcher page, by its path in the package."""
-    return {launch_page(s): render("launch.html.j2", policy=LAUNCH_POLICY, title=s["title"], href=s["href"], ids=s["ids"])
-            for s in scos}
+    return {launch_page(s): render("launch.html.j2", policy=LAUNCH_POLICY, title=s["title"], href=s["href"],
+                                   ids=s["ids"]) for s in scos}
 
 
 def site_zip(site: Path, files: list[str], target: Path) -> None:
@@ -141,7 +141,8 @@ def package(base: Path, target: Path, version: str, scos: list[dict], files: lis
     with zipfile.ZipFile(tmp, "a", compression=zipfile.ZIP_DEFLATED, compresslevel=6) as zf:
         for rel, text in pages.items():
             zf.writestr(rel, text)
-        zf.writestr("imsmanifest.xml", manifest(version, scos, sorted([*files, *pages]), package_version, identifier, title))
+        listed = sorted([*files, *pages])
+        zf.writestr("imsmanifest.xml", manifest(version, scos, listed, package_version, identifier, title))
     tmp.replace(target)
     return target
 
@@ -151,7 +152,7 @@ def suffix(version: str) -> str:
 
 
 def build(site: Path, out: Path, package_version: str = "1", per_chapter: bool = False) -> list[Path]:
-    """The whole book's packages (1.2, then 2004), then with `per_chapter` one per chapter and version in out/chapters/."""
+    """The whole book's packages (1.2, then 2004); with `per_chapter`, one per chapter and version (out/chapters/)."""
     site, out = Path(site), Path(out)
     if not (site / "index.html").is_file():
         raise SystemExit(f"scorm: {site} is not a built site (run `make site`)")
@@ -163,7 +164,8 @@ def build(site: Path, out: Path, package_version: str = "1", per_chapter: bool =
     base = out / ".site.zip.part"
     site_zip(site, files, base)
     try:
-        written = [package(base, out / name, version, scos, files, package_version) for version, name in VERSIONS.items()]
+        written = [package(base, out / name, version, scos, files, package_version)
+                   for version, name in VERSIONS.items()]
         if per_chapter:
             for sco in scos:
                 for version in VERSIONS:
