@@ -132,3 +132,24 @@ def test_a_link_to_another_chapter_and_back_keeps_reporting_in_the_same_session(
     finish(lms)
     assert calls(lms)["init"] == 1 and calls(lms)["finish"] == 1
     no_trouble(lms)
+
+
+def test_a_page_an_lms_opens_without_the_launcher_keeps_nothing_and_says_so(lms):
+    """An LMS frame showing a chapter page directly (an old package's launch href): no session, memory only."""
+    lms.evaluate("(a) => window.lms.start(a)", {"version": "1.2", "href": PREFIX["1.2"] + "chapters/00-rotations-2d/index.html",
+                                                "stored": {"cmi.core.student_id": "carol"}, "refuse": None})
+    frame = lms.wait_for_selector("#sco").content_frame()
+    frame.wait_for_function("() => document.documentElement.dataset.workbookLms === 'failed'")
+    assert "without the workbook's launcher" in frame.locator('[data-wb-notice="lms"]').inner_text()
+    ready(frame)
+    assert answer(frame, "0.1", "3") == "correct"
+    assert calls(lms)["init"] == 0 and calls(lms)["set"] == 0
+    assert lms.evaluate("() => Object.keys(localStorage).filter((k) => k.includes(':progress'))") == []
+    no_trouble(lms)
+
+
+def test_packaged_pages_name_no_build_host(lms, lms_server):
+    for version, prefix in PREFIX.items():
+        for path in ("chapters/00-rotations-2d/index.html", "index.html", "launch/ch00.html"):
+            text = lms.request.get(lms_server.origin + prefix + path).text()
+            assert "<title>" in text and 'rel="canonical"' not in text, (version, path)

@@ -12,6 +12,13 @@ const NAMES = {
   "2004": { global: "API_1484_11", init: "Initialize", finish: "Terminate", commit: "Commit", set: "SetValue", exit: "cmi.exit", entry: "cmi.entry" },
 };
 
+// What an LMS sets for a graded launch (Moodle does): credit, normal mode. scorm-again's 1.2 runtime applies
+// the mastery score at LMSFinish only then (raw against mastery_score: passed or failed).
+const LAUNCH = {
+  "1.2": { "cmi.core.credit": "credit", "cmi.core.lesson_mode": "normal" },
+  "2004": { "cmi.credit": "credit", "cmi.mode": "normal" },
+};
+
 function flatten(value, prefix, out) {
   if (value && typeof value === "object") {
     for (const [k, v] of Object.entries(value)) flatten(v, prefix ? `${prefix}.${k}` : k, out);
@@ -27,7 +34,7 @@ window.lms = {
     const names = NAMES[version];
     const Api = version === "1.2" ? window.Scorm12API : window.Scorm2004API;
     const api = new Api({ logLevel: 5, autocommit: false });
-    if (stored) api.loadFromFlattenedJSON(stored);
+    api.loadFromFlattenedJSON({ ...LAUNCH[version], ...(stored || {}) });
     const calls = { init: 0, finish: 0, commit: 0, set: 0, refused: 0 };
     for (const op of ["init", "finish", "commit", "set"]) {
       const real = api[names[op]].bind(api);
