@@ -137,7 +137,7 @@ serve: site
 dev: $(RUNTIME_STAMPS)
 	$(BIN)/mkdocs serve -a $(HOST):$(PORT)
 
-# ---- SCORM packages (README, "Use it in a course"): the built site/ zipped for an LMS ----
+# ---- SCORM packages (docs/teaching/scorm.md): the built site/ zipped for an LMS ----
 # They zip site/ exactly as built, the same files `make test` tests (nothing is rebuilt for them): the
 # whole book in each version, and one package per chapter and version in dist/chapters/ (written with them).
 SCORM_ZIPS := dist/robotics-workbook-scorm12.zip dist/robotics-workbook-scorm2004.zip
