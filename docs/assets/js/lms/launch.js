@@ -61,6 +61,9 @@ export class Launch {
       this.setState(LMS.failed);
       return;
     }
+    // Open from here on: a launch that ends even while the key is being made still terminates once.
+    window.addEventListener("pagehide", () => this.end());
+    this.setState(LMS.open);
     const mastery = this.lms.get(this.el.mastery);
     const scale = VERSIONS[this.version].masteryScale;
     this.threshold = mastery === "" || !Number.isFinite(Number(mastery)) ? null : Math.min(1, Math.max(0, Number(mastery) / scale));
@@ -71,8 +74,6 @@ export class Launch {
       this.learner = "";
     }
     if (!this.learner) this.memoryOnly = id ? NO_CRYPTO : NO_ID;
-    window.addEventListener("pagehide", () => this.end());
-    this.setState(LMS.open);
   }
 
   /** A page inside reports at the end through `last` (a function); returns the function that detaches it. */
