@@ -27,8 +27,11 @@ export async function learnerKey(sitePath, id) {
   return Array.from(new Uint8Array(digest), (b) => b.toString(16).padStart(2, "0")).join("");
 }
 
-const NO_ID = "The course's platform did not say who you are, so your answers are kept only while this chapter is open and are not saved in this browser. Export your progress to keep it.";
-const NO_CRYPTO = "This browser cannot tell your work apart from that of others on this computer here (the course is not served over a secure connection), so your answers are kept only while this chapter is open. Export your progress to keep it.";
+const KEPT_OPEN = "so your answers are kept only while this chapter is open. Export your progress to keep it.";
+const NO_ID = `The course's platform did not say who you are, ${KEPT_OPEN}`;
+const NO_CRYPTO = "Your work cannot be kept apart from other people's on this computer (the course is not served over "
+  + `a secure connection), ${KEPT_OPEN}`;
+const NO_SESSION = `The course's platform did not open a session, ${KEPT_OPEN}`;
 
 export class Launch {
   /** `frame`: the iframe the pages are shown in (data-src: the first page; data-ids: the SCO's exercises). */
@@ -57,7 +60,7 @@ export class Launch {
     this.calls.initialize += 1;
     if (!this.lms.initialize()) {
       this.error = this.lms.lastError;
-      this.memoryOnly = "The course's platform did not open a session, so your answers are kept only while this chapter is open. Export your progress to keep it.";
+      this.memoryOnly = NO_SESSION;
       this.setState(LMS.failed);
       return;
     }
@@ -66,10 +69,11 @@ export class Launch {
     this.setState(LMS.open);
     const mastery = this.lms.get(this.el.mastery);
     const scale = VERSIONS[this.version].masteryScale;
-    this.threshold = mastery === "" || !Number.isFinite(Number(mastery)) ? null : Math.min(1, Math.max(0, Number(mastery) / scale));
+    const given = mastery !== "" && Number.isFinite(Number(mastery));
+    this.threshold = given ? Math.min(1, Math.max(0, Number(mastery) / scale)) : null;
     const id = this.lms.get(this.el.learner);
     try {
-      this.learner = await learnerKey(new URL(SITE_ROOT, location.href).pathname, id); // the launcher is one folder down
+      this.learner = await learnerKey(new URL(SITE_ROOT, location.href).pathname, id);
     } catch {
       this.learner = "";
     }

@@ -5,7 +5,8 @@
 
 import { Progress } from "../progress.js";
 
-const NO_LAUNCHER = "This page was opened by the course without the workbook's launcher, so your answers are kept only while it is open. Export your progress to keep it.";
+const NO_LAUNCHER = "This page was opened by the course without the workbook's launcher, so your answers are kept "
+  + "only while it is open. Export your progress to keep it.";
 
 /** The progress record of a page an LMS shows: `launch` from findLaunch (null without a launcher). */
 export function learnerProgress(siteRoot, launch) {

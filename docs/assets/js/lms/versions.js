@@ -41,7 +41,8 @@ export const VERSIONS = {
     interaction: { type: "fill-in", response: "student_response", responseLength: 255, when: "time", at: clock12,
       correct: "correct", wrong: "wrong", description: false },
     // One lesson_status says both: passed/failed against a mastery score, else passed once complete.
-    status: ({ complete, passed, failed }) => [["cmi.core.lesson_status", passed ? "passed" : failed ? "failed" : complete ? "completed" : "incomplete"]],
+    status: ({ complete, passed, failed }) => [
+      ["cmi.core.lesson_status", passed ? "passed" : failed ? "failed" : complete ? "completed" : "incomplete"]],
     objective: (at, status) => [[`${at}.status`, status]],
   },
   "2004": {
@@ -54,8 +55,8 @@ export const VERSIONS = {
     suspendLimit: 64000,
     suspendJson: true, // suspend_data: the record as JSON when it fits, else the compact form
     elapsed: duration2004,
-    interaction: { type: "long-fill-in", response: "learner_response", responseLength: 4000, when: "timestamp", at: stamp2004,
-      correct: "correct", wrong: "incorrect", description: true },
+    interaction: { type: "long-fill-in", response: "learner_response", responseLength: 4000, when: "timestamp",
+      at: stamp2004, correct: "correct", wrong: "incorrect", description: true },
     // Completion and success apart; scaled scores too.
     scaled: true,
     status: ({ complete, passed, failed, share }) => [["cmi.progress_measure", share],
