@@ -103,6 +103,12 @@ def test_hand_in_names_tell_students_apart_in_any_script(page, site_url, tmp_pat
     page.wait_for_function("() => document.querySelector('[data-wb-student]')?.dataset.wbStudent === 'Émile Zola'")
     third, _ = hand_in(page, tmp_path)
     assert re.fullmatch(r"hand-in-AUDIT-A2-Emile-Zola-[0-9a-f]{8}\.json", third), third
+    # The hand-in names the grader the page graded with, when the grader says ({"op": "version"}).
+    wait_runtime(page, timeout=SLOW)
+    page.evaluate("""() => { const rt = window.workbook.runtime, ask = rt.request.bind(rt);
+      rt.request = (r, o) => (r.op === 'version' ? Promise.resolve({ ok: true, value: { version: '9.9', bank: '0123456789ab' } }) : ask(r, o)); }""")
+    _, named = hand_in(page, tmp_path)
+    assert named["grader"] == {"version": "9.9", "bank": "0123456789ab"}
 
 
 def test_capitals_beyond_a_to_z_fold_as_the_python_does(page, site_url):
