@@ -128,10 +128,10 @@ site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TE
 
 site: site/.stamp
 
-# scripts/serve.py ends cleanly on Ctrl-C or SIGTERM (no "make: *** ... Terminated").
+# scripts/serve.py says where it serves once it holds the port, says so when the port is taken
+# (PORT=8001 make serve chooses another), and ends cleanly on Ctrl-C or SIGTERM (no "make: *** ... Terminated").
 serve: site
-	@echo "Serving the workbook at http://$(HOST):$(PORT)/  (Ctrl-C stops)"
-	$(BIN)/python scripts/serve.py $(HOST) $(PORT) site
+	@$(BIN)/python scripts/serve.py $(HOST) $(PORT) site
 
 # Live-reloading server for authors (rebuilds pages on save).
 dev: $(RUNTIME_STAMPS)
