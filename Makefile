@@ -121,8 +121,10 @@ build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) pyodide_pkg/workbook/contra
 
 RUNTIME_STAMPS := build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp
 
-# The hooks import the grading package (bank, contract); offline.py fills in the SW template.
-site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TEMPLATE) $(PKG_SOURCES)
+# The hooks import the grading package (bank, contract); offline.py fills in the SW template;
+# notices.py writes the licences and third-party notices page with scripts/notices.py.
+NOTICES := scripts/notices.py LICENSE LICENSE-text.md
+site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TEMPLATE) $(PKG_SOURCES) $(NOTICES)
 	$(BIN)/mkdocs build --strict --quiet
 	touch $@
 

@@ -33,7 +33,7 @@ AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
 TEACHING = ["teaching/", "teaching/hosting/", "teaching/assignments/", "teaching/class-page/", "teaching/scorm/",
             "teaching/privacy/"]  # the teacher's guide (its two tools, teach/ and class/, are test_course's)
-EVERY_PAGE = [*PAGES, "practise/", *TEACHING, "performance/"]  # the last is the developers' page, out of the menu
+EVERY_PAGE = [*PAGES, "practise/", *TEACHING, "notices/", "performance/"]  # the last two: out of the menu
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 
 

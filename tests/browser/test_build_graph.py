@@ -39,9 +39,13 @@ CASES = {
     "docs/assets/workbook.css": SITE,
     "docs/chapters/00-rotations-2d.md": SITE,
     "docs/index.md": SITE,
+    "docs/teaching/index.md": SITE,  # the teacher's guide
     "docs/hooks/exercises.py": SITE,
     "docs/hooks/offline.py": SITE,
     "docs/overrides/main.html": SITE,
+    "docs/overrides/partials/copyright.html": SITE,
+    "scripts/notices.py": SITE,  # the licences and third-party notices page
+    "LICENSE-text.md": SITE,
     "mkdocs.yml": SITE,
     "scripts/bundle.mjs": BUNDLE,
     "scripts/build_snapshot.mjs": ["build/snapshot.stamp", *BUNDLE],
