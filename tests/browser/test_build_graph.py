@@ -40,6 +40,7 @@ CASES = {
     "docs/chapters/00-rotations-2d.md": SITE,
     "docs/index.md": SITE,
     "docs/teaching/index.md": SITE,  # the teacher's guide
+    "docs/decisions/index.md": SITE,  # the decision records
     "docs/hooks/exercises.py": SITE,
     "docs/hooks/offline.py": SITE,
     "docs/overrides/main.html": SITE,
