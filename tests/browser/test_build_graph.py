@@ -41,6 +41,7 @@ CASES = {
     "docs/index.md": SITE,
     "docs/teaching/index.md": SITE,  # the teacher's guide
     "docs/decisions/index.md": SITE,  # the decision records
+    "docs/images/workbook.png": SITE,  # the README's picture (left out of the site, but one of its sources)
     "docs/hooks/exercises.py": SITE,
     "docs/hooks/offline.py": SITE,
     "docs/overrides/main.html": SITE,
