@@ -126,17 +126,19 @@ build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) pyodide_pkg/workbook/contra
 
 RUNTIME_STAMPS := build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp
 
-# The hooks import the grading package (bank, contract); offline.py fills in the SW template.
-site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TEMPLATE) $(PKG_SOURCES)
+# The hooks import the grading package (bank, contract); offline.py fills in the SW template;
+# notices.py writes the licences and third-party notices page with scripts/notices.py.
+NOTICES := scripts/notices.py LICENSE LICENSE-text.md
+site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TEMPLATE) $(PKG_SOURCES) $(NOTICES)
 	$(BIN)/mkdocs build --strict --quiet
 	touch $@
 
 site: site/.stamp
 
-# scripts/serve.py ends cleanly on Ctrl-C or SIGTERM (no "make: *** ... Terminated").
+# scripts/serve.py says where it serves once it holds the port, says so when the port is taken
+# (PORT=8001 make serve chooses another), and ends cleanly on Ctrl-C or SIGTERM (no "make: *** ... Terminated").
 serve: site
-	@echo "Serving the workbook at http://$(HOST):$(PORT)/  (Ctrl-C stops)"
-	$(BIN)/python scripts/serve.py $(HOST) $(PORT) site
+	@$(BIN)/python scripts/serve.py $(HOST) $(PORT) site
 
 # Live-reloading server for authors (rebuilds pages on save).
 dev: $(RUNTIME_STAMPS)

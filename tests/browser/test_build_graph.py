@@ -39,9 +39,15 @@ CASES = {
     "docs/assets/workbook.css": SITE,
     "docs/chapters/00-rotations-2d.md": SITE,
     "docs/index.md": SITE,
+    "docs/teaching/index.md": SITE,  # the teacher's guide
+    "docs/decisions/index.md": SITE,  # the decision records
+    "docs/images/workbook.png": SITE,  # the README's picture (left out of the site, but one of its sources)
     "docs/hooks/exercises.py": SITE,
     "docs/hooks/offline.py": SITE,
     "docs/overrides/main.html": SITE,
+    "docs/overrides/partials/copyright.html": SITE,
+    "scripts/notices.py": SITE,  # the licences and third-party notices page
+    "LICENSE-text.md": SITE,
     "mkdocs.yml": SITE,
     "scripts/bundle.mjs": BUNDLE,
     "scripts/casefold_table.py": ["build/casefold.json", *BUNDLE],  # a student id's folding, from the grader's Python
