@@ -61,6 +61,10 @@ initLoading();
 initSearchStart();
 initScrollRegions();
 initJumps();
+// A touch screen gets the symbols row above its keyboard (keypad.js, loaded there only).
+if (window.matchMedia?.("(pointer: coarse)").matches || navigator.maxTouchPoints > 0) {
+  import("./keypad.js").then((m) => m.initKeypad());
+}
 
 const NO_WORKER = "This browser cannot run the Python grader (no Web Worker support).";
 const shared = {

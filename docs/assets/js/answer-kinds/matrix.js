@@ -1,5 +1,6 @@
 // A vector or matrix answer: a grid of entries. Arrow keys move between entries
-// (left and right once the caret is at the edge), Tab goes in reading order, and a
+// (left and right once the caret is at the edge), Tab goes in reading order, so does
+// Enter (a phone keyboard's "next") up to the last entry, where it checks; and a
 // whole matrix pasted into any entry is split by the grader and fills the grid; one
 // value pasted (even a long expression) stays in the entry it was pasted into. A whole
 // matrix typed into one entry, the others empty, is split the same way once the entry
@@ -22,6 +23,13 @@ export function init(ctx) {
     const r = Number(input.getAttribute(ATTR.row));
     const c = Number(input.getAttribute(ATTR.col));
     input.addEventListener("keydown", (event) => {
+      const next = c < cols ? at(r, c + 1) : at(r + 1, 1);
+      if (event.key === "Enter" && !event.shiftKey && !event.isComposing && next) {
+        event.preventDefault(); // the last entry's Enter submits: Check
+        next.focus();
+        next.select();
+        return;
+      }
       const atStart = input.selectionStart === 0 && input.selectionEnd === 0;
       const atEnd = input.selectionStart === input.value.length;
       const moves = { ArrowUp: [r - 1, c], ArrowDown: [r + 1, c], ArrowLeft: atStart ? [r, c - 1] : null, ArrowRight: atEnd ? [r, c + 1] : null };
