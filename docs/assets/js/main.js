@@ -21,8 +21,10 @@ import { initCourse } from "./course.js"; // the teacher's, assignment and class
 import { findApi } from "./lms/api.js";
 import { renderMath } from "./math.js";
 import { initSearchStart } from "./search-start.js";
+import { initApp } from "./app.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
+initApp(siteRoot); // the installed app's start URL goes on to the last page read
 const progress = new Progress(siteRoot);
 // In an LMS (the SCORM package, lms/): the session opens and merges the LMS's copy of the
 // progress before any exercise is drawn (initPage waits for it); the hosted site loads none of it.
