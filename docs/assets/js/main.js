@@ -25,7 +25,6 @@ import { initSearchStart } from "./search-start.js";
 import { initApp } from "./app.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
-initApp(siteRoot); // the installed app's start URL goes on to the last page read
 // In an LMS (the SCORM package, lms/): the page keeps the record of the learner the LMS names
 // (the launcher's key, never the hosted site's record) and reports through the launcher's one
 // session, which merges the LMS's copy of the progress before any exercise is drawn (initPage
@@ -34,6 +33,8 @@ const launch = findLaunch(window);
 const inLms = Boolean(launch || findApi(window));
 const progress = inLms ? learnerProgress(siteRoot, launch) : new Progress(siteRoot);
 const lmsSession = inLms ? import("./lms/session.js").then((m) => m.connectLms(progress, launch)) : null;
+// The installed app's start URL goes on to the last page read (never in an LMS: it opens its own pages).
+if (!inLms) initApp(siteRoot);
 
 const exercises = () => document.querySelectorAll(`[${ATTR.exercise}]`);
 
