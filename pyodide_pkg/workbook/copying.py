@@ -25,6 +25,7 @@ from typing import Any
 
 from . import bank
 from .assignment import assigned_variant
+from .kinds.derive import Derive
 
 CLASS_SIZE = 100
 MOST = 0.01  # the largest share of pairs that may have the same right answer
@@ -66,6 +67,14 @@ def share(keys: Sequence[Hashable], same: Callable[[Any, Any], bool] | None = No
     return pairs / (n * (n - 1) // 2)
 
 
+def _drawn(exercise_id: str, seed: int) -> Derive:
+    """Variant ``seed`` of a Derive exercise (only those draw variants)."""
+    ex = bank.variant(exercise_id, seed)
+    if not isinstance(ex, Derive):
+        raise TypeError(f"exercise {exercise_id} draws no variants")
+    return ex
+
+
 def _entries(answer: Any) -> list[float] | None:
     """A number's or a matrix's key as a flat list of floats; None for other kinds (a formula) and
     for an angle taken give or take whole turns, whose key alone does not say what is accepted."""
@@ -95,10 +104,10 @@ def _accepts(exercise_id: str, quick: bool = True) -> Callable[[int, int], bool]
     grader decides, as it would for a student who typed the other's printed answer."""
 
     def right(a: int, b: int) -> bool:
-        return bank.variant(exercise_id, b).check(bank.variant(exercise_id, a).worked_text()).status == "correct"
+        return _drawn(exercise_id, b).check(_drawn(exercise_id, a).worked_text()).status == "correct"
 
     def either(a: int, b: int) -> bool:
-        if quick and _far(bank.variant(exercise_id, a).answer, bank.variant(exercise_id, b).answer):
+        if quick and _far(_drawn(exercise_id, a).answer, _drawn(exercise_id, b).answer):
             return False
         return right(a, b) or right(b, a)
 
@@ -114,7 +123,7 @@ def exercise_share(exercise_id: str, class_code: str = "ROB101", ids: Sequence[s
     if getattr(ex, "vary", None) is None:
         return 1.0
     seeds = [assigned_variant(class_code, s, exercise_id) for s in ids or students()]
-    texts = {seed: bank.variant(exercise_id, seed).worked_text() for seed in set(seeds)}
+    texts = {seed: _drawn(exercise_id, seed).worked_text() for seed in set(seeds)}
     by_text: dict[str, int] = {}  # a printed answer -> one seed that prints it
     for seed, text in texts.items():
         by_text.setdefault(text, seed)
