@@ -159,7 +159,7 @@ EXERCISES = (
         title="An entry of the inverse pose",
         spec=number(label="row 1, column 4 of T⁻¹"),
         vary=Vary(_inverse_entry, Choice("yaw", 90, _ANGLES), Choice("roll", 90, _ANGLES),
-                  Param("tx", 2, -3, 3, 1), Param("ty", -1, -3, 3, 1), Param("tz", 3, -3, 3, 1),
+                  Param("tx", 2, -9.9, 9.9, 0.1), Param("ty", -1, -9.9, 9.9, 0.1), Param("tz", 3, -9.9, 9.9, 0.1),
                   Choice("row", 1, (1, 2, 3)), valid=_inverse_ok),
     ),
 )

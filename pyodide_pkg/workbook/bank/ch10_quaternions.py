@@ -223,14 +223,14 @@ EXERCISES = (
         id="10.3",
         title="Compose two turns as quaternions",
         spec=matrix(label="q_wc = (w, x, y, z)ᵀ", names=("w", "x", "y", "z"), either_sign=SAME_ROTATION),
-        vary=Vary(_compose, Choice("a", 90, (90, 180, -90)), Choice("A", "z", ("x", "y", "z")),
-                  Choice("b", 90, (90, 180, -90)), Choice("B", "x", ("x", "y", "z")), valid=_compose_ok),
+        vary=Vary(_compose, Param("a", 90, -175, 180, 5, avoid=(0,)), Choice("A", "z", ("x", "y", "z")),
+                  Param("b", 90, -175, 180, 5, avoid=(0,)), Choice("B", "x", ("x", "y", "z")), valid=_compose_ok),
     ),
     Derive(
         id="10.4",
         title="The angle between two orientations",
         spec=number(label="θ", unit="°", angle="deg"),
-        vary=Vary(_angle, Param("a", 60, 0, 180, 30), Param("b", 120, 0, 150, 30),  # b < 180: w < 0
+        vary=Vary(_angle, Param("a", 60, 0, 180, 1), Param("b", 120, 0, 179, 1),  # b < 180: w < 0
                   Choice("B", "z", ("x", "y", "z")), valid=_angle_ok),
         steps=(Step("dot", "q₀ · q₁", number(label="q₀ · q₁, the four-dimensional dot product")),
                Step("half", "θ/2", number(label="θ/2 = arccos|q₀ · q₁|", unit="°", angle="deg"))),
@@ -240,7 +240,7 @@ EXERCISES = (
         title="A SLERP midpoint, the short way",
         spec=matrix(label="slerp(q₀, q₁, ½) = (w, x, y, z)ᵀ", names=("w", "x", "y", "z"),
                     either_sign=SAME_ROTATION),
-        vary=Vary(_midpoint, Param("a", 0, 0, 180, 30), Param("b", 120, 0, 180, 30),
+        vary=Vary(_midpoint, Param("a", 0, 0, 180, 1), Param("b", 120, 0, 180, 1),
                   Choice("A", "z", ("x", "y", "z")), valid=_midpoint_ok),
         steps=(Step("dot", "q₀ · q₁", number(label="q₀ · q₁, before any flip")),
                Step("omega", "Ω", number(label="Ω, the arc with cos Ω = |q₀ · q₁|", unit="°", angle="deg"))),

@@ -15,7 +15,7 @@ from ..reference.transform2d import apply, chain, transform2d
 from ..steps import Step as WorkStep
 from ..variants import Param, Vary
 from . import column, grid
-from .checks import apart, kept_slips
+from .checks import apart, kept_slips, slips_apart
 
 
 def _with(rot, t):
@@ -107,7 +107,8 @@ def _tool_point_ok(p):
     """The base is offset (else the chain is one transform), and the slips differ from the key and each other."""
     b_plus_u = p["bx"] + p["ux"]
     reversed_x, unturned_x = p["ux"] - p["by"], b_plus_u + p["d"]
-    return (p["bx"], p["by"]) != (0, 0) and reversed_x != b_plus_u and reversed_x != unturned_x
+    return ((p["bx"], p["by"]) != (0, 0) and apart(reversed_x, b_plus_u, unturned_x)
+            and slips_apart(_tool_point(p)))
 
 
 def _inverse_steps(R, t, given):
@@ -192,24 +193,25 @@ EXERCISES = (
         id="1.1",
         title="Pure translation",
         spec=number(label="x-coordinate in the world frame"),
-        vary=Vary(_pure_translation, Param("tx", 3, -5, 5, 1, avoid=(0,)), Param("ty", 4, -5, 5, 1),
-                  Param("px", 1, -5, 5, 1, avoid=(0,)), Param("py", 0, -5, 5, 1),
-                  valid=lambda p: p["px"] != p["tx"]),
+        vary=Vary(_pure_translation, Param("tx", 3, -9.9, 9.9, 0.1, avoid=(0,)), Param("ty", 4, -9.9, 9.9, 0.1),
+                  Param("px", 1, -9.9, 9.9, 0.1, avoid=(0,)), Param("py", 0, -9.9, 9.9, 0.1),
+                  valid=lambda p: p["px"] != p["tx"] and slips_apart(_pure_translation(p))),
     ),
     Derive(
         id="1.2",
         title="Rotation plus translation",
         spec=number(label="y-coordinate in the world frame"),
-        vary=Vary(_turn_and_shift, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1, avoid=(0,)),
+        vary=Vary(_turn_and_shift, Param("tx", 2, -9.9, 9.9, 0.1), Param("ty", 1, -9.9, 9.9, 0.1, avoid=(0,)),
                   Param("d", 1, 0.5, 3, 0.5, unit=" m"),
-                  valid=lambda p: p["ty"] != 2 * p["d"]),
+                  valid=lambda p: not math.isclose(p["ty"], 2 * p["d"]) and slips_apart(_turn_and_shift(p))),
     ),
     Derive(
         id="1.3",
         title="Chain two transforms",
         spec=number(label="x-coordinate in the world frame"),
-        vary=Vary(_tool_point, Param("bx", 0, -3, 3, 1), Param("by", 1, -3, 3, 1), Param("ux", 2, -3, 3, 1),
-                  Param("uy", 0, -3, 3, 1), Param("d", 1, 1, 3, 1), valid=_tool_point_ok),
+        vary=Vary(_tool_point, Param("bx", 0, -9.9, 9.9, 0.1), Param("by", 1, -5, 5, 0.1),
+                  Param("ux", 2, -9.9, 9.9, 0.1), Param("uy", 0, -5, 5, 0.1), Param("d", 1, 1, 3, 1),
+                  valid=_tool_point_ok),
     ),
     Trace(
         id="1.4",

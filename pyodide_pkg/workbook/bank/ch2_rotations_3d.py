@@ -70,6 +70,12 @@ def _quat_w(p):
     }
 
 
+def _quat_w_ok(p):
+    """The full-angle slip cos θ is told apart from w and from −w (which is right too)."""
+    made = _quat_w(p)
+    return slips_apart(made) and slips_apart({**made, "key": -made["key"]})
+
+
 def _half_turn_component(p):
     """2.4: the unit quaternion of 180° about one axis; asked: a component off that axis (always 0)."""
     axis, comp = p["axis"], p["comp"]
@@ -214,7 +220,7 @@ EXERCISES = (
         id="2.1",
         title="Yaw by 90°",
         spec=number(),
-        vary=Vary(_yaw_x_axis, Param("gamma", 90, 5, 175, 5, unit="°")),
+        vary=Vary(_yaw_x_axis, Param("gamma", 90, 0.5, 179.5, 0.5, unit="°")),
     ),
     Trace(
         id="2.2",
@@ -243,12 +249,13 @@ EXERCISES = (
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
             label="w",
         ),
-        vary=Vary(_quat_w, Param("theta", 90, 10, 170, 10, unit="°", avoid=(120,)),
-                  Choice("axis", "z", ("x", "y", "z"))),
+        vary=Vary(_quat_w, Param("theta", 90, 10, 179, 1, unit="°", avoid=(120,)),
+                  Choice("axis", "z", ("x", "y", "z")), valid=_quat_w_ok),
     ),
     Derive(
         id="2.4",
         title="Quaternion for 180° about x",
+        same_answer="The component off the axis of a half turn is 0 for every axis and component asked.",
         spec=number(label="z"),
         vary=Vary(_half_turn_component, Choice("axis", "x", ("x", "y", "z")), Choice("comp", "z", ("x", "y", "z")),
                   valid=lambda p: p["comp"] != p["axis"]),
@@ -256,6 +263,7 @@ EXERCISES = (
     Derive(
         id="2.5",
         title="The norm of a quaternion",
+        same_answer="Every quaternion it draws, with components ±0.5, has norm 1: that is the point of the exercise.",
         spec=number(label="‖q‖"),
         vary=Vary(_quat_norm, *(Param(c, 0.5, -0.5, 0.5, 1) for c in "wxyz"),
                   valid=lambda p: not math.isclose(sum(p.values()), 1.0)),
@@ -274,7 +282,7 @@ EXERCISES = (
             names=("w", "x", "y", "z"),
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
         ),
-        vary=Vary(_quat_whole, Param("theta", 90, 10, 170, 10, unit="°"), Choice("axis", "z", ("x", "y", "z"))),
+        vary=Vary(_quat_whole, Param("theta", 90, 1, 179, 1, unit="°"), Choice("axis", "z", ("x", "y", "z"))),
     ),
     Derive(
         id="2.10",

@@ -231,7 +231,7 @@ EXERCISES = (
         title="Predict the new position",
         spec=number(label="x", unit="m"),
         vary=Vary(_drive_east, Param("x0", 0, -3, 3, 1, unit=" m"), Param("y0", 0, -3, 3, 1, unit=" m"),
-                  Param("v", 1, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
+                  Param("v", 1, 0.1, 4, 0.1, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
                   valid=_drive_east_ok),
     ),
     Derive(
@@ -246,15 +246,15 @@ EXERCISES = (
         id="3.3",
         title="An entry of the Jacobian F",
         spec=number(label="F(1,3)"),
-        vary=Vary(_north_f13, Param("v", 1, 0.5, 3, 0.5, unit=" m/s"),
+        vary=Vary(_north_f13, Param("v", 1, 0.1, 4, 0.1, unit=" m/s"),
                   Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_f13_ok),
     ),
     Derive(
         id="3.4",
         title="Predict the covariance",
         spec=number(),
-        vary=Vary(_covariance_entry, Param("v", 1, 0.5, 2, 0.5, unit=" m/s"), Param("dt", 1, 0.2, 2, 0.2, unit=" s"),
-                  Param("p11", 1, 0.5, 2, 0.1), Param("p22", 1, 0.5, 2, 0.1), Param("p33", 0.1, 0.01, 0.2, 0.01),
+        vary=Vary(_covariance_entry, Param("v", 1, 0.5, 2, 0.1, unit=" m/s"), Param("dt", 1, 0.2, 2, 0.2, unit=" s"),
+                  Param("p11", 1, 0.5, 2, 0.01), Param("p22", 1, 0.5, 2, 0.01), Param("p33", 0.1, 0.01, 0.2, 0.01),
                   Param("q11", 0.01, 0.01, 0.05, 0.01), Param("q22", 0.01, 0.01, 0.05, 0.01),
                   Param("q33", 0.001, 0.001, 0.005, 0.001), Choice("entry", "1,1", ("1,1", "2,2")),
                   valid=_covariance_entry_ok),
@@ -314,6 +314,7 @@ EXERCISES = (
     Derive(
         id="3.9",
         title="F(1,3) as a formula",
+        same_answer="A formula in v, θ and dt: students differ only in which of two entries they are asked.",
         spec=formula(
             variables=("v", "theta", "dt"),
             domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},

@@ -167,7 +167,7 @@ def _north_jacobian_ok(p) -> bool:
 
 
 
-_VARY_37 = Vary(_north_jacobian, Param("v", 2, 0.5, 3, 0.5, unit=" m/s"),
+_VARY_37 = Vary(_north_jacobian, Param("v", 2, 0.1, 4, 0.1, unit=" m/s"),
                 Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_jacobian_ok)
 
 EXERCISES = (

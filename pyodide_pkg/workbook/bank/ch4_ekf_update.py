@@ -16,23 +16,35 @@ from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_
 from ..steps import Step
 from ..variants import Param, Vary
 from . import column
-from .checks import apart, kept_slips
+from .checks import apart, kept_slips, slips_apart
 
 _POSE = (0, 0, 0)
 _LANDMARK = (3, 4)
 _H_PRED = range_bearing(_POSE, _LANDMARK)
 
 # 4.1 to 4.3 and 4.7: a robot facing east (θ = 0) at (x, y) sights a landmark at (lx, ly).
-_SIGHTING = (Param("x", 0, -2, 2, 1), Param("y", 0, -2, 2, 1), Param("lx", 3, -5, 5, 1), Param("ly", 4, -5, 5, 1))
+# Positions in steps of 0.1 m: offsets, ranges and bearings differ from one student to the next.
+_SIGHTING = (Param("x", 0, -2, 2, 0.1), Param("y", 0, -2, 2, 0.1), Param("lx", 3, -5, 5, 0.1),
+             Param("ly", 4, -5, 5, 0.1))
+
+
+def _exact(v):
+    """A difference or sum of the grid's decimals without float noise (3 stays the whole number 3)."""
+    v = round(v, 10)
+    return int(v) if v == int(v) else v
+
+
+def _offsets(p):
+    """The landmark's offset (dx, dy) from the robot, without float noise."""
+    return _exact(p["lx"] - p["x"]), _exact(p["ly"] - p["y"])
 
 
 def _sighting(p):
     """The offsets and distances of a sighting, and the strings every derivation of it prints."""
     pose, landmark = (p["x"], p["y"], 0), (p["lx"], p["ly"])
-    dx, dy = p["lx"] - p["x"], p["ly"] - p["y"]
-    q = dx * dx + dy * dy
-    root = math.isqrt(q)
-    whole = root * root == q  # √q is a whole number
+    dx, dy = _offsets(p)
+    q = _exact(dx * dx + dy * dy)
+    whole = isinstance(q, int) and math.isqrt(q) ** 2 == q  # √q is a whole number
     r = range_bearing(pose, landmark)[0]
     return {
         "pose": pose, "landmark": landmark, "dx": dx, "dy": dy, "q": q, "r": r, "whole": whole,
@@ -40,7 +52,7 @@ def _sighting(p):
         "values": {
             "px": paren(p["x"]), "py": paren(p["y"]), "dx": fmt(dx), "dy": fmt(dy),
             "dx2": fmt(dx * dx), "dy2": fmt(dy * dy), "q": fmt(q), "r": fmt(r),
-            "rq": fmt(r) if whole else f"\\sqrt{{{q}}}",  # √q in TeX: exact
+            "rq": fmt(r) if whole else f"\\sqrt{{{fmt(q)}}}",  # √q in TeX: exact
             "req": relation(r),
         },
     }
@@ -103,7 +115,7 @@ def _predicted_range(p, given=None):
     elif s["whole"]:
         remark = f"A {a}-{b}-{fmt(s['r'])} right triangle: the range comes out whole."
     else:
-        remark = f"A right triangle with legs {a} m and {b} m: the range is its hypotenuse."
+        remark = f"A right triangle with legs {fmt(a)} m and {fmt(b)} m: the range is its hypotenuse."
     return {
         "key": r,
         "slips": (Slip(float(q), "That is q = dx² + dy², the squared range. Take its square root."),),
@@ -187,6 +199,7 @@ def _range_innovation(p, given=None):
     hr = chains.given(given, "hr", p["hr"])
     y = innovation((p["zr"], p["zphi"]), (hr, p["hphi"]))
     closer = y[0] < 0
+    places = 1 if round(p["zr"], 1) == p["zr"] else 2  # the ranges as the sensor gives them: 4.8, or 4.83
     return {
         "key": y[0],
         "slips": (
@@ -194,7 +207,7 @@ def _range_innovation(p, given=None):
                  "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
             Slip(y[1], "That is the bearing innovation, the second component. The range is the first."),
         ),
-        "values": {"zr1": fixed(p["zr"], 1), "hr1": fixed(hr, 1), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
+        "values": {"zr1": fixed(p["zr"], places), "hr1": fixed(hr, places), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
                    "from41": "(its range is exercise 4.1's)" if _range_of_41(p) is not None else "",
                    "closer": "closer" if closer else "farther", "pull": "pull" if closer else "push",
                    "towards": "towards" if closer else "away from"},
@@ -214,12 +227,17 @@ def _innovation_is_a_surprise(p):
 
 
 def _ahead(p):
-    return p["lx"] > p["x"]
+    return _offsets(p)[0] > 0
 
 
 def _off_both_axes(p):
-    """A real right triangle: the landmark is not straight along x or y from the robot."""
-    return p["lx"] != p["x"] and p["ly"] != p["y"]
+    """A real right triangle: the landmark is at least 0.5 m off the robot's x and y lines."""
+    return all(abs(d) >= 0.5 for d in _offsets(p))
+
+
+def _range_ok(p):
+    """4.1: a real right triangle, and the range told apart from q (they meet at r = 1)."""
+    return _off_both_axes(p) and slips_apart(_predicted_range(p))
 
 
 EXERCISES = (
@@ -227,7 +245,7 @@ EXERCISES = (
         id="4.1",
         title="Predicted range",
         spec=number(label="r", unit="m"),
-        vary=Vary(_predicted_range, *_SIGHTING, valid=_off_both_axes),
+        vary=Vary(_predicted_range, *_SIGHTING, valid=_range_ok),
         steps=(OFFSET, SQUARED),
     ),
     Derive(
@@ -235,7 +253,7 @@ EXERCISES = (
         title="Predicted bearing",
         spec=number(label="φ", unit="°", angle="deg", periodic=True),
         vary=Vary(_predicted_bearing, *_SIGHTING,
-                  valid=lambda p: _off_both_axes(p) and p["lx"] - p["x"] != p["ly"] - p["y"]),
+                  valid=lambda p: _off_both_axes(p) and _offsets(p)[0] != _offsets(p)[1]),
         steps=(OFFSET, ANGLE),
     ),
     Derive(
@@ -243,7 +261,7 @@ EXERCISES = (
         title="An entry of H",
         spec=number(label="H(1,1)"),
         vary=Vary(_range_slope, *_SIGHTING,
-                  valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(p["lx"] - p["x"]) != abs(p["ly"] - p["y"])),
+                  valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(_offsets(p)[0]) != abs(_offsets(p)[1])),
         steps=(OFFSET, SLOPE),
     ),
     Derive(
@@ -252,7 +270,7 @@ EXERCISES = (
         spec=number(label="range innovation", unit="m"),
         vary=Vary(_range_innovation,
                   Param("hr", 5, 3, 7, 0.1, unit=" m"), Param("hphi", _H_PRED[1], 0.2273, 1.4273, 0.1, unit=" rad"),
-                  Param("zr", 4.8, 2.5, 7.5, 0.1, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),
+                  Param("zr", 4.8, 2.5, 7.5, 0.01, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),
                   valid=_innovation_is_a_surprise),
         uses=(Uses("4.1", "hr", "range r", variant=_range_of_41),),
     ),

@@ -21,6 +21,7 @@ from .ch4_ekf_update import (  # the chapter's sighting and its first step
     _ahead,
     _jacobian_of,
     _offset,
+    _offsets,
     _sighting,
 )
 from .checks import kept_slips
@@ -79,7 +80,7 @@ def _whole_jacobian(p, given=None):
         ),
         "steps": {"d": offset, "bearing": row},
         "values": {**s["values"], "brel": relation_all(printed),
-                   "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{s['q']}}} {relation(s['r'])} {fmt(s['r'])}"},
+                   "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{fmt(s['q'])}}} {relation(s['r'])} {fmt(s['r'])}"},
     }
 
 
@@ -185,12 +186,13 @@ EXERCISES = (
         id="4.7",
         title="The whole measurement Jacobian H",
         spec=matrix(label="H"),
-        vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
+        vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and _offsets(p)[1] > 0),
         steps=(OFFSET, BEARING_ROW),
     ),
     Derive(
         id="4.8",
         title="H(2,1) as a formula",
+        same_answer="A formula in dx and dy: students differ only in which of four entries they are asked.",
         spec=formula(variables=("dx", "dy"), domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)}),
         vary=Vary(_jacobian_entry_formula, Choice("entry", "2,1", ("1,1", "1,2", "2,1", "2,2"))),
     ),

@@ -22,7 +22,7 @@ from ..reference.pose_graph import (
 from ..steps import Step
 from ..variants import Param, Vary
 from . import column, grid
-from .checks import apart
+from .checks import apart, slips_apart
 
 _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
@@ -276,15 +276,16 @@ EXERCISES = (
         id="5.1",
         title="Count the unknowns",
         spec=number(label="number of optimisation variables", unit="variables"),
-        vary=Vary(_pose_count, Param("n", 100, 10, 500, 10)),
+        vary=Vary(_pose_count, Param("n", 100, 10, 999, 1)),
     ),
     Derive(
         id="5.2",
         title="Odometry edge error",
         spec=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
-        vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
+        vary=Vary(_odometry_error, Param("x2", 1.1, 0.5, 1.5, 0.005, unit=" m", avoid=(1,)),
                   Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"),
-                  Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
+                  Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,)),
+                  valid=lambda p: slips_apart(_odometry_error(p))),
         steps=(Step("d", "x₂ − x₁", matrix(label="x₂ − x₁", names=("dx|x", "dy|y", "dθ|θ"), units=("m", "m", "rad"))),
                Step("e", "e = z₁₂ − (x₂ − x₁)", matrix(label="e = z₁₂ − (x₂ − x₁)", names=("e_x|x", "e_y|y", "e_θ|θ"),
                                                       units=("m", "m", "rad")))),
@@ -293,7 +294,7 @@ EXERCISES = (
         id="5.3",
         title="Information matrix",
         spec=number(label="Ω(1,1), the (1,1) entry of Σ⁻¹"),
-        vary=Vary(_information_diagonal, Param("s", 0.01, 0.01, 0.05, 0.01, avoid=(0.03,)),
+        vary=Vary(_information_diagonal, Param("s", 0.01, 0.01, 0.1, 0.0005, avoid=(0.03,)),
                   Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,))),
     ),
     Trace(
@@ -320,7 +321,7 @@ EXERCISES = (
         id="5.5",
         title="Size of the Gauss–Newton system",
         spec=number(label="rows (= columns) of H"),
-        vary=Vary(_hessian_size, Param("n", 1000, 500, 3000, 100), Param("m", 500, 100, 1000, 100),
+        vary=Vary(_hessian_size, Param("n", 1000, 500, 3000, 10), Param("m", 500, 100, 1000, 10),
                   valid=_distinct_sizes),
     ),
     Derive(
@@ -337,8 +338,8 @@ EXERCISES = (
         id="5.7",
         title="Information from a correlated covariance",
         spec=matrix(label="Ω = Σ⁻¹"),
-        vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.01, avoid=(0.03,)),
-                  Param("b", 0.01, 0.005, 0.045, 0.005), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
+        vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.001, avoid=(0.03,)),
+                  Param("b", 0.01, 0.005, 0.045, 0.001), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
                   valid=_two_places_suffice),
         steps=(Step("det", "determinant of the x–y block", number(label="det = ad − bc of the x–y block")),
                Step("block", "inverse of the x–y block", matrix(label="the x–y block of Ω"))),

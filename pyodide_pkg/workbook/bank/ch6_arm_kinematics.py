@@ -243,7 +243,7 @@ EXERCISES = (
         id="6.1",
         title="FK of the straight arm",
         spec=number(label="x-coordinate of the end effector", unit="m"),
-        vary=Vary(_straight_reach, Param("L", 1, 0.5, 2.5, 0.1, unit=" m")),
+        vary=Vary(_straight_reach, Param("L", 1, 0.25, 2.5, 0.01, unit=" m")),
     ),
     Derive(
         id="6.2",
@@ -257,6 +257,8 @@ EXERCISES = (
     Derive(
         id="6.3",
         title="IK: the elbow angle",
+        same_answer=("The target is one of the four diagonal points (±1, ±1) with unit links, so the angles come from "
+                     "a short list."),
         spec=number(label="θ2 (elbow-down, θ2 ≥ 0)", unit="°", angle="deg"),
         vary=Vary(_diagonal_ik, Param("x", 1, -1, 1, 2), Param("y", 1, -1, 1, 2),
                   Choice("asked", "θ2", ("θ2", "θ1")), Choice("branch", "elbow-down", ("elbow-down", "elbow-up")),
@@ -316,6 +318,7 @@ EXERCISES = (
     Derive(
         id="6.6",
         title="FK as a formula",
+        same_answer="A formula in θ1, θ2, L1 and L2: students differ only in whether x or y is asked.",
         spec=formula(
             variables=("theta1", "theta2", "L1", "L2"),
             domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},

@@ -332,19 +332,21 @@ EXERCISES = (
         title="End-effector velocity",
         spec=number(label="ẋ", unit="m/s"),
         vary=Vary(
-            _tip_velocity, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))
+            _tip_velocity, Param("L", 1, 0.5, 2, 0.01, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))
         ),
         uses=(Uses("7.1", "j11", "J(1,1)", variant=lambda p: 0 if p["L"] == 1 else None),),
     ),
     Derive(
         id="7.3",
         title="Spot the singularity",
+        same_answer="det J of the straight arm is 0 for every link length: that is the point of the exercise.",
         spec=number(label="det J at θ2 = 0"),
         vary=Vary(_straight_arm_det, Param("L", 1, 0.5, 2.5, 0.1, unit=" m", avoid=(2,))),
     ),
     Derive(
         id="7.4",
         title="Best elbow angle",
+        same_answer="The best elbow angle is 90° for every link length: that is the point of the exercise.",
         spec=number(label="θ2 that maximises w = |det J|", unit="°", angle="deg"),
         vary=Vary(_best_elbow, Param("L", 1, 0.5, 2, 0.1, unit=" m")),
     ),
@@ -387,6 +389,7 @@ EXERCISES = (
     Derive(
         id="7.7",
         title="J(1,1) as a formula",
+        same_answer="A formula in θ1, θ2, L1 and L2: students differ only in which of four entries they are asked.",
         spec=formula(
             variables=("theta1", "theta2", "L1", "L2"),
             domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},

@@ -12,6 +12,7 @@ from ..number_format import fmt, paren, prose, signed
 from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step, pid_terms
 from ..variants import Choice, Param, Vary
 from . import column
+from .checks import apart
 
 
 def _p_step(p):
@@ -31,7 +32,7 @@ def _p_step(p):
 
 
 # 8.2 and 8.7: three PID steps with a shrinking error e[0] > e[1] > e[2] > 0, from e[−1] = 0.
-_THREE_STEPS = (Param("Kp", 1, 0.5, 3, 0.5), Param("Ki", 0.1, 0.05, 0.3, 0.05), Param("Kd", 0.5, 0.2, 1, 0.1),
+_THREE_STEPS = (Param("Kp", 1, 0.5, 3, 0.1), Param("Ki", 0.1, 0.05, 0.3, 0.01), Param("Kd", 0.5, 0.2, 1, 0.05),
                 Choice("dt", 1, (0.5, 1, 2)),
                 Param("e0", 5, 3, 9, 1), Param("e1", 3, 2, 6, 1), Param("e2", 1, 1, 4, 1))
 _GAINS = ("Kp", "Ki", "Kd", "dt")
@@ -87,11 +88,13 @@ def _falling_fast(p):
 
 def _converging(p):
     """8.2's story: the error shrinks, and the push is gentle: positive, weaker than the step before, and
-    no more than P alone (D eases off at least as much as I adds)."""
+    no more than P alone (D eases off at least as much as I adds), yet told apart from P (the
+    derivation prints P, which must not pass for the answer)."""
     if not _shrinking(p):
         return False
     u = pid_sequence([p["e0"], p["e1"], p["e2"]], *(p[g] for g in _GAINS))
-    return 0 < u[2] < u[1] and u[2] <= p_term(p["e2"], p["Kp"]) + 1e-9
+    P = p_term(p["e2"], p["Kp"])
+    return 0 < u[2] < u[1] and u[2] <= P + 1e-9 and (apart(u[2], P) or math.isclose(u[2], P))
 
 
 def _pid_output(p):
@@ -181,7 +184,7 @@ EXERCISES = (
         title="One step of P control",
         spec=number(label="control output u"),
         vary=Vary(_p_step, Param("target", 10, 0, 20, 1), Param("actual", 7, 0, 20, 1),
-                  Param("Kp", 2, 0.5, 5, 0.5, avoid=(1,)),
+                  Param("Kp", 2, 0.5, 5, 0.1, avoid=(1,)),
                   valid=lambda p: p["target"] != p["actual"]),
     ),
     Derive(
@@ -265,7 +268,8 @@ EXERCISES = (
         id="8.6",
         title="The sign of the D term",
         spec=number(label="D term"),
-        vary=Vary(_falling_error_d_term, Param("ek", 2, 0, 8, 1), Param("ep", 5, 1, 10, 1), Param("Kd", 1, 0.5, 3, 0.5),
+        vary=Vary(_falling_error_d_term, Param("ek", 2, 0, 8, 0.5), Param("ep", 5, 1, 10, 0.5),
+                  Param("Kd", 1, 0.5, 3, 0.05),
                   Choice("dt", 0.1, tuple(_SPANS)), valid=_d_is_a_brake),
     ),
     Derive(
