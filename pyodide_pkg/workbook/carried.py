@@ -209,8 +209,7 @@ def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
     wanted = _entries(target.key)
     if not all(math.isfinite(w) for w in wanted):
         raise Undefined("the result is not a finite number")
-    scale = max(abs(v) for v in _entries(kind.key) + wanted)
-    floor = REL * scale
+    floors = [REL * scale for scale in _scales(kind.key, target.key)]
     rows = reading if isinstance(reading, list) else [[reading]]
     got = [
         (r.value, r.half_unit if r.figures is not None and r.figures >= FIGURES else None) for row in rows for r in row
@@ -222,7 +221,7 @@ def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
         if getattr(kind, "periodic", False)
         else None
     )
-    for (value, half), want in zip(got, wanted):
+    for (value, half), want, floor in zip(got, wanted, floors):
         want = clean(want)
         if turn:
             value = want + math.remainder(value - want, turn)
@@ -230,6 +229,21 @@ def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
         if not agrees(value, want, rel=getattr(kind, "rel_tol", REL), half_unit=half, floor=floor if cancels else 0.0):
             return False
     return True
+
+
+def _scales(right: Any, recomputed: Any) -> list[float]:
+    """Each entry's scale, for the floor of an entry that cancels: a number's is the larger of the right key and
+    the recomputed one; a matrix entry's is the largest recomputed entry in its row and its column, the terms
+    that meet in it. An entry far from the others (5.7's Ω₃₃ = 1000 beside an x–y block of 0.02) lends its
+    size to none of them, so a block made small by a wrong determinant is held to its own figures.
+
+    >>> _scales(2.0, 3e-9), _scales(((1.0, 0.0), (0.0, 1000.0)), ((0.02, 0.0), (0.0, 1000.0)))
+    ([2.0], [0.02, 1000.0, 1000.0, 1000.0])
+    """
+    if not isinstance(recomputed, tuple):
+        return [max(abs(float(right)), abs(float(recomputed)))]
+    rows = [[abs(float(v)) for v in row] for row in recomputed]
+    return [max(max(row), max(r[j] for r in rows)) for row in rows for j in range(len(row))]
 
 
 def _follows(ex: Worked, step: str | None, answer: object, values: list[Value]) -> bool:

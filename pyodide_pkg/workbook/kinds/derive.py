@@ -25,11 +25,15 @@ from ..answer_kinds.base import AnswerKind, AnswerSpec
 from ..chains import Uses
 from ..contract import ATTR
 from ..number_format import fmt
+from ..reference.domain import Undefined
 from ..variants import VariantError, Vary, check_seed
 from ..verdict import GradingError, Verdict, quote
 from .base import Exercise
 
 WORKED = "worked"  # the placeholder the answer kind fills: the Answer line's value, in TeX
+# what make(p, given=...) returns in place of the key when the learner's values leave the answer undefined (a
+# θ2 of ±180° reaches no θ1): why, in their words, beside the steps that those values still define
+UNDEFINED = "undefined"
 
 
 @dataclass(frozen=True)
@@ -147,6 +151,8 @@ class Derive(Exercise):
         values.update(made.pop("values", {}))
         if WORKED in values:
             raise VariantError(f"exercise {self.id}: {{{{{WORKED}}}}} is filled by the answer kind, not by make()")
+        if UNDEFINED in made:
+            raise VariantError(f"exercise {self.id}: the draw {dict(p)} leaves the answer undefined: {made[UNDEFINED]}")
         title = made.pop("title", None)
         steps = self._step_kinds(made.pop("steps", None), values)
         answer = spec.build(self.id, **made)
@@ -182,6 +188,8 @@ class Derive(Exercise):
         made = dict(vary.make(self.params, given=given))
         for name in ("values", "title", "steps"):
             made.pop(name, None)
+        if UNDEFINED in made:  # the learner's values leave the answer undefined, though their steps stand
+            raise Undefined(made[UNDEFINED])
         return spec.build(self.id, **made)
 
     def carried_steps(self, given: Mapping[str, Any]) -> dict[str, AnswerKind]:

@@ -17,6 +17,7 @@ from ...expr import Formula, parse_formula
 from ...number_format import compact, prose
 from ...tolerance import agrees, clean
 from ...verdict import Verdict
+from ..base import slip_data
 
 if TYPE_CHECKING:
     from . import FormulaAnswer
@@ -98,7 +99,7 @@ def mark(ans: FormulaAnswer, formula: Formula) -> Verdict:
         return Verdict("correct", "Correct: your formula agrees with the answer everywhere it was tried.", data=data)
     for slip in ans.slips:
         if equivalent(formula, slip.value, ans.domain):
-            return Verdict("incorrect", slip.message, tag=TAG.slip, data=data)
+            return Verdict("incorrect", slip.message, tag=TAG.slip, data={**data, **slip_data(slip)})
     in_degrees = formula.with_degree_arguments()
     if in_degrees is not None and equivalent(in_degrees, cast("Callable[..., float]", ans.key), ans.domain):
         return Verdict("incorrect", DEGREES, tag=TAG.degrees, data=data)

@@ -15,6 +15,7 @@ from ...contract import TAG
 from ...expr import Reading
 from ...tolerance import FIGURES, agrees, clean, is_close_miss
 from ...verdict import Verdict
+from ..base import slip_data
 from ..number.mark import TRIG_DEGREES, too_coarse
 from .slips import whole_matrix_slips
 
@@ -68,7 +69,7 @@ def mark(ans: MatrixAnswer, readings: list[list[Reading]]) -> Verdict:
     data: dict = {"wrong": wrong}
     for slip in ans.slips:
         if not differs(ans, readings, slip.value):
-            return Verdict("incorrect", slip.message, tag=TAG.slip, data=data)
+            return Verdict("incorrect", slip.message, tag=TAG.slip, data={**data, **slip_data(slip)})
     said = _trig_degrees(ans, readings, wrong)
     if said:
         return said

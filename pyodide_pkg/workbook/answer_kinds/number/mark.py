@@ -17,6 +17,7 @@ from ...expr import Reading
 from ...number_format import fmt, is_exact
 from ...tolerance import FIGURES, agrees, clean, is_close_miss, is_rounding, is_sign_slip
 from ...verdict import Verdict
+from ..base import slip_data
 
 if TYPE_CHECKING:
     from . import NumberAnswer
@@ -78,7 +79,7 @@ def mark(ans: NumberAnswer, reading: Reading) -> Verdict:
         return Verdict("correct", f"Correct: {ans.either_sign}")
     for slip in ans.slips:
         if agrees_with(ans, value, slip.value, half):
-            return Verdict("incorrect", slip.message, tag=TAG.slip)
+            return Verdict("incorrect", slip.message, tag=TAG.slip, data=slip_data(slip))
     as_degrees = reading.with_degree_arguments()
     if as_degrees is not None and agrees_with(ans, as_degrees, key):
         how = ("your angle was taken as radians while this exercise works in degrees" if ans.angle != "rad"
