@@ -70,7 +70,10 @@ def test_a_derive_exercise_is_built_complete_and_never_changed():
     assert other is not ex and ex.seed == 0 and other.seed == 5 and other.title != ex.title
     assert {f.name: getattr(other, f.name) for f in dataclasses.fields(other) if f.name not in ("seed", "title")} == \
         {f.name: getattr(ex, f.name) for f in dataclasses.fields(ex) if f.name not in ("seed", "title")}
-    for view in (ex.values, ex.params, ex.step_answers):
+    for name in ("values", "params", "step_answers"):
+        copy = getattr(ex, name)
+        copy["x"] = 1  # the caller's own copy: the exercise does not change
+        assert "x" not in getattr(ex, name)
         with pytest.raises(TypeError):
-            view["x"] = 1  # type: ignore[index]
+            getattr(ex.drawn, "steps" if name == "step_answers" else name)["x"] = 1  # the draw is read-only
     assert other.variant(0) == ex and other.variant(0).values == ex.values

@@ -72,8 +72,8 @@ class Derive(Exercise):
 
     The fields are what the bank writes, and they never change: what the variant's draw gives (its
     answer, its steps' answer kinds, the template's values, the parameters) is computed once, when the
-    exercise is made, and read through :attr:`drawn`. :meth:`variant` makes another exercise, with the
-    other draw's title, by :func:`dataclasses.replace`.
+    exercise is made, kept in :attr:`drawn` (read-only) and handed out as copies. :meth:`variant` makes
+    another exercise, with the other draw's title, by :func:`dataclasses.replace`.
     """
 
     spec: AnswerSpec | None = None  # what the bank writes: spec=number(...), matrix(...) or formula(...)
@@ -115,17 +115,17 @@ class Derive(Exercise):
 
     @property
     def step_answers(self) -> Mapping[str, AnswerKind]:
-        return self.drawn.steps
+        return dict(self.drawn.steps)  # a copy of its own: the draw is shared, and the copy is plain data
 
     @property
     def values(self) -> Mapping[str, str]:
         """The template's fill: the draw's values and the worked answers."""
-        return self.drawn.values
+        return dict(self.drawn.values)  # a copy of its own: the draw is shared, and the copy is plain data
 
     @property
     def params(self) -> Mapping[str, Any]:
         """This variant's parameters (empty without a generator)."""
-        return self.drawn.params
+        return dict(self.drawn.params)  # a copy of its own: the draw is shared, and the copy is plain data
 
     def _draw(self, spec: AnswerSpec, p: Mapping[str, Any]) -> _Draw:
         """What the draw ``p`` makes: the same parameters always make the same exercise, so a
