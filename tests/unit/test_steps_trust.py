@@ -65,3 +65,30 @@ def test_5_7_a_wrong_determinant_does_not_credit_a_block_of_zeros(seed):
         assert grade(v, typed, step="block", sent={"det": fmt(wrong)})["tag"] == "carried"
         whole = f"{typed.split('; ')[0]}, 0; {typed.split('; ')[1]}, 0; 0, 0, {fmt(w33)}"
         assert grade(v, whole, sent={"det": fmt(wrong), "block": typed})["tag"] == "carried"
+
+
+@pytest.mark.parametrize("seed", SEEDS)
+def test_6_2_a_final_inside_the_typed_step_s_own_rounding_follows_from_it(seed):
+    """6.2: a wrong x₂ typed to 4 decimals, the final worked from its unrounded value. Where x = cos θ1 + x₂
+    cancels, the final lies outside the tolerance of the key worked from the typed x₂, though inside what that
+    x₂'s rounding allows (half a unit of its last digit either way): it is carried all the same."""
+    v = bank.get("6.2").variant(seed)
+    c1 = v.answer.key - v.step_answers["x2"].key
+    t12 = fmt(v.step_answers["t12"].key)
+    checked = 0
+    for k in range(1, 40):
+        unrounded = -c1 + k * 0.00137  # finals from 0.00137 up: they cancel against cos θ1
+        typed = f"{unrounded:.4f}"
+        final = f"{c1 + unrounded:.4g}"
+        if v.step_answers["x2"].check(typed).status == "correct":
+            continue
+        lo, hi = sorted((c1 + float(typed) - 5e-5, c1 + float(typed) + 5e-5))
+        if not lo <= float(final) <= hi:
+            continue
+        said = grade(v, final, sent={"t12": t12, "x2": typed})
+        assert said["tag"] == "carried" and said["data"]["carried"]["step"] == "x2", (typed, final, said)
+        checked += 1
+    assert checked >= 20
+    # outside that rounding it is still refused
+    far = f"{c1 + float(f'{-c1 + 0.01:.4f}') + 0.0003:.4g}"
+    assert grade(v, far, sent={"t12": t12, "x2": f"{-c1 + 0.01:.4f}"})["tag"] != "carried"
