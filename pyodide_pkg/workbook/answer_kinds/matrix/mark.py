@@ -82,7 +82,8 @@ def mark(ans: MatrixAnswer, readings: list[list[Reading]]) -> Verdict:
     right = n - len(wrong)
     if close:
         data["close"] = close
-        few = [p for p in close if too_coarse(readings[p[0] - 1][p[1] - 1], key[p[0] - 1][p[1] - 1])]
+        # "more figures" only when every close entry is the key rounded to its own few figures
+        few = all(too_coarse(readings[p[0] - 1][p[1] - 1], key[p[0] - 1][p[1] - 1]) for p in close)
         advice = (f"type at least {FIGURES} significant figures" if few
                   else f"round correctly to at least {FIGURES} significant figures and carry more digits")
         others = len(wrong) - len(close)
