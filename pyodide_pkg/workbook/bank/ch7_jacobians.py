@@ -27,6 +27,7 @@ from . import column, grid
 from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
 from .ch7_bugs import JACOBIAN_SIGN_BUG
 from .checks import apart, kept_slips
+from .jacobian_formulas import FORMULAS, entry_of
 
 
 def _angle(deg: float, tex: bool = False) -> str:
@@ -256,65 +257,15 @@ _X_OF = "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1 + \\theta_2)"
 _Y_OF = "L_1\\sin\\theta_1 + L_2\\sin(\\theta_1 + \\theta_2)"
 
 
-def _entry(r: int, c: int):
-    """J(r+1, c+1) as a function of the formula's variables."""
-    return lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[r][c]
-
-
-# Each entry of J as a formula: its answer, its TeX, the slips a learner makes on it.
-_FORMULAS = {
-    (1, 1): ("-L1*sin(theta1) - L2*sin(theta1 + "
-             "theta2)", "-L_1\\sin\\theta_1 - L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-y", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][0],
-         "The sign is flipped: the derivative of cos is −sin.", "sign-flipped-derivative-cos"),
-        (lambda theta1, theta2, L1, L2: -L1 * math.sin(theta1),
-         "Link 2 moves with θ1 too: its term L2 cos(θ1 + θ2) also depends on θ1, and contributes "
-         "−L2 sin(θ1 + θ2).", "link-2-moves-theta1"),
-        (_entry(0, 1), "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, which "
-         "moves both links.", "gave-j12"),
-        (_entry(1, 0), "That is J(2,1) = ∂y/∂θ1, from the sines of y. J(1,1) differentiates x, the cosines.",
-        "gave-j21"),
-    )),
-    (1, 2): ("-L2*sin(theta1 + theta2)", "-L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-(y - L_1\\sin\\theta_1)", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][1],
-         "The sign is flipped: the derivative of cos is −sin.", "sign-flipped-derivative-cos"),
-        (_entry(0, 0), "That is J(1,1) = ∂x/∂θ1: joint 1 moves both links. J(1,2) differentiates by θ2, which "
-         "moves link 2 only.", "gave-j11"),
-        (_entry(1, 1), "That is J(2,2) = ∂y/∂θ2, from the sines of y. J(1,2) differentiates x, the cosines.",
-        "gave-j22"),
-    )),
-    (2, 1): ("L1*cos(theta1) + L2*cos(theta1 + "
-             "theta2)", "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[1][0],
-         "The sign is flipped: the derivative of sin is +cos.", "sign-flipped-derivative-sin"),
-        (lambda theta1, theta2, L1, L2: L1 * math.cos(theta1),
-         "Link 2 moves with θ1 too: its term L2 sin(θ1 + θ2) also depends on θ1, and contributes "
-         "L2 cos(θ1 + θ2).", "link-2-moves-theta1"),
-        (_entry(1, 1), "That is J(2,2) = ∂y/∂θ2: only link 2 depends on θ2. J(2,1) differentiates by θ1, which "
-         "moves both links.", "gave-j22"),
-        (_entry(0, 0), "That is J(1,1) = ∂x/∂θ1, from the cosines of x. J(2,1) differentiates y, the sines.",
-        "gave-j11"),
-    )),
-    (2, 2): ("L2*cos(theta1 + theta2)", "L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x - L_1\\cos\\theta_1", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[1][1],
-         "The sign is flipped: the derivative of sin is +cos.", "sign-flipped-derivative-sin"),
-        (_entry(1, 0), "That is J(2,1) = ∂y/∂θ1: joint 1 moves both links. J(2,2) differentiates by θ2, which "
-         "moves link 2 only.", "gave-j21"),
-        (_entry(0, 1), "That is J(1,2) = ∂x/∂θ2, from the cosines of x. J(2,2) differentiates y, the sines.",
-        "gave-j12"),
-    )),
-}
-
-
 def _jacobian_formula(p):
     """7.7: one entry of J as a formula in θ1, θ2, L1, L2 (which one is drawn)."""
     entry = p["entry"]
     r, c = (int(k) for k in entry.strip("()").split(","))
-    answer, tex, equals, slips = _FORMULAS[r, c]
+    answer, tex, equals, slips = FORMULAS[r, c]
     coord, joint = "xy"[r - 1], c
     at71 = jacobian_2link(1, 1, 0, math.pi / 2)[r - 1][c - 1]  # exercise 7.1's own numbers: unit links at (0, 90°)
     return {
-        "key": _entry(r - 1, c - 1),
+        "key": entry_of(r - 1, c - 1),
         "answer_text": answer,
         "label": f"J{entry} = ∂{coord}/∂θ{joint}",
         "slips": tuple(Slip(f, m, name=name) for f, m, name in slips),
