@@ -154,6 +154,8 @@ WRONG: dict[str, dict[str, object]] = {
             ("or (u < u_min and e < 0)", "or (u_old < u_min and e < 0)")],
         "integral clipped to the limits": [("        new_integral = integral  # integrating", "        new_integral = min(new_integral, u_max) if e > 0 else max(new_integral, u_min)  # integrating")],
         "dt = 0 still integrates": [("new_integral = integral + e * dt", "new_integral = integral + e * (dt or 1)")],
+        "at the limit taken as above it": [("(u > u_max and e > 0) or (u < u_min and e < 0)",
+                                            "(u >= u_max and e > 0) or (u <= u_min and e < 0)")],
     },
     "9.9": {
         "bearing innovation not wrapped": [("wrap(z[1] - (math.atan2(dy, dx) - x[2]))", "z[1] - (math.atan2(dy, dx) - x[2])")],

@@ -24,7 +24,8 @@ def _quarter_turn(p):
     return {
         "key": yr,
         "slips": (Slip(rotate_2d(x, y, -math.pi / 2)[1],
-                       "That is a clockwise turn. R(θ) with θ > 0 turns counter-clockwise."),),
+                       "That is a clockwise turn. R(θ) with θ > 0 turns counter-clockwise.",
+                           name="clockwise-turn-r-theta"),),
         "values": {"px": paren(x), "py": paren(y), "xr": fmt(xr), "yr": fmt(yr)},
     }
 
@@ -39,9 +40,10 @@ def _composed_entry(p):
         "slips": (
             Slip(rot2(math.radians(a))[0][0] * rot2(math.radians(b))[0][0],
                  "You multiplied the two (1,1) entries. A matrix product mixes a row with a column: use R(α)R(β) = "
-                 "R(α+β)."),
+                 "R(α+β).", name="multiplied-two-1-1"),
             Slip(det_rot2(math.radians(a + b)),
-                 "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle."),
+                 "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle.",
+                     name="determinant-1-1-entry"),
         ),
         "values": {"total": fmt(a + b), "c": fmt(key)},
     }
@@ -61,7 +63,8 @@ def _diagonal_point(p):
         "key": key,
         "title": f"Rotate ({fmt(a)}, {fmt(a)}) by 45°",
         "label": f"{axis}-coordinate of the rotated point",
-        "slips": (Slip(slip, f"That is the {other}-coordinate. The {axis}-coordinate is {rules[axis]}."),),
+        "slips": (Slip(slip, f"That is the {other}-coordinate. The {axis}-coordinate is {rules[axis]}.",
+            name="coordinate-coordinate"),),
         "values": {"rule": tex[axis], "c": fmt(c), "xr": fmt(xr), "xrel": relation(xr, c * a - c * a), "yr": fmt(yr),
                    "yrel": relation(yr, c * a + c * a), "r": r},
     }
@@ -73,7 +76,8 @@ def _rotation_det(p):
     return {
         "key": det_rot2(math.radians(theta)),
         "label": f"det R({fmt(theta)}°)",
-        "slips": (Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ."),),
+        "slips": (Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ.",
+            name="determinant-1-would-reflection"),),
     }
 
 
@@ -100,10 +104,10 @@ def _whole_product(p):
             Slip(grid([[u * v for u, v in zip(rowa, rowb)] for rowa, rowb in zip(ra, rb)]),
                  "You multiplied entry by entry. A matrix product takes row i of the left matrix against "
                  f"column j of the right one: (1,1) is cos{fmt(a)}°·cos{fmt(b)}° − "
-                 f"sin{fmt(a)}°·sin{fmt(b)}°."),
+                 f"sin{fmt(a)}°·sin{fmt(b)}°.", name="multiplied-entry-entry-matrix"),
             Slip(grid(add(ra, rb)),
                  f"That is the sum R({fmt(a)}°) + R({fmt(b)}°). Composing rotations multiplies the matrices; "
-                 "the angles add, not the matrices."),
+                 "the angles add, not the matrices.", name="sum-r-r-composing"),
         ),
         "values": {"total": fmt(total), "turn": turn, "x_to": x_to, "y_to": y_to},
     }

@@ -71,10 +71,12 @@ def _offset(p, s, given):
     key = column((s["dx"], s["dy"]))
     dx, dy = (row[0] for row in chains.given(given, "d", key))
     slips = [Slip(column((-s["dx"], -s["dy"])), "That is the robot's position minus the landmark's: the offset is "
-                                                "the landmark minus the robot, dx = lx − x and dy = ly − y.")]
+                                                "the landmark minus the robot, dx = lx − x and dy = ly − y.",
+                                                    name="robot-s-position-minus")]
     if apart(key, column(s["landmark"]), slips[0].value):
         slips.append(Slip(column(s["landmark"]), "That is where the landmark is. Its offset from the robot "
-                                                 f"subtracts the robot's position ({fmt(p['x'])}, {fmt(p['y'])})."))
+                                                 f"subtracts the robot's position ({fmt(p['x'])}, {fmt(p['y'])}).",
+                                                     name="where-landmark-offset-robot"))
     return (dx, dy), {"key": key, "slips": tuple(slips)}
 
 
@@ -83,11 +85,11 @@ def _squared(d, given):
     dx, dy = d
     key = dx * dx + dy * dy
     slips = [Slip((dx + dy) ** 2, "That is (dx + dy)², the square of the sum. Square each offset on its own, "
-                                  "then add: q = dx² + dy².")]
+                                  "then add: q = dx² + dy².", name="dx-dy-2-square")]
     signed = dx * abs(dx) + dy * abs(dy)  # a negative offset squared as −(d²)
     if (dx < 0 or dy < 0) and apart(key, slips[0].value, signed):
         slips.append(Slip(signed, "A negative offset squared gives a positive number: (−a)² = a², so every "
-                                  "term of q = dx² + dy² adds."))
+                                  "term of q = dx² + dy² adds.", name="negative-offset-squared-gives"))
     return chains.given(given, "q", key), {"key": key, "slips": tuple(slips)}
 
 
@@ -118,7 +120,8 @@ def _predicted_range(p, given=None):
         remark = f"A right triangle with legs {fmt(a)} m and {fmt(b)} m: the range is its hypotenuse."
     return {
         "key": r,
-        "slips": (Slip(float(q), "That is q = dx² + dy², the squared range. Take its square root."),),
+        "slips": (Slip(float(q), "That is q = dx² + dy², the squared range. Take its square root.",
+            name="q-dx2-dy2-squared"),),
         "steps": {"d": offset, "q": squared},
         "values": {**s["values"], "remark": remark,
                    "next41": ("Exercise 4.4 compares this range with a measurement." if s["r"] == _H_PRED[0]
@@ -136,11 +139,11 @@ def _predicted_bearing(p, given=None):
     phi = bearing_of(dx, dy)  # the learner's own offset may be (0, 0): then no bearing is defined
     turn = 2 * math.pi
     slips = [Slip(math.atan2(dx, dy), "The arguments are swapped. atan2 takes (dy, dx): the angle is measured "
-                                      "from the x-axis.")]
+                                      "from the x-axis.", name="phi-arguments-swapped")]
     if dx < 0 and apart(phi, slips[0].value, math.atan(dy / dx), turn=turn):
         slips.append(Slip(math.atan(dy / dx), "That is atan(dy/dx), which cannot tell a landmark behind the robot "
                                               "(dx < 0) from one ahead of it: it is off by π. atan2(dy, dx) looks at "
-                                              "both signs."))
+                                              "both signs.", name="atan-dy-dx-which"))
     rad = chains.given(given, "phi", phi)
     deg = math.degrees(rad)
     return {
@@ -148,7 +151,7 @@ def _predicted_bearing(p, given=None):
         "slips": (
             Slip(math.degrees(math.atan2(dx, dy)),
                  f"The arguments are swapped. atan2 takes (dy, dx): atan2({fmt(dy)}, {fmt(dx)}), measured from the "
-                 "x-axis."),
+                 "x-axis.", name="arguments-swapped"),
         ),
         "steps": {"d": offset, "phi": {"key": phi, "slips": tuple(slips)}},
         "values": {**s["values"], "rad_rel": relation(phi), "deg": fmt(deg),
@@ -174,18 +177,19 @@ def _range_slope(p, given=None):
     return {
         "key": -mine,
         "slips": (
-            Slip(-dy / root, "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx."),
+            Slip(-dy / root, "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx.",
+                name="h-1-2-dy"),
             Slip(slope, "The sign is flipped: that is ∂r/∂dx = dx/√q. The robot's x enters through dx = lx − x, "
-                        "so the chain rule multiplies by ∂dx/∂x = −1: H(1,1) = −dx/√q."),
+                        "so the chain rule multiplies by ∂dx/∂x = −1: H(1,1) = −dx/√q.", name="sign-flipped-r-dx"),
             Slip(-dx / (root * root), f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
-                                      "it is the bearing row that divides by q."),
+                                      "it is the bearing row that divides by q.", name="divided-q-range-row"),
         ),
         "steps": {"d": offset, "drdx": {"key": slope, "slips": kept_slips(slope, (
             (dx / (root * root), "That divides by q. The range is √q, and the derivative of √q by dx is "
-                                 "(1/(2√q))·2dx = dx/√q."),
-            (dy / root, "That is ∂r/∂dy = dy/√q. The derivative by dx has dx on top."),
+                                 "(1/(2√q))·2dx = dx/√q.", "divides-q-range-q"),
+            (dy / root, "That is ∂r/∂dy = dy/√q. The derivative by dx has dx on top.", "r-dy-dy-q"),
             (-slope, "That already has the minus of ∂dx/∂x = −1: that is H(1,1) itself. This step is the "
-                     "derivative by dx alone, dx/√q."),
+                     "derivative by dx alone, dx/√q.", "already-has-minus-dx"),
         ))}},
         "values": {**s["values"], "h11": fmt(h11), "size": fmt(abs(h11)), "drel": relation(h11),
                    "cos_rel": relation(abs(h11), math.cos(math.radians(shown(deg)))),
@@ -204,8 +208,10 @@ def _range_innovation(p, given=None):
         "key": y[0],
         "slips": (
             Slip(innovation((hr,), (p["zr"],))[0],
-                 "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
-            Slip(y[1], "That is the bearing innovation, the second component. The range is the first."),
+                 "The sign is flipped. The innovation is z − h(x): measured minus predicted.",
+                     name="sign-flipped-innovation-z"),
+            Slip(y[1], "That is the bearing innovation, the second component. The range is the first.",
+                name="bearing-innovation-second-component"),
         ),
         "values": {"zr1": fixed(p["zr"], places), "hr1": fixed(hr, places), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
                    "from41": "(its range is exercise 4.1's)" if _range_of_41(p) is not None else "",

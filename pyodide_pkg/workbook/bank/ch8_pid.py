@@ -24,8 +24,8 @@ def _p_step(p):
         "slips": (
             Slip(p_term(p["actual"] - p["target"], p["Kp"]),
                  f"Sign: the error is target − actual = {'+' if e > 0 else '−'}{fmt(abs(e))}, so the push is "
-                 f"{'positive' if e > 0 else 'negative'}, toward the target."),
-            Slip(e, "That is the error e. The output multiplies it by Kp."),
+                 f"{'positive' if e > 0 else 'negative'}, toward the target.", name="sign-error-target-actual"),
+            Slip(e, "That is the error e. The output multiplies it by Kp.", name="error-e-output-multiplies"),
         ),
         "values": {"e": fmt(e), "pe": paren(e), "u": fmt(u)},
     }
@@ -108,12 +108,14 @@ def _pid_output(p):
         "key": u,
         "slips": (
             Slip(P + I, f"You left out the D term. The error fell from {fmt(e1)} to {fmt(e2)}, so "
-                        f"Kd·(e[2] − e[1])/dt = {prose(D)}."),
-            Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times),
-            Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
+                        f"Kd·(e[2] − e[1])/dt = {prose(D)}.", name="left-out-d-term"),
+            Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times,
+                name="left-out-i-term"),
+            Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking.",
+                name="d-sign-kd-e"),
             Slip(P + Ki * e2 * dt + D,
                  f"The I term integrates every error so far ({fmt(e0)} + {fmt(e1)} + {fmt(e2)}), not only the current "
-                 "one."),
+                 "one.", name="i-term-integrates-every"),
         ),
         "values": {**t["values"], "Ds": signed(D), "u": fmt(u), "pile": fmt((e0 + e1 + e2) * dt),
                    "more": _ADDS[_i_share(I, P)]},
@@ -130,10 +132,11 @@ def _falling_error_d_term(p):
             Slip(
                 -D,
                 f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {prose(ek - ep)}. "
-                "A falling error gives a negative D.",
+                "A falling error gives a negative D.", name="sign-flipped-d-term"
             ),
-            Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}."),
-            Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second."),
+            Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}.", name="forgot-divide-dt"),
+            Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second.",
+                name="divide-dt-don-t"),
         ),
         "values": {
             "de": fmt(ek - ep),
@@ -165,12 +168,13 @@ def _pid_terms(p):
         "slips": (
             Slip(column((P, p["Ki"] * e2 * p["dt"], D)),
                  f"The I term integrates every error so far, {fmt(e0)} + {fmt(e1)} + {fmt(e2)}, not only the current "
-                 "one."),
+                 "one.", name="i-term-integrates-every"),
             Slip(column((P, I, -D)),
                  "The D term has the wrong sign: it is Kd·(e[2] − e[1])/dt, new minus old, and the error is "
-                 "shrinking."),
+                 "shrinking.", name="d-term-has-wrong"),
             Slip(column((P, i_term(t["errors"][:2], p["Ki"], p["dt"]), D)),
-                 f"The I term stops one step short: the integral includes the current error e[2] = {fmt(e2)}."),
+                 f"The I term stops one step short: the integral includes the current error e[2] = {fmt(e2)}.",
+                     name="i-term-stops-step"),
         ),
         "values": {**t["values"], "u": fmt(pid_sequence(t["errors"], **t["gains"])[2]), "push": _PUSHES[_i_share(I, P)],
                    "lead": "Take exercise 8.2 again" if at_default else "Take three PID steps",
