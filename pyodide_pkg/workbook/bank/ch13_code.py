@@ -39,9 +39,7 @@ _STARTER = (
     "def align_2d(P, Q):\n"
     '    """R (2 x 2, det +1) and t with R p + t as close to q as can be, over the pairs (p, q)."""\n'
     "    # Your code here: centroids, H, the angle, then t. This only moves the centroids together.\n"
-    "    n = len(P)\n"
-    "    t = [sum(q[0] for q in Q) / n - sum(p[0] for p in P) / n,\n"
-    "         sum(q[1] for q in Q) / n - sum(p[1] for p in P) / n]\n"
+    "    t = [sum(q[k] for q in Q) / len(Q) - sum(p[k] for p in P) / len(P) for k in (0, 1)]\n"
     "    return [[1.0, 0.0], [0.0, 1.0]], t\n"
 )
 
