@@ -46,13 +46,12 @@ def point_sets(p) -> tuple[list[tuple[int, int]], list[tuple[int, int]]]:
     P = [(int(p[f"p{i}x"]), int(p[f"p{i}y"])) for i in (1, 2, 3)]
     c, s = math.cos(math.radians(p["turn"])), math.sin(math.radians(p["turn"]))
     x0, y0 = P[0]
-    Q = [(int(p["q1x"]), int(p["q1y"]))]
-    for x, y in P[1:]:
-        dx, dy = x - x0, y - y0
-        Q.append((Q[0][0] + c * dx - s * dy, Q[0][1] + s * dx + c * dy))
-    second = (round(Q[1][0]), round(Q[1][1]))
-    third = tuple(_nearest_congruent(Q[2][k], -(Q[0][k] + second[k])) for k in (0, 1))
-    return P, [Q[0], second, third]
+    first = (int(p["q1x"]), int(p["q1y"]))
+    exact = [(first[0] + c * (x - x0) - s * (y - y0), first[1] + s * (x - x0) + c * (y - y0)) for x, y in P[1:]]
+    second = (round(exact[0][0]), round(exact[0][1]))
+    third = (_nearest_congruent(exact[1][0], -(first[0] + second[0])),
+             _nearest_congruent(exact[1][1], -(first[1] + second[1])))
+    return P, [first, second, third]
 
 
 def _nearest_congruent(v: float, r: int) -> int:

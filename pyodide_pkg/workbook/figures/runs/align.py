@@ -48,7 +48,7 @@ def frame(d: Drawn) -> tuple[str, str]:
         c.dot(pt, 6, "wb-fig-c")
     said = d.message
     if mine is not None:
-        got = _moved(*mine, P)
+        got = _moved(mine[0], mine[1], P)
         if any(off_picture(c, g) for g in got):
             said = said or "some of your moved points lie beyond the picture's edge"
         shown = [inside(c, g) for g in got]
