@@ -18,7 +18,9 @@ from workbook.api import handle
 from workbook.contract import DATA, KINDS, OPS
 
 ROOT = Path(__file__).resolve().parents[2]
-CONTRACT_MD = (ROOT / "CONTRACT.md").read_text(encoding="utf-8")
+# CONTRACT.md is the index; its parts, one per audience, are contract/*.md: the prose is all of them.
+CONTRACT_MD = "\n".join(path.read_text(encoding="utf-8")
+                        for path in [ROOT / "CONTRACT.md", *sorted((ROOT / "contract").glob("*.md"))])
 NAME = re.compile(r"[A-Za-z][A-Za-z0-9_.-]*( [a-z]+)?")  # a name ("data-exercise-id", "variant texts")
 
 
@@ -52,7 +54,7 @@ def _table(heading: str) -> list[list[str]]:
 
 
 def test_the_build_functions_in_contract_md_are_the_banks():
-    # One row per Build exercise, its signature the bank's (a new Build exercise adds its row: README).
+    # One row per Build exercise, its signature the bank's (a new Build exercise adds its row: AUTHORING.md).
     table = {row[0]: row[1].strip("`") for row in _table("The Build exercises' functions")}
     assert table == {ex.id: ex.signature for ex in bank.all_exercises() if ex.kind == "build"}
     # The four of the shared guide's minimum keep their signatures.
@@ -88,3 +90,19 @@ def test_the_kinds_each_op_applies_to_are_what_the_worker_answers(op):
             if reply["ok"] or reply["error"]["kind"] != "wrong-op":
                 applies.add(ex.kind)
     assert applies == said
+
+
+def test_the_course_pages_names_are_in_the_contract():
+    """Every course-page name CONTRACT.md promises as stable (data-wb-… attributes, actions, fields,
+    cell states, ids) is in contract.json's ``course``, which the page code reads, and each is explained."""
+    course = DATA["course"]
+    promised = set(re.findall(r"data-wb-[a-z-]+", CONTRACT_MD))
+    assert promised <= set(course["attributes"].values()), sorted(promised - set(course["attributes"].values()))
+    for value in course["attributes"].values():
+        assert value in CONTRACT_MD, f"CONTRACT.md does not explain {value}"
+    for section in ("actions", "fields", "cells"):
+        missing = [name for name in course[section] if f'"{name}"' not in CONTRACT_MD and f"`{name}`" not in CONTRACT_MD]
+        assert not missing, f"CONTRACT.md does not explain course {section} {missing}"
+    for name in course["ids"]:
+        assert f"#{name}" in CONTRACT_MD, f"CONTRACT.md does not explain #{name}"
+    assert all(type(DATA["limits"][k]) is int for k in ("classCode", "student", "slipName", "code"))
