@@ -7,6 +7,7 @@ some input) and RIGHT ones (correct rewrites in another style). A program is eit
 
 from __future__ import annotations
 
+import holdout_programs_align
 import holdout_programs_ekf
 import holdout_programs_poses
 import holdout_programs_se2
@@ -355,3 +356,4 @@ def nav_step(x, P, u, z, landmark, waypoint, dt, Q, R):
 WRONG["4.10"], RIGHT["4.10"] = holdout_programs_ekf.WRONG, holdout_programs_ekf.RIGHT
 WRONG["5.10"], RIGHT["5.10"] = holdout_programs_se2.WRONG, holdout_programs_se2.RIGHT
 WRONG["10.8"], RIGHT["10.8"] = holdout_programs_poses.WRONG, holdout_programs_poses.RIGHT
+WRONG["13.9"], RIGHT["13.9"] = holdout_programs_align.WRONG, holdout_programs_align.RIGHT
