@@ -43,11 +43,11 @@ def _pairs(p):
         "slips": kept_slips(column(key), (
             (column([1.0, 2.0, 3.0]), "That pairs the points by their order in the lists. ICP does not know "
                                       "which point is which: each scan point is paired with the map point "
-                                      "nearest to it."),
+                                      "nearest to it.", "pairs-points-their-order"),
             (column(far), "Those are the farthest map points. Pair each scan point with the nearest one, the "
-                          "smallest squared distance in its row."),
+                          "smallest squared distance in its row.", "farthest-map-points-pair"),
             (column(plain), "Those are the nearest by |Δx| + |Δy|, the distance along the grid. ICP's nearest "
-                            "neighbour is by straight-line distance, √(Δx² + Δy²)."),
+                            "neighbour is by straight-line distance, √(Δx² + Δy²).", "nearest-x-y-distance"),
         )),
         "values": {"D": bmatrix(D), "mins": ",\\ ".join(fmt(min(row)) for row in D)},
     }

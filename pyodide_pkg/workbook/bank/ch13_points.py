@@ -94,12 +94,13 @@ def _centroid(p):
         "key": column(key),
         "slips": kept_slips(column(key), (
             (column((sx / 3, sy / 3)), "That divides the sums by 3. The centroid is the mean over all four points: "
-                                      "divide by n = 4."),
-            (column((sx, sy)), "Those are the sums of the coordinates. Divide each by the number of points, 4."),
+                                      "divide by n = 4.", "divides-sums-centroid-mean"),
+            (column((sx, sy)), "Those are the sums of the coordinates. Divide each by the number of points, 4.",
+             "sums-coordinates-divide-number"),
             (column(((min(x for x, _ in pts) + max(x for x, _ in pts)) / 2,
                      (min(y for _, y in pts) + max(y for _, y in pts)) / 2)),
              "That is the middle of the box around the points (halfway between the smallest and largest "
-             "coordinates). The centroid is the mean of all the points."),
+             "coordinates). The centroid is the mean of all the points.", "middle-box-around-points"),
         )),
         "values": {
             "xs": " + ".join(f"({fmt(x)})" if x < 0 else fmt(x) for x, _ in pts),
@@ -143,24 +144,24 @@ def _cross(p, given=None):
         "key": grid(H),
         "slips": kept_slips(grid(H), (
             (grid(Ht), "That is Σ q′ p′ᵀ, H transposed: in H = Σ p′ q′ᵀ row i comes from P and column j from Q, "
-                       "so H₁₂ = Σ p′ₓ q′ᵧ. The transposed H turns the angle's sign round."),
+                       "so H₁₂ = Σ p′ₓ q′ᵧ. The transposed H turns the angle's sign round.", "h-transposed"),
             (grid(raw), "That multiplies the points as given, Σ p qᵀ. Subtract the centroids first: H is built "
-                        "from the centred points p′ = p − p̄ and q′ = q − q̄."),
+                        "from the centred points p′ = p − p̄ and q′ = q − q̄.", "uncentred-points"),
             (grid([[v / n for v in row] for row in H]),
              f"That divides the sum by n = {n}. The rotation would come out the same, but this exercise's H is "
-             "the sum itself, Σ p′ q′ᵀ."),
+             "the sum itself, Σ p′ q′ᵀ.", "divided-by-n"),
         )),
         "steps": {
             "means": {"key": means_key, "slips": kept_slips(means_key, (
-                (sums, f"Those are the sums of the coordinates; divide each by n = {n}."),
+                (sums, f"Those are the sums of the coordinates; divide each by n = {n}.", "sums-not-means"),
                 (((qm_key[0], pm_key[0]), (qm_key[1], pm_key[1])),
-                 "The columns are swapped: p̄ comes first, then q̄."),
+                 "The columns are swapped: p̄ comes first, then q̄.", "columns-swapped-p-comes"),
             ))},
             "first": {"key": first_key, "slips": kept_slips(first_key, (
                 (grid(_outer(Qc[0], Pc[0])), "That is q′₁ p′₁ᵀ, transposed: the rows come from p′₁, the "
-                                             "columns from q′₁."),
+                                             "columns from q′₁.", "first-product-transposed"),
                 (grid(_outer(P[0], Q[0])), "That multiplies p₁ and q₁ as given. Subtract the centroids first: "
-                                           "p′₁ = p₁ − p̄ and q′₁ = q₁ − q̄."),
+                                           "p′₁ = p₁ − p̄ and q′₁ = q₁ − q̄.", "uncentred-first-product"),
             ))},
         },
         "values": {

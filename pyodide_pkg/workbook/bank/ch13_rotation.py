@@ -52,12 +52,12 @@ def _angle(p):
         "key": key,
         "slips": kept_slips(key, (
             (-key, "That is atan2(H₂₁ − H₁₂, H₁₁ + H₂₂), from H transposed: the turn that takes Q back onto P. "
-                   "Here R maps P onto Q, so θ = atan2(H₁₂ − H₂₁, H₁₁ + H₂₂)."),
+                   "Here R maps P onto Q, so θ = atan2(H₁₂ − H₂₁, H₁₁ + H₂₂).", "h-transposed-angle"),
             (_deg(math.atan(s / c)) if c else None,
              "That is arctan(s/c), which cannot tell the quadrants apart: H₁₁ + H₂₂ is negative here, so the "
-             "turn is more than 90° either way. Use atan2(s, c)."),
+             "turn is more than 90° either way. Use atan2(s, c).", "arctan-s-c-which"),
             (_deg(math.atan2(c, s)), "That swaps atan2's arguments: the sine part, H₁₂ − H₂₁, comes first, "
-                                     "then the cosine part, H₁₁ + H₂₂."),
+                                     "then the cosine part, H₁₁ + H₂₂.", "swaps-atan-s-arguments"),
         ), turn=360),
         "values": {"h21p": paren(H[1][0]), "h22p": paren(H[1][1]), "sv": fmt(s), "cv": fmt(c),
                    "from132": ("the H of exercise 13.2's scans" if tuple(p[n] for n in _H_NAMES) == _H_DEFAULT
@@ -117,20 +117,21 @@ def _svd(p, given=None):
         "slips": kept_slips(grid(key), (
             (grid(reflection), "That is V Uᵀ with the reflection left in (in the plane a reflection is "
                                "symmetric, so U Vᵀ is the same matrix): its determinant is −1, a mirror image, not a "
-                               "turn. Put d = det(V Uᵀ) = −1 in R = V diag(1, d) Uᵀ."),
+                               "turn. Put d = det(V Uᵀ) = −1 in R = V diag(1, d) Uᵀ.", "reflection-left-in"),
             (grid(_mul(_mul(U, [[1.0, 0.0], [0.0, d]]), _t(V))),
              "That is U diag(1, d) Vᵀ, the transpose of R: the rotation that maps Q back onto P. With "
-             "H = Σ p′ q′ᵀ = U S Vᵀ, the rotation from P onto Q is V diag(1, d) Uᵀ."),
+             "H = Σ p′ q′ᵀ = U S Vᵀ, the rotation from P onto Q is V diag(1, d) Uᵀ.", "u-and-v-swapped"),
         )),
         "steps": {
             "d": {"key": d_key, "slips": kept_slips(d_key, (
                 (-d_key, "det(V Uᵀ) = det V · det U, and one of the two is a reflection here (its determinant is "
-                         "−1), so V Uᵀ is a reflection: d = −1."),
+                         "−1), so V Uᵀ is a reflection: d = −1.", "d-sign-wrong"),
             ))},
             "Vd": {"key": Vd_key, "slips": kept_slips(Vd_key, (
                 (grid(_mul([[1.0, 0.0], [0.0, d]], V)), "That multiplies V's second row by d. diag(1, d) on the "
-                                                          "right of V scales V's second column."),
-                (grid(V), "That is V itself: its second column is still to be multiplied by d."),
+                                                          "right of V scales V's second column.",
+                                                           "d-on-the-wrong-side"),
+                (grid(V), "That is V itself: its second column is still to be multiplied by d.", "v-without-d"),
             ))},
         },
         "values": {"U": bmatrix(U), "V": bmatrix(V), "H": bmatrix(H), "hrel": relation_all(H),
@@ -180,23 +181,26 @@ def _translation(p, given=None):
         "slips": kept_slips(column(key), (
             (column((qm[0] - pm[0], qm[1] - pm[1])),
              "That is q̄ − p̄, the centroids subtracted with no turn: the translation must undo where the "
-             "rotation moves p̄, so t = q̄ − R p̄."),
+             "rotation moves p̄, so t = q̄ − R p̄.", "centroids-subtracted-unturned"),
             (column((qm[0] - Rt_p[0], qm[1] - Rt_p[1])),
-             "That turns p̄ by Rᵀ, the turn of −θ. R maps P onto Q: t = q̄ − R(θ) p̄."),
+             "That turns p̄ by Rᵀ, the turn of −θ. R maps P onto Q: t = q̄ − R(θ) p̄.", "turned-by-transpose"),
             (column((pm[0] - Rt_q[0], pm[1] - Rt_q[1])),
              "That is p̄ − Rᵀ q̄, the translation of the inverse map (from Q back onto P). This exercise's R and "
-             "t map P onto Q."),
-            (column((-key[0], -key[1])), "The sign is turned round: t = q̄ − R p̄, Q's centroid minus P's turned one."),
+             "t map P onto Q.", "inverse-map-translation"),
+            (column((-key[0], -key[1])), "The sign is turned round: t = q̄ − R p̄, Q's centroid minus P's turned one.",
+             "sign-turned-round-t"),
         )),
         "steps": {
             "R": {"key": R_key, "slips": kept_slips(R_key, (
                 (grid(_t(R_key)), "That is R(−θ), the transpose: the minus sign belongs in the first row, "
-                                  "R(θ) = [cos θ, −sin θ; sin θ, cos θ]."),
-                (grid(rot(theta)), f"Those are the cosine and sine of {fmt(theta)} radians. θ is in degrees."),
+                                  "R(θ) = [cos θ, −sin θ; sin θ, cos θ].", "r-transposed"),
+                (grid(rot(theta)), f"Those are the cosine and sine of {fmt(theta)} radians. θ is in degrees.",
+                 "radians-not-degrees"),
             ))},
             "Rp": {"key": column(Rp_key), "slips": kept_slips(column(Rp_key), (
-                (column(Rt_p), "That turns p̄ by −θ (Rᵀ in place of R). R(θ) = [cos θ, −sin θ; sin θ, cos θ]."),
-                (column(pm), "That is p̄ itself. Turn it by R(θ) first."),
+                (column(Rt_p), "That turns p̄ by −θ (Rᵀ in place of R). R(θ) = [cos θ, −sin θ; sin θ, cos θ].",
+                 "rp-turned-by-transpose"),
+                (column(pm), "That is p̄ itself. Turn it by R(θ) first.", "p-bar-unturned"),
             ))},
         },
         "values": {
