@@ -53,11 +53,11 @@ function field(label, input, help) {
   return el("div", { className: "wb-course-field" }, ...parts);
 }
 
-// An exercise whose right answer is the same for every student (manifest.sameAnswer, from the bank)
+// An exercise whose right answer students may share (manifest.sameAnswer, from the bank: the same for all, or from a short list)
 // says so beside its box, with the reason: per-student numbers do not stop copying there.
 function sameNote(why) {
   if (!why) return "";
-  const note = el("span", { className: "wb-teach-same", textContent: ` (same answer for every student: ${why})` });
+  const note = el("span", { className: "wb-teach-same", textContent: ` (students may share this answer: ${why})` });
   note.setAttribute(A.sameAnswer, "");
   return note;
 }

@@ -71,6 +71,8 @@ EXERCISES = (
     Derive(
         id="13.6",
         title="One ICP pairing: nearest neighbours",
+        same_answer=("A pairing of three scan points with four map points: at most 64 answers, so some students "
+                     "share one."),
         spec=matrix(label="the map point paired with each scan point (j₁, j₂, j₃)ᵀ", names=("j1", "j2", "j3")),
         vary=Vary(_pairs, *(Param(f"s{i}{a}", _SCAN[i - 1][k], 0, 5, 1) for i in (1, 2, 3) for k, a in enumerate("xy")),
                   *(Param(f"m{i}{a}", _MAP[i - 1][k], 0, 5, 1) for i in (1, 2, 3, 4) for k, a in enumerate("xy")),

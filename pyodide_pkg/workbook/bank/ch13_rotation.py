@@ -233,6 +233,8 @@ EXERCISES = (
     Derive(
         id="13.4",
         title="The rotation from the SVD, without the mirror",
+        same_answer=("R is built from exact turns of two Pythagorean triangles (3-4-5 and 7-24-25), a short "
+                     "list of rotations: some students of a class share one."),
         spec=matrix(label="R"),
         vary=Vary(_svd, Choice("uc", 0.6, _U_ENTRIES), Choice("us", 0.8, _U_ENTRIES), Choice("du", 1, (1, -1)),
                   Choice("vc", 0.28, _V_ENTRIES), Choice("vs", 0.96, _V_ENTRIES), Choice("dv", -1, (1, -1)),
