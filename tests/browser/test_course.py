@@ -193,9 +193,9 @@ def test_class_page_regrades_three_learners(page, site_url):
     assert slip_rows.first.get_attribute("data-wb-slip").startswith("slip: ")
     assert slip_rows.first.locator("td").all_text_contents()[:2] == ["2", "3"]
     # Sorting by a column, from the keyboard.
-    page.locator("[data-wb-sort='verified']").focus()
+    page.locator("[data-wb-sort='score']").focus()
     page.keyboard.press("Enter")
-    assert page.locator("th:has([data-wb-sort='verified'])").get_attribute("aria-sort") == "ascending"
+    assert page.locator("th:has([data-wb-sort='score'])").get_attribute("aria-sort") == "ascending"
     assert page.locator("tbody tr[data-wb-student]").first.get_attribute("data-wb-student") in ("ben", "cai")
     page.keyboard.press("Enter")
     assert page.locator("tbody tr[data-wb-student]").first.get_attribute("data-wb-student") == "ana"
