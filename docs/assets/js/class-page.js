@@ -17,6 +17,7 @@ import { withSandbox } from "./sandbox-client.js";
 
 const LEARNERS_AT_ONCE = 4; // files graded side by side: the grader answers one while the sandbox runs another's code
 const ROWS_PER_TASK = 100; // table rows built per task before the event loop gets its turn
+const PAGE_ROWS = 100; // students shown at once: a bigger class is paged (a table of 1,000 rows lays out in one long task)
 const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield() : new Promise((r) => setTimeout(r, 0)));
 
 function renderMistakes(rows, ids) {
@@ -89,12 +90,34 @@ export async function initClassPage(shared, siteRoot) {
   const gradebook = button("Download the gradebook (CSV, one row per student)", "gradebook");
   const results = el("div", { className: "wb-class-results" });
   root.replaceChildren(zone, status, version, problems, el("div", { className: "wb-course-actions" }, csv, gradebook), results);
-  const state = { learners: [], rows: [], ids: [], sort: { key: "student", dir: 1 }, trs: new Map(), seq: 0 };
+  const state = { learners: [], rows: [], ids: [], sort: { key: "student", dir: 1 }, trs: new Map(), seq: 0, page: 0 };
+  const pager = el("nav", { className: "wb-class-pager", hidden: true });
+  pager.setAttribute("aria-label", "Pages of students");
+  const shown = el("span", { role: "status" });
+  const previous = el("button", { type: "button", className: "md-button", textContent: `Previous ${PAGE_ROWS}` });
+  const next = el("button", { type: "button", className: "md-button", textContent: `Next ${PAGE_ROWS}` });
+  previous.dataset.wbAction = "previous-students";
+  next.dataset.wbAction = "next-students";
+  pager.append(previous, shown, next);
   let drawn = Promise.resolve();
-  const placeRows = () => {
-    const body = results.querySelector(".wb-class-table tbody");
-    body?.append(...sortRows(state.rows, state.ids, state.sort).map((r) => state.trs.get(r.key)));
+  const pageOf = () => {
+    const pages = Math.max(1, Math.ceil(state.rows.length / PAGE_ROWS));
+    state.page = Math.min(Math.max(0, state.page), pages - 1);
+    const from = state.page * PAGE_ROWS;
+    const to = Math.min(state.rows.length, from + PAGE_ROWS);
+    pager.hidden = pages === 1;
+    shown.textContent = `Students ${from + 1}–${to} of ${state.rows.length}`;
+    previous.disabled = state.page === 0;
+    next.disabled = state.page === pages - 1;
+    return sortRows(state.rows, state.ids, state.sort).slice(from, to).map((r) => state.trs.get(r.key));
   };
+  const placeRows = () => results.querySelector(".wb-class-table tbody")?.replaceChildren(...pageOf());
+  const turn = (by) => {
+    state.page += by;
+    placeRows();
+  };
+  previous.addEventListener("click", () => turn(-1));
+  next.addEventListener("click", () => turn(1));
   const draw = async () => {
     state.rows = groupRows(state.learners);
     state.ids = order.filter((id) => state.learners.some((l) => l.cells[id]));
@@ -106,7 +129,7 @@ export async function initClassPage(shared, siteRoot) {
       await giveWay();
     }
     const stats = el("div", { className: "wb-class-worked" }, el("p", { textContent: "Working out which exercises worked…" }));
-    results.replaceChildren(el("h2", { textContent: "Students and exercises" }), legend(), tableRegion(state, sorted.map((r) => state.trs.get(r.key))),
+    results.replaceChildren(el("h2", { textContent: "Students and exercises" }), legend(), tableRegion(state, pageOf()), pager,
       el("h2", { textContent: "Which exercises worked" }), stats,
       el("h2", { textContent: "Most common mistakes" }), renderMistakes(state.rows, state.ids));
     csv.hidden = gradebook.hidden = false;
@@ -162,6 +185,7 @@ export async function initClassPage(shared, siteRoot) {
     status.textContent = `${state.learners.length} file${state.learners.length === 1 ? "" : "s"} read and re-graded, ${state.rows.length} student${state.rows.length === 1 ? "" : "s"} (${files.length} file${files.length === 1 ? "" : "s"} handed to the page in ${seconds} s).`;
     root.dataset.wbSeconds = seconds;
     root.dataset.wbRows = String(state.rows.length);
+    root.dataset.wbVerified = String(state.rows.reduce((n, r) => n + Object.values(r.learner.cells).filter((c) => c.verified).length, 0));
     root.dataset.wbGraded = String(state.learners.length);
   }
   root.wbTake = take; // the bench hands files in this way

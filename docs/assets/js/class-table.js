@@ -1,7 +1,7 @@
 // The class page's table (class-page.js): one compact row per student, a score (solved / set),
 // the hand-in's time, and one mark per exercise that reads at a glance: a symbol and a colour
 // (never the colour alone), its words for a screen reader, and the cell's details on demand
-// (a <details> per cell, keyboard operable). The header row and the first column stay in view
+// (each mark a button: its box is built when pressed, so 1,000 rows stay light). The header row and the first column stay in view
 // while the table scrolls inside its own focusable region.
 
 import { el } from "./progress-view.js";
@@ -45,9 +45,16 @@ function detailLines(c) {
     out.push(`${CHANGED.symbol} ${CHANGED.text}: ${c.changes.length ? c.changes.map((x) => `an answer the student's page marked ${x.was} grades ${x.now} now`).join("; ")
       : "the student's page showed it solved, its code does not pass now"}`);
   }
-  for (const [key, n] of Object.entries(c.slips)) out.push(`slip${n > 1 ? ` (${n}×)` : ""}: ${c.slipText[key] ?? key}`);
+  for (const [key, n] of Object.entries(c.slips)) out.push(`slip${n > 1 ? ` (${n}×)` : ""}: ${(c.slipText[key] ?? key).replace(/^slip: /, "")}`);
   if (c.note) out.push(c.note);
   return out;
+}
+
+/** A button that opens its cell's details (built when pressed, `toggleCell`). */
+function opener(...children) {
+  const button = el("button", { type: "button", className: "wb-class-open" }, ...children);
+  button.setAttribute("aria-expanded", "false");
+  return button;
 }
 
 function markCell(l, id, label) {
@@ -56,23 +63,16 @@ function markCell(l, id, label) {
   const td = el("td", {});
   td.dataset.wbCell = state;
   td.dataset.wbExercise = id;
-  const mark = el("span", { className: "wb-class-mark" }, symbol(MARKS[state].symbol),
-    el("span", { className: "wb-sr-only", textContent: `${label}, ${id}: ${text}` }));
+  const mark = [symbol(MARKS[state].symbol), el("span", { className: "wb-sr-only", textContent: `${label}, ${id}: ${text}` })];
   if (c?.changed) {
     td.dataset.wbChanged = "true";
-    mark.append(symbol(CHANGED.symbol, "wb-class-changed"), el("span", { className: "wb-sr-only", textContent: `, ${CHANGED.text}` }));
+    mark.push(symbol(CHANGED.symbol, "wb-class-changed"), el("span", { className: "wb-sr-only", textContent: `, ${CHANGED.text}` }));
   }
-  if (!c) {
-    td.append(mark);
-    return td;
-  }
-  const pop = el("div", { className: "wb-class-pop" }, el("p", { className: "wb-class-pop-title", textContent: `${label} · ${id}: ${text}` }),
-    ...detailLines(c).map((t) => el("p", { className: "wb-class-detail", textContent: t })));
-  td.append(el("details", { className: "wb-class-cell" }, el("summary", {}, mark), pop));
+  td.append(c ? opener(...mark) : el("span", { className: "wb-class-mark" }, ...mark));
   return td;
 }
 
-function studentCell(row, ids) {
+function studentCell(row) {
   const th = el("th", { scope: "row" });
   const name = el("span", { className: "wb-class-name", textContent: row.label });
   if (!row.flags.length) {
@@ -84,14 +84,44 @@ function studentCell(row, ids) {
     b.dataset.wbFlag = f.kind;
     return b;
   });
-  const list = el("ul", {}, ...row.flags.map((f) => el("li", { textContent: f.text })));
-  const older = row.others.map((o) => el("li", { textContent: `${o.file}: handed in ${shownTime(o.handedIn)}, ${scoreOf(o, ids)} of ${setOf(o, ids)} solved (${ids.filter((id) => o.cells[id])
-    .map((id) => `${id} ${MARKS[cellState(o.cells[id]).state].symbol}`).join(", ")})` }));
-  const pop = el("div", { className: "wb-class-pop" }, list, ...(older.length ? [el("p", { textContent: "Its other files:" }), el("ul", {}, ...older)] : []));
-  th.append(el("details", { className: "wb-class-cell" }, el("summary", {}, name, ...badges,
-    el("span", { className: "wb-sr-only", textContent: ` (${row.flags.map((f) => f.kind.replace(/-/g, " ")).join(", ")})` })), pop));
+  th.append(opener(name, ...badges, el("span", { className: "wb-sr-only", textContent: ` (${row.flags.map((f) => f.kind.replace(/-/g, " ")).join(", ")})` })));
   th.dataset.wbFlags = row.flags.map((f) => f.kind).join(" ");
   return th;
+}
+
+/** The details of the cell `button` opens: a student's flags and other files, or an exercise's mark. */
+function detailsOf(row, ids, id) {
+  if (!id) {
+    const older = row.others.map((o) => el("li", { textContent: `${o.file}: handed in ${shownTime(o.handedIn)}, ${scoreOf(o, ids)} of ${setOf(o, ids)} solved (${ids.filter((x) => o.cells[x])
+      .map((x) => `${x} ${MARKS[cellState(o.cells[x]).state].symbol}`).join(", ")})` }));
+    return [el("p", { className: "wb-class-pop-title", textContent: `${row.label}: ${row.learner.file}` }), el("ul", {}, ...row.flags.map((f) => el("li", { textContent: f.text }))),
+      ...(older.length ? [el("p", { textContent: "Its other files:" }), el("ul", {}, ...older)] : [])];
+  }
+  const c = row.learner.cells[id];
+  return [el("p", { className: "wb-class-pop-title", textContent: `${row.label} · ${id}: ${cellState(c).text}` }),
+    ...detailLines(c).map((t) => el("p", { className: "wb-class-detail", textContent: t }))];
+}
+
+/**
+ * Open (or close) the details of the cell whose button is `button`, in a box under it; one at
+ * a time (Escape closes it: tableRegion).
+ */
+export function toggleCell(button, row, ids) {
+  const cell = button.parentElement;
+  const open = cell.querySelector(".wb-class-pop");
+  for (const other of button.closest("table").querySelectorAll(".wb-class-pop")) closeCell(other);
+  if (open) return;
+  const pop = el("div", { className: "wb-class-pop" }, ...detailsOf(row, ids, cell.dataset.wbExercise));
+  cell.classList.add("wb-class-opened");
+  cell.append(pop);
+  button.setAttribute("aria-expanded", "true");
+}
+
+function closeCell(pop) {
+  const cell = pop.parentElement;
+  cell.classList.remove("wb-class-opened");
+  cell.querySelector(".wb-class-open")?.setAttribute("aria-expanded", "false");
+  pop.remove();
 }
 
 /** The <tr> of a row. */
@@ -103,8 +133,9 @@ export function rowElement(row, ids) {
   if (l.late !== null && l.late !== undefined) handed.dataset.wbLate = String(l.late);
   const score = el("td", { className: "wb-class-score", textContent: `${scoreOf(l, ids)} / ${setOf(l, ids)}` });
   score.dataset.wbScore = String(scoreOf(l, ids));
-  const tr = el("tr", {}, studentCell(row, ids), score, handed, ...ids.map((id) => markCell(l, id, row.label)));
+  const tr = el("tr", {}, studentCell(row), score, handed, ...ids.map((id) => markCell(l, id, row.label)));
   tr.dataset.wbStudent = row.label;
+  tr.dataset.wbRow = row.key;
   tr.dataset.wbKind = l.kind;
   return tr;
 }
@@ -151,6 +182,18 @@ export function tableRegion(state, trs) {
   const table = el("table", { className: "wb-class-table" },
     el("caption", { textContent: `${rows.length} student${rows.length === 1 ? "" : "s"} × ${ids.length} exercise${ids.length === 1 ? "" : "s"}` }),
     el("thead", {}, head), el("tbody", {}, ...trs), el("tfoot", {}, foot));
+  table.addEventListener("click", (event) => {
+    const button = event.target.closest?.(".wb-class-open");
+    const row = button && state.rows.find((r) => r.key === button.closest("tr").dataset.wbRow);
+    if (row) toggleCell(button, row, ids);
+  });
+  table.addEventListener("keydown", (event) => {
+    const pop = event.key === "Escape" && table.querySelector(".wb-class-pop");
+    if (!pop) return;
+    const button = pop.parentElement.querySelector(".wb-class-open");
+    closeCell(pop);
+    button?.focus();
+  });
   const region = el("div", { className: "wb-class-scroll wb-class-grid", tabIndex: 0, role: "region" }, table);
   region.setAttribute("aria-label", "The class's results");
   return region;
