@@ -137,11 +137,13 @@ serve: site
 dev: $(RUNTIME_STAMPS)
 	$(BIN)/mkdocs serve -a $(HOST):$(PORT)
 
-# ---- SCORM packages (README, "Use it in a course"): the built site/ zipped for an LMS ----
-# They zip site/ exactly as built, the same files `make test` tests (nothing is rebuilt for them).
+# ---- SCORM packages (docs/teaching/scorm.md): the built site/ zipped for an LMS ----
+# They zip site/ exactly as built, the same files `make test` tests (nothing is rebuilt for them): the
+# whole book in each version, and one package per chapter and version in dist/chapters/ (written with them).
 SCORM_ZIPS := dist/robotics-workbook-scorm12.zip dist/robotics-workbook-scorm2004.zip
 $(SCORM_ZIPS) &: site/.stamp scripts/scorm_package.py $(wildcard scripts/scorm/*.j2)
-	$(BIN)/python scripts/scorm_package.py --site site --out dist
+	rm -rf dist/chapters
+	$(BIN)/python scripts/scorm_package.py --site site --out dist --chapters
 
 scorm: $(SCORM_ZIPS)
 

@@ -30,6 +30,8 @@ await build({
 // The worker that stands in for the theme's search worker until search is wanted
 // (docs/assets/js/search-worker.js, docs/hooks/search_worker.py): a classic worker script too.
 await build({ ...common, entryPoints: { "search-worker": "docs/assets/js/search-worker.js" }, outdir: "docs/assets/dist", format: "iife" });
+// The SCORM packages' launcher pages (scripts/scorm/launch.html.j2, docs/assets/js/lms/launch.js): a classic script.
+await build({ ...common, entryPoints: { "lms-launch": "docs/assets/js/lms/launcher.js" }, outdir: "docs/assets/dist", format: "iife" });
 // The sandbox that runs learner code (docs/assets/js/sandbox.js): a classic worker script of its own.
 await build({
   ...common,

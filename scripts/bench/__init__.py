@@ -22,14 +22,18 @@ a timestamped copy, and a table to stdout.
 
 - NETWORK PROFILES (``--profiles localhost,10mbps,phone``, each NAME or
   NAME:RUNS): ``localhost`` is the plain server above and runs every phase;
-  ``10mbps`` (10 Mbps, 40 ms RTT) and ``phone`` (1.6 Mbps, 150 ms RTT, CPU x4
-  on the page's main thread) put one emulated link in front of everything the
-  browser fetches (a shared token bucket, a round trip per response, gzip as
-  GitHub Pages applies it) and measure a first visit only. On every profile, a
-  first visit of ours and of the baseline, alternating: time to ready, bytes on
-  the wire before ready and in all (until the service worker has stored the
-  site), files sent twice, largest contentful paint, total blocking time, and
-  the first grade right after ready (first_visit.py).
+  ``10mbps`` (10 Mbps, 40 ms RTT) and ``phone`` (8 Mbps, 40 ms RTT, and the
+  whole browser, workers included, on a quarter of one core: a CPU cgroup,
+  cpu_limit.py; CDP's main-thread throttling where no cgroup can be made) put
+  one emulated link in front of everything the browser fetches (a shared token
+  bucket, a round trip per response, gzip as GitHub Pages applies it) and
+  measure a first visit only. On every profile, a first visit of ours, of the
+  baseline and of the STOCK PAGE (chapter 0's Markdown on the stock theme,
+  stock_page.py), rotating which goes first: time to ready, bytes on the wire
+  before ready and in all (until the service worker has stored the site), files
+  sent twice, largest contentful paint, total blocking time (to ready, and to
+  load + 5 s beside the stock page's), and the first grade and first Build run
+  right after ready (first_visit.py).
 
     cd scripts && ../.venv/bin/python -m bench [--runs N] [--profiles localhost,10mbps:3,phone:2]
                                                [--checks 50] [--budget 2400]
@@ -42,7 +46,8 @@ profiles), ``phases`` and ``first_visit`` (what each phase does in the
 browser), ``browser`` (browsers, visits, waits), ``pagejs`` and ``js/`` (the
 in-page instrumentation), ``records`` (server log and page records to numbers),
 ``report`` and ``network_report`` (metrics, targets, tables, files),
-``baseline`` (the bare loadPyodide page), ``environment`` (machine, git,
+``baseline`` (the bare loadPyodide page), ``stock_page`` (the theme alone),
+``cpu_limit`` (the phone's CPU), ``environment`` (machine, git,
 snapshot, the native parser worst case).
 """
 

@@ -19,12 +19,23 @@ from . import ROOT
 from . import __doc__ as PACKAGE_DOC
 from .baseline import write_baseline
 from .browser import Browsers
-from .config import BASELINE_PATH, CACHE_CONTROL, CH0, CHROMIUM_ARGS, DEFAULT_PROFILES, GRADED, PROFILES, SITE
+from .config import (
+    BASELINE_PATH,
+    CACHE_CONTROL,
+    CH0,
+    CHROMIUM_ARGS,
+    DEFAULT_PROFILES,
+    GRADED,
+    PROFILES,
+    SITE,
+    STOCK_PATH,
+)
 from .environment import git_info, machine_info, parser_worst_case, run_figure_times, snapshot_info
 from .network_report import collect_network, network_targets
 from .phases import LOCAL_PHASES, Phases
 from .records import summary
 from .report import collect, evaluate_targets, print_report, write_results
+from .stock_page import build_stock
 
 
 def parse_args(argv=None) -> argparse.Namespace:
@@ -94,23 +105,25 @@ def measure(args, work: Path, deadline: float) -> dict:
     site_copy = work / "site"
     shutil.copytree(args.site, site_copy)
     baseline_files = write_baseline(site_copy, work / "baseline", BASELINE_PATH)
+    mounts = {BASELINE_PATH: work / "baseline", STOCK_PATH: build_stock(work / "stock")}
     seen = {"profiles": {}, "version": "", "executable": "", "external": [], "page_errors": [],
-            "baseline_files": baseline_files}
+            "baseline_files": baseline_files, "cpu_notes": {}}
     with sync_playwright() as pw:
         for name, runs in args.profiles.items():
-            measure_profile(args, pw, PROFILES[name], runs, site_copy, work / "baseline", deadline, seen)
+            measure_profile(args, pw, PROFILES[name], runs, site_copy, mounts, deadline, seen)
     return seen
 
 
-def measure_profile(args, pw, profile, runs: int, site: Path, baseline: Path, deadline: float, seen: dict) -> None:
+def measure_profile(args, pw, profile, runs: int, site: Path, mounts: dict, deadline: float, seen: dict) -> None:
     """One profile: its own server (link) and browsers (CPU); localhost runs the phases of today too."""
     from site_server import SiteServer
 
-    with SiteServer(site, mounts={BASELINE_PATH: baseline}, cache_control=CACHE_CONTROL, keep_alive=True,
+    with SiteServer(site, mounts=mounts, cache_control=CACHE_CONTROL, keep_alive=True,
                     link=profile.link) as server:
         if profile.link and profile.link.gzip:
             server.precompress()  # before the clock runs, as a real host has it ready
-        browsers = Browsers(pw, server, deadline, profile.cpu_slowdown)
+        browsers = Browsers(pw, server, deadline, profile.cpu_slowdown, profile.cpu_share)
+        seen["cpu_notes"][profile.name] = browsers.cpu_note
         link = "no emulation" if not profile.link else \
             f"{profile.link.bandwidth_bps / 1e6:g} Mbps, {profile.link.rtt_ms:g} ms RTT, gzip"
         print(f"bench: {profile.name} ({link}, CPU x{profile.cpu_slowdown:g}): {runs} run(s), "
@@ -119,7 +132,7 @@ def measure_profile(args, pw, profile, runs: int, site: Path, baseline: Path, de
         try:
             phases.run_all(args.phases if profile.name == "localhost" else [], runs)
         finally:
-            browsers.remove_profiles()
+            browsers.close()
     seen["profiles"][profile.name] = phases.runs
     seen["version"] = seen["version"] or browsers.version
     seen["executable"] = browsers.executable
@@ -147,7 +160,8 @@ def build_report(args, seen: dict, started: dt.datetime, t0: float, machine: dic
         "config": {"runs": args.runs, "checks": args.checks, "build_repeats": args.build_repeats,
                    "server": "Python ThreadingHTTPServer, HTTP/1.1 keep-alive, Cache-Control: max-age=600, "
                              "Last-Modified/If-Modified-Since, no compression (localhost profile)",
-                   "profiles": {name: profile_config(name, n) for name, n in args.profiles.items()},
+                   "profiles": {name: profile_config(name, n, seen["cpu_notes"].get(name))
+                                for name, n in args.profiles.items()},
                    "baseline_files": seen["baseline_files"],
                    "snapshot": snapshot_info(args.site),
                    "pages": {"startup": CH0, "grading": {k: f"{p} {i}" for k, (p, i) in GRADED.items()}}},
@@ -163,14 +177,12 @@ def build_report(args, seen: dict, started: dt.datetime, t0: float, machine: dic
     }
 
 
-def profile_config(name: str, runs: int) -> dict:
+def profile_config(name: str, runs: int, cpu_note: str | None) -> dict:
     p = PROFILES[name]
     link = None if p.link is None else {
         "bandwidth_mbps": p.link.bandwidth_bps / 1e6, "rtt_ms": p.link.rtt_ms, "gzip": p.link.gzip,
         "model": "one token bucket shared by every connection (16 KiB writes), one RTT before each response"}
-    return {"runs": runs, "link": link, "cpu_slowdown": p.cpu_slowdown,
-            "cpu_note": "CDP Emulation.setCPUThrottlingRate: the page's main thread only (Chromium refuses it "
-                        "for workers)" if p.cpu_slowdown > 1 else None,
+    return {"runs": runs, "link": link, "cpu_slowdown": p.cpu_slowdown, "cpu_note": cpu_note,
             "ready_timeout_ms": p.ready_timeout_ms, "precache_timeout_ms": p.precache_timeout_ms}
 
 

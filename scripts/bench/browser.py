@@ -10,7 +10,8 @@ from find_browser import find_browser
 from workbook.contract import ATTR
 
 from . import pagejs
-from .config import BASELINE_PATH, CHROMIUM_ARGS, DEAD_PROXY, READY_TIMEOUT_MS, SUBPATH
+from .config import BASELINE_PATH, CHROMIUM_ARGS, DEAD_PROXY, READY_TIMEOUT_MS, STOCK_PATH, SUBPATH
+from .cpu_limit import CpuLimit, open_limit
 from .records import attribute_long_tasks, net_summary
 
 RUNTIME = f"document.documentElement.getAttribute({ATTR.runtime!r})"
@@ -23,10 +24,11 @@ class BenchError(RuntimeError):
 class Browsers:
     """Launches Chromium (a new profile each time), opens pages, and visits the site."""
 
-    def __init__(self, pw, server, deadline: float, cpu_slowdown: float = 1.0):
+    def __init__(self, pw, server, deadline: float, cpu_slowdown: float = 1.0, cpu_share: float | None = None):
         self.pw, self.server = pw, server
         self.site = server.origin + SUBPATH
         self.baseline_url = server.origin + BASELINE_PATH
+        self.stock_url = server.origin + STOCK_PATH
         exe = find_browser(shell=False)  # the whole browser, as learners run it (the tests take the lighter shell)
         if not exe:
             raise BenchError("no Chromium found: install Debian's chromium (or `playwright install chromium`)")
@@ -34,10 +36,23 @@ class Browsers:
         self.version = ""
         self.service_workers = "allow"  # "block" measures the HTTP cache alone
         self.cpu_slowdown = cpu_slowdown  # > 1: CDP Emulation.setCPUThrottlingRate on every page
+        # A share of a core for the whole browser (workers included) where a cgroup can be made.
+        self.cpu_limit: CpuLimit | None = open_limit(exe, cpu_share) if cpu_share else None
+        if self.cpu_limit:
+            self.cpu_slowdown = 1.0  # the cgroup slows every thread; CDP on top would slow the main thread twice
+        self.cpu_note = (self.cpu_limit.describe() if self.cpu_limit else
+                         "CDP Emulation.setCPUThrottlingRate: the page's main thread only (Chromium refuses it for "
+                         "workers)" + ("; a CPU cgroup could not be made here" if cpu_share else "")
+                         if cpu_slowdown > 1 else None)
         self.external: list[str] = []
         self.page_errors: list[str] = []
         self.deadline = deadline  # time.monotonic(): phases after it are skipped
         self.profiles: list[str] = []  # removed after each phase (their browsers are closed by then)
+
+    def close(self) -> None:
+        self.remove_profiles()
+        if self.cpu_limit:
+            self.cpu_limit.close()
 
     def remove_profiles(self) -> None:
         while self.profiles:
@@ -51,7 +66,8 @@ class Browsers:
         profile = tempfile.mkdtemp(prefix="wb-bench-profile-")
         try:
             ctx = self.pw.chromium.launch_persistent_context(
-                profile, executable_path=self.executable, args=CHROMIUM_ARGS, headless=True, proxy=DEAD_PROXY,
+                profile, executable_path=str(self.cpu_limit.wrapper) if self.cpu_limit else self.executable,
+                args=CHROMIUM_ARGS, headless=True, proxy=DEAD_PROXY,
                 service_workers=self.service_workers)
         except Exception:
             shutil.rmtree(profile, ignore_errors=True)

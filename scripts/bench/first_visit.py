@@ -18,6 +18,7 @@ from .browser import BenchError, Browsers
 from .config import CH0, DERIVE_INPUT, GRADE_TIMEOUT_MS, GRADED, Profile
 from .pagejs import exercise, role
 from .records import bytes_before, fetched_twice, largest_contentful_paint, net_summary, total_blocking_time
+from .stock_page import SETTLE_MS
 
 OFFLINE = f"document.documentElement.getAttribute({ATTR.offline!r})"
 OFFLINE_DONE = tuple(s for s in DATA["offlineStates"] if s != "caching")  # stored, or cannot be
@@ -52,6 +53,7 @@ def ours(b: Browsers, profile: Profile) -> dict:
         offline = wait_offline(page, profile.precache_timeout_ms)
         quiet = b.server.wait_quiet(2.0, 60.0)
         out = _numbers(b, page, mark, rec)
+        out["tbt_load5_ms"] = tbt_to_load_plus(page)
         out.update(first_grade_ms=first_grade["ms"], first_grade_state=first_grade["state"],
                    first_build_ms=first_build["ms"], first_build_after_ready_ms=first_build["ready_to_verdict_ms"],
                    first_build_sandbox=first_build["sandbox"],
@@ -70,6 +72,29 @@ def baseline(b: Browsers, profile: Profile) -> dict:
         quiet = b.server.wait_quiet(2.0, 60.0)
         out = _numbers(b, page, mark, rec)
         out["quiet"] = quiet
+        page.close()
+        return out
+    finally:
+        ctx.close()
+
+
+def tbt_to_load_plus(page) -> float | None:
+    """Total blocking time from the navigation to the load event + SETTLE_MS (the stock page's window)."""
+    snap = pagejs.run(page, "snapshot")
+    load = (snap.get("nav") or {}).get("load")
+    if not load:
+        return None
+    return total_blocking_time(snap, load + SETTLE_MS)
+
+
+def stock(b: Browsers, profile: Profile) -> dict:
+    """The stock theme's page (stock_page.py): the theme's own blocking, to load + SETTLE_MS."""
+    ctx = b.new_context()
+    try:
+        page = b.new_page(ctx)
+        page.goto(b.stock_url, wait_until="load", timeout=profile.ready_timeout_ms)
+        page.wait_for_timeout(SETTLE_MS)
+        out = {"tbt_load5_ms": tbt_to_load_plus(page), "lcp_ms": largest_contentful_paint(pagejs.run(page, "snapshot"))}
         page.close()
         return out
     finally:

@@ -242,14 +242,18 @@ class Phases:
     def first_visit_baseline(self, run: dict) -> None:
         run["first_visit_baseline"] = first_visit.baseline(self.b, self.profile)
 
+    def first_visit_stock(self, run: dict) -> None:
+        run["first_visit_stock"] = first_visit.stock(self.b, self.profile)
+
     # -- all of them, `runs` times ------------------------------------------------
     def run_all(self, names: list[str], runs: int) -> list[dict]:
-        """`names` (of LOCAL_PHASES) then the first visits, ours and the baseline's
-        alternating which goes first from run to run."""
+        """`names` (of LOCAL_PHASES) then the first visits, ours, the baseline's and the stock page's,
+        rotating which goes first from run to run."""
         local = [name for name in LOCAL_PHASES if name in names]
         for i in range(runs):
-            pair = ["first_visit", "first_visit_baseline"]
-            order = local + (pair if i % 2 == 0 else pair[::-1])
+            # ours, the baseline and the stock page, each run starting one further along
+            three = ["first_visit", "first_visit_baseline", "first_visit_stock"]
+            order = local + three[i % 3:] + three[:i % 3]
             run: dict = {"index": i + 1, "profile": self.profile.name, "errors": {}}
             for name in order:
                 self.run_phase(run, name, getattr(self, name))

@@ -31,7 +31,9 @@ from workbook.number_format import fmt
 SPREAD = True  # its tests share nothing: the test processes share them out (conftest.py)
 AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
-EVERY_PAGE = [*PAGES, "practise/", "performance/"]  # the last is the developers' page, out of the menu
+TEACHING = ["teaching/", "teaching/hosting/", "teaching/assignments/", "teaching/class-page/", "teaching/scorm/",
+            "teaching/privacy/"]  # the teacher's guide (its two tools, teach/ and class/, are test_course's)
+EVERY_PAGE = [*PAGES, "practise/", *TEACHING, "performance/"]  # the last is the developers' page, out of the menu
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 
 

@@ -28,7 +28,7 @@ def program(ex, spec) -> str:
 
 
 def test_every_build_exercise_has_a_hold_out():
-    assert set(WRONG) == set(RIGHT) == set(BUILDS) and len(BUILDS) >= 12  # every Build exercise (README: "Adding a Build exercise")
+    assert set(WRONG) == set(RIGHT) == set(BUILDS) and len(BUILDS) >= 12  # every Build exercise (AUTHORING.md: "Adding a Build exercise")
     assert all(len(WRONG[i]) + len(RIGHT[i]) >= 8 for i in BUILDS)
     assert sum(len(WRONG[i]) + len(RIGHT[i]) for i in BUILDS) >= 120
 

@@ -4,7 +4,7 @@
 ``docs/assets/js/boot.js`` and the build scripts use beyond Pyodide's public API,
 with a pattern to find it in the file of the npm package it lives in. When a new
 Pyodide drops or changes one, this test names it and what depends on it
-(README: "Upgrading Pyodide").
+(DEVELOPING.md: "Upgrading Pyodide").
 """
 
 from __future__ import annotations
@@ -51,12 +51,12 @@ def test_the_list_is_for_the_vendored_version():
     version = json.loads((PYODIDE / "package.json").read_text())["version"]
     assert internals()["pyodide"] == version, (
         f"node_modules has Pyodide {version}, the internals were checked for {internals()['pyodide']}: "
-        "follow README's 'Upgrading Pyodide', then set 'pyodide' in docs/assets/js/pyodide-internals.json")
+        "follow DEVELOPING.md's 'Upgrading Pyodide', then set 'pyodide' in docs/assets/js/pyodide-internals.json")
 
 
 def test_every_internal_the_boot_relies_on_is_still_there(vendored):
     gone = missing(internals()["internals"], vendored)
-    assert not gone, ("the vendored Pyodide changed internals the boot relies on (README: 'Upgrading Pyodide'):\n  - "
+    assert not gone, ("the vendored Pyodide changed internals the boot relies on (DEVELOPING.md: 'Upgrading Pyodide'):\n  - "
                       + "\n  - ".join(gone))
 
 

@@ -1,4 +1,4 @@
-// An assignment link (README, "Assignment links"): the class code, the exercises and an
+// An assignment link (docs/teaching/assignments.md): the class code, the exercises and an
 // optional due date, in the address's hash (#class=ROB101&ex=0.1,0.2&due=2026-12-01), so
 // that no server ever sees them. Read and written here only; the learner's name or student
 // number is kept on their device (studentKey), never in the link.

@@ -1,4 +1,4 @@
-// Using the workbook in a course (README, "Use it in a course"): the teacher's page that
+// Using the workbook in a course (the teacher's guide, docs/teaching/): the teacher's page that
 // makes assignment links, the learner's assignment page, and the class page.
 import { initAssignment } from "./assignment-page.js";
 import { initClassPage } from "./class-page.js";

@@ -18,16 +18,20 @@ import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
 import { strayVariantLinks, strayVariantTargets } from "./variants.js";
 import { loadManifest } from "./progress-view.js";
 import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
-import { findApi } from "./lms/api.js";
+import { findApi, findLaunch } from "./lms/api.js";
+import { learnerProgress } from "./lms/learner.js";
 import { renderMath } from "./math.js";
 import { initSearchStart } from "./search-start.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
-const progress = new Progress(siteRoot);
-// In an LMS (the SCORM package, lms/): the session opens and merges the LMS's copy of the
-// progress before any exercise is drawn (initPage waits for it); the hosted site loads none of it.
-const inLms = Boolean(findApi(window));
-const lmsSession = inLms ? import("./lms/session.js").then((m) => m.connectLms(progress)) : null;
+// In an LMS (the SCORM package, lms/): the page keeps the record of the learner the LMS names
+// (the launcher's key, never the hosted site's record) and reports through the launcher's one
+// session, which merges the LMS's copy of the progress before any exercise is drawn (initPage
+// waits for it); the hosted site loads none of it.
+const launch = findLaunch(window);
+const inLms = Boolean(launch || findApi(window));
+const progress = inLms ? learnerProgress(siteRoot, launch) : new Progress(siteRoot);
+const lmsSession = inLms ? import("./lms/session.js").then((m) => m.connectLms(progress, launch)) : null;
 
 const exercises = () => document.querySelectorAll(`[${ATTR.exercise}]`);
 

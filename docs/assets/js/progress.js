@@ -87,13 +87,16 @@ const emptyData = () => ({ version: SCHEMA_VERSION, exercises: {} });
 export class Progress {
   /**
    * @param {string} siteRoot the site's base address: each site keeps its own record
-   * @param {{learner?: string}} [options] `learner`: an opaque key (a hash, never a name or an id) that
+   * @param {{learner?: string, memoryOnly?: string}} [options] `learner`: an opaque key (a hash, never a name or an id) that
    *   gives one learner of a shared browser a record of their own (the LMS's learner, the assignment's student)
+   *   `memoryOnly`: when set, the record is kept in memory only (nothing read or written in
+   *   storage), and this text tells the learner why (an LMS that gives no learner id: lms/learner.js)
    */
-  constructor(siteRoot, { learner = "" } = {}) {
+  constructor(siteRoot, { learner = "", memoryOnly = "" } = {}) {
     const scope = new URL(siteRoot).pathname.replace(/\/+$/, "") || "/";
     this.key = learner ? `robotics-workbook:${scope}:learner:${learner}:progress` : `robotics-workbook:${scope}:progress`;
-    this.store = openStorage();
+    this.memoryOnly = memoryOnly;
+    this.store = memoryOnly ? null : openStorage();
     this.listeners = new Set();
     this.problems = []; // {kind, message, download?}: what the page must tell the learner
     this.pending = null; // a backup that must be written before anything else
@@ -116,6 +119,10 @@ export class Progress {
   }
 
   load() {
+    if (!this.store && this.memoryOnly) {
+      this.report("memory", this.memoryOnly);
+      return emptyData();
+    }
     if (!this.store) {
       this.report("unavailable", "This browser does not let the workbook store anything, so your answers last only until you close this page. Export your progress to keep it.");
       return emptyData();

@@ -1,15 +1,22 @@
 // A test LMS: scorm-again's real SCORM 1.2 or 2004 runtime in this window, the SCO in the
-// frame (tests/browser/test_scorm.py). What it keeps between sessions is what an LMS keeps:
-// suspend_data, the status and score, the objectives (and 2004's interactions), and
-// entry = "resume" after a session that exited with "suspend".
+// frame (tests/browser/test_scorm*.py). What it keeps between sessions is what an LMS keeps:
+// who the learner is and the course's mastery score, suspend_data, the status and score, the
+// objectives (and 2004's interactions), and entry = "resume" after a session that exited with "suspend".
 
 const KEPT = {
-  "1.2": /^cmi\.(suspend_data|core\.(lesson_status|score\.(raw|min|max))|objectives\.\d+\.(id|status|score\.(raw|min|max)))$/,
-  "2004": /^cmi\.(suspend_data|completion_status|success_status|progress_measure|score\.(raw|min|max|scaled)|objectives\.\d+\..+|interactions\.\d+\..+)$/,
+  "1.2": /^cmi\.(suspend_data|core\.(student_id|student_name|lesson_status|score\.(raw|min|max))|student_data\.mastery_score|objectives\.\d+\.(id|status|score\.(raw|min|max)))$/,
+  "2004": /^cmi\.(suspend_data|learner_id|learner_name|scaled_passing_score|completion_status|success_status|progress_measure|score\.(raw|min|max|scaled)|objectives\.\d+\..+|interactions\.\d+\..+)$/,
 };
 const NAMES = {
   "1.2": { global: "API", init: "LMSInitialize", finish: "LMSFinish", commit: "LMSCommit", set: "LMSSetValue", exit: "cmi.core.exit", entry: "cmi.core.entry" },
   "2004": { global: "API_1484_11", init: "Initialize", finish: "Terminate", commit: "Commit", set: "SetValue", exit: "cmi.exit", entry: "cmi.entry" },
+};
+
+// What an LMS sets for a graded launch (Moodle does): credit, normal mode. scorm-again's 1.2 runtime applies
+// the mastery score at LMSFinish only then (raw against mastery_score: passed or failed).
+const LAUNCH = {
+  "1.2": { "cmi.core.credit": "credit", "cmi.core.lesson_mode": "normal" },
+  "2004": { "cmi.credit": "credit", "cmi.mode": "normal" },
 };
 
 function flatten(value, prefix, out) {
@@ -27,7 +34,7 @@ window.lms = {
     const names = NAMES[version];
     const Api = version === "1.2" ? window.Scorm12API : window.Scorm2004API;
     const api = new Api({ logLevel: 5, autocommit: false });
-    if (stored) api.loadFromFlattenedJSON(stored);
+    api.loadFromFlattenedJSON({ ...LAUNCH[version], ...(stored || {}) });
     const calls = { init: 0, finish: 0, commit: 0, set: 0, refused: 0 };
     for (const op of ["init", "finish", "commit", "set"]) {
       const real = api[names[op]].bind(api);

@@ -11,23 +11,18 @@
 // cannot fetch from the registry alone; @gamestdio/scorm is one TypeScript 2
 // release); the part this page needs is the walk and eight calls, here.
 
-const MAX_HOPS = 500;
+import { SEARCH_ORDER, VERSIONS } from "./versions.js";
 
-// What each version calls the same operation and the same data.
-const NAMES = {
-  "1.2": { init: "LMSInitialize", finish: "LMSFinish", get: "LMSGetValue", set: "LMSSetValue", commit: "LMSCommit",
-    error: "LMSGetLastError", errorText: "LMSGetErrorString", diagnostic: "LMSGetDiagnostic" },
-  "2004": { init: "Initialize", finish: "Terminate", get: "GetValue", set: "SetValue", commit: "Commit",
-    error: "GetLastError", errorText: "GetErrorString", diagnostic: "GetDiagnostic" },
-};
-const GLOBAL = { "2004": "API_1484_11", "1.2": "API" };
+const MAX_HOPS = 500;
+/** The property of the launcher's window (lms/launch.js) that holds the launch's one session. */
+export const LAUNCH = "__workbookLaunch";
 
 /** The API object in `win` ({version, api}), or null; a window of another origin reads as none. */
 function apiIn(win) {
   try {
-    for (const version of ["2004", "1.2"]) {
-      const api = win[GLOBAL[version]];
-      if (api && typeof api[NAMES[version].init] === "function") return { version, api };
+    for (const version of SEARCH_ORDER) {
+      const api = win[VERSIONS[version].global];
+      if (api && typeof api[VERSIONS[version].calls.init] === "function") return { version, api };
     }
   } catch {
     /* another origin: not ours to read */
@@ -35,9 +30,19 @@ function apiIn(win) {
   return null;
 }
 
-function walkUp(win) {
+function launchIn(win) {
+  try {
+    const launch = win[LAUNCH];
+    return launch && typeof launch === "object" ? launch : null;
+  } catch {
+    return null;
+  }
+}
+
+/** `look(win)` for `win` and each parent up (at most MAX_HOPS), until one answers; null if none does. */
+function walkUp(win, look) {
   for (let hops = 0; win && hops <= MAX_HOPS; hops += 1) {
-    const found = apiIn(win);
+    const found = look(win);
     if (found) return found;
     let parent;
     try {
@@ -53,14 +58,19 @@ function walkUp(win) {
 
 /** The LMS's API seen from `win` ({version, api}), or null outside an LMS. */
 export function findApi(win = window) {
-  const found = walkUp(win);
+  const found = walkUp(win, apiIn);
   if (found) return found;
   try {
     const opener = win.top?.opener;
-    return opener ? walkUp(opener) : null;
+    return opener ? walkUp(opener, apiIn) : null;
   } catch {
     return null;
   }
+}
+
+/** The launch (lms/launch.js) holding this page's LMS session, from the nearest launcher page above `win`; null if none. */
+export function findLaunch(win = window) {
+  return walkUp(win.parent === win ? null : win.parent, launchIn);
 }
 
 /** One SCORM session over a found API: every call says whether it worked, failures keep their error. */
@@ -68,7 +78,7 @@ export class ScormApi {
   constructor({ version, api }) {
     this.version = version;
     this.api = api;
-    this.names = NAMES[version];
+    this.names = VERSIONS[version].calls;
     this.lastError = null; // {code, text, element} of the last call that failed
   }
 
@@ -95,16 +105,6 @@ export class ScormApi {
     }
     if (result !== null || !this.lastError) this.lastError = { code, text, element };
     return false;
-  }
-
-  /** The page the session was launched for: marked on the API object by the first page that asks (`path`). */
-  pin(path) {
-    try {
-      if (!this.api.__workbookLaunch) Object.defineProperty(this.api, "__workbookLaunch", { value: path, configurable: true });
-      return this.api.__workbookLaunch ?? path;
-    } catch {
-      return path; // an API object that cannot be marked: every page is taken as launched
-    }
   }
 
   initialize() {

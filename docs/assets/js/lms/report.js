@@ -1,39 +1,24 @@
 // What a chapter SCO reports to the LMS, as [element, value] pairs for SCORM 1.2 or
-// 2004: pure functions of the progress records, so the same rule serves every
-// commit and the tests.
+// 2004 (versions.js says how each version names them): pure functions of the progress
+// records, so the same rule serves every commit and the tests.
 //
-// - Score: raw = the chapter's exercises solved, min 0, max = its exercises (2004:
-//   scaled = raw / max too). Mastery (three different clean variants) does not add
-//   to the score: each exercise's objective carries it, raw = its clean variants
-//   up to 3, max 3.
-// - Completed when every exercise of the chapter is solved. Passed then too, or
-//   earlier when the LMS sets a mastery score (1.2 cmi.student_data.mastery_score,
-//   0-100; 2004 cmi.scaled_passing_score, 0-1) and the share solved reaches it.
-//   Never "failed": the learner can always go on.
+// - Score: raw = the share of the chapter's exercises solved, on 0-100 (min 0, max 100),
+//   as an LMS compares it with a mastery score and grades out of 100; 2004's scaled is the
+//   same share on 0-1. Mastery (three different clean variants) does not add to the
+//   score: each exercise's objective carries it, raw = its clean variants up to 3, max 3.
+// - Completed when every exercise of the chapter is solved. Without a mastery score from
+//   the LMS, passed then too (never failed: the learner can always go on). With one
+//   (1.2 cmi.student_data.mastery_score, 0-100; 2004 cmi.scaled_passing_score, 0-1),
+//   as the standards say: passed when the share solved is at or above it, failed below.
 // - One objective and one interaction per exercise, in the chapter's order: the
 //   index of exercise i is i in both lists (SCORM lists are filled in order).
 
 import { MASTERED, isSolved } from "../review.js";
+import { VERSIONS } from "./versions.js";
+
+export { duration2004, timespan12 } from "./versions.js";
 
 export const objectiveId = (id) => `exercise-${id}`;
-
-/** "HHHH:MM:SS.SS" (SCORM 1.2 CMITimespan) of `ms`. */
-export function timespan12(ms) {
-  const cs = Math.max(0, Math.round(ms / 10));
-  const h = Math.floor(cs / 360000);
-  const m = Math.floor(cs / 6000) % 60;
-  const s = (cs % 6000) / 100;
-  return `${String(Math.min(h, 9999)).padStart(4, "0")}:${String(m).padStart(2, "0")}:${s.toFixed(2).padStart(5, "0")}`;
-}
-
-/** "PT1H2M3.4S" (SCORM 2004 timeinterval) of `ms`. */
-export function duration2004(ms) {
-  const cs = Math.max(0, Math.round(ms / 10));
-  const h = Math.floor(cs / 360000);
-  const m = Math.floor(cs / 6000) % 60;
-  const s = (cs % 6000) / 100;
-  return `PT${h ? `${h}H` : ""}${m ? `${m}M` : ""}${Number(s.toFixed(2))}S`;
-}
 
 /** The learner's last answer as text: a formula or number as typed, a grid row by row, steps in order, Build code. */
 export function answerText(record) {
@@ -45,13 +30,18 @@ export function answerText(record) {
   return String(last);
 }
 
-/** The chapter's totals: {solved, total, complete, passed}; `threshold` in [0, 1] or null. */
+/**
+ * The chapter's totals: {solved, total, share, complete, passed, failed}; `threshold` (the LMS's
+ * mastery score) in [0, 1], or null when the LMS sets none. `share` is on 0-1, to 4 places.
+ */
 export function standing(records, ids, threshold = null) {
   const solved = ids.filter((id) => isSolved(records[id] || {})).length;
   const total = ids.length;
+  const share = total ? Number((solved / total).toFixed(4)) : 0;
   const complete = total > 0 && solved === total;
-  const passed = complete || (threshold !== null && total > 0 && solved / total >= threshold);
-  return { solved, total, complete, passed };
+  const mastered = threshold !== null && total > 0 && solved / total >= threshold;
+  const passed = threshold === null ? complete : mastered;
+  return { solved, total, share, complete, passed, failed: threshold !== null && !mastered };
 }
 
 const objectiveStatus = (r) => {
@@ -61,33 +51,26 @@ const objectiveStatus = (r) => {
 
 /** The chapter's own elements (score, status) for `version`. */
 export function chapterValues(version, records, ids, threshold) {
-  const { solved, total, complete, passed } = standing(records, ids, threshold);
-  if (version === "1.2") {
-    return [
-      ["cmi.core.score.min", 0], ["cmi.core.score.max", total], ["cmi.core.score.raw", solved],
-      ["cmi.core.lesson_status", passed ? "passed" : complete ? "completed" : "incomplete"],
-    ];
-  }
-  const scaled = total ? Number((solved / total).toFixed(4)) : 0;
+  const v = VERSIONS[version];
+  const now = standing(records, ids, threshold);
+  const raw = now.total ? Number(((100 * now.solved) / now.total).toFixed(2)) : 0;
+  const score = v.element.score;
   return [
-    ["cmi.score.min", 0], ["cmi.score.max", total], ["cmi.score.raw", solved], ["cmi.score.scaled", scaled],
-    ["cmi.progress_measure", scaled],
-    ["cmi.completion_status", complete ? "completed" : "incomplete"],
-    ["cmi.success_status", passed ? "passed" : "unknown"],
+    [`${score}.min`, 0], [`${score}.max`, 100], [`${score}.raw`, raw],
+    ...(v.scaled ? [[`${score}.scaled`, now.share]] : []),
+    ...v.status(now),
   ];
 }
 
 /** Exercise `i`'s objective: its id, status and mastery (clean variants, up to MASTERED). */
 export function objectiveValues(version, i, id, record = {}) {
+  const v = VERSIONS[version];
   const at = `cmi.objectives.${i}`;
   const clean = Math.min(record.clean?.length ?? 0, MASTERED);
-  const status = objectiveStatus(record);
-  const score = [[`${at}.score.min`, 0], [`${at}.score.max`, MASTERED], [`${at}.score.raw`, clean]];
-  if (version === "1.2") return [[`${at}.id`, objectiveId(id)], ...score, [`${at}.status`, status]];
   return [
-    [`${at}.id`, objectiveId(id)], ...score, [`${at}.score.scaled`, Number((clean / MASTERED).toFixed(4))],
-    [`${at}.success_status`, status === "passed" ? "passed" : "unknown"],
-    [`${at}.completion_status`, status === "passed" ? "completed" : status],
+    [`${at}.id`, objectiveId(id)], [`${at}.score.min`, 0], [`${at}.score.max`, MASTERED], [`${at}.score.raw`, clean],
+    ...(v.scaled ? [[`${at}.score.scaled`, Number((clean / MASTERED).toFixed(4))]] : []),
+    ...v.objective(at, objectiveStatus(record)),
   ];
 }
 
@@ -97,18 +80,13 @@ export function objectiveValues(version, i, id, record = {}) {
  * `latencyMs` is null: a check of an earlier session) and time.
  */
 export function interactionValues(version, i, id, record = {}, check = null) {
+  const v = VERSIONS[version];
+  const is = v.interaction;
   const at = `cmi.interactions.${i}`;
-  const base = [[`${at}.id`, objectiveId(id)], [`${at}.type`, version === "1.2" ? "fill-in" : "long-fill-in"]];
+  const base = [[`${at}.id`, objectiveId(id)], [`${at}.type`, is.type]];
   if (!check) return base;
-  const answer = answerText(record);
-  if (version === "1.2") {
-    const when = new Date(check.at);
-    const time = [when.getHours(), when.getMinutes(), when.getSeconds()].map((n) => String(n).padStart(2, "0")).join(":");
-    return [...base, [`${at}.objectives.0.id`, objectiveId(id)], [`${at}.time`, time],
-      [`${at}.student_response`, answer.slice(0, 255)], [`${at}.result`, check.correct ? "correct" : "wrong"],
-      ...(check.latencyMs === null ? [] : [[`${at}.latency`, timespan12(check.latencyMs)]])];
-  }
-  return [...base, [`${at}.objectives.0.id`, objectiveId(id)], [`${at}.timestamp`, `${new Date(check.at).toISOString().slice(0, 22)}Z`],
-    [`${at}.learner_response`, answer.slice(0, 4000)], [`${at}.result`, check.correct ? "correct" : "incorrect"],
-    ...(check.latencyMs === null ? [] : [[`${at}.latency`, duration2004(check.latencyMs)]]), [`${at}.description`, `Exercise ${id}`]];
+  return [...base, [`${at}.objectives.0.id`, objectiveId(id)], [`${at}.${is.when}`, is.at(check.at)],
+    [`${at}.${is.response}`, answerText(record).slice(0, is.responseLength)], [`${at}.result`, check.correct ? is.correct : is.wrong],
+    ...(check.latencyMs === null ? [] : [[`${at}.latency`, v.elapsed(check.latencyMs)]]),
+    ...(is.description ? [[`${at}.description`, `Exercise ${id}`]] : [])];
 }

@@ -1,58 +1,52 @@
-// A chapter page launched by an LMS as a SCO (dist/robotics-workbook-scorm*.zip):
-// one SCORM session from the page's start to its pagehide.
+// A workbook page shown by a SCO's launcher (lms/launch.js) in an LMS: it reports
+// through the launch's one SCORM session, whatever chapter the learner has moved to.
 //
-// - Start (before the first exercise is drawn: main.js calls connectLms first):
-//   Initialize, then the progress in cmi.suspend_data (set by this chapter or any
-//   other of the workbook's SCOs, on this or another computer) is merged into the
-//   local record by the import's field rules: nothing local is replaced.
-// - Every check (a graded answer, a Build run, a checked step): that exercise's
-//   objective and interaction, the chapter's score and status, suspend_data and
-//   session_time are set, then Commit.
-// - pagehide: the same, exit = suspend (the next launch resumes), Commit, then
-//   Finish/Terminate, exactly once.
+// - Start (before the first exercise is drawn: main.js calls connectLms first): the
+//   progress in cmi.suspend_data (set by this chapter or any other of the workbook's
+//   SCOs, on this or another computer) is merged into the local record by the import's
+//   field rules: nothing local is replaced.
+// - Every check (a graded answer, a Build run, a checked step): the launched chapter's
+//   score and status, the checked exercise's objective and interaction (when it is one of
+//   the launched chapter's), suspend_data and session_time are set, then Commit.
+// - pagehide of this page (a link to another page of the workbook, or the launch ending):
+//   the same, once more. The launcher alone Initializes and Terminates.
 // - The LMS refuses a call (a full quota, a closed session): a notice says so;
 //   the local record is never touched by a failure, and everything is sent again
 //   at the next check.
 //
-// <html data-workbook-lms> (contract: lmsStates) says where the session stands:
-// "open", "closed" (finished), "failed" (the LMS would not start it).
+// <html data-workbook-lms> (contract: lmsStates) says where this page stands:
+// "open" (reporting), "closed" (its last report sent), "failed" (no session to report to).
 
 import { ATTR, LMS, STATE, setRootState } from "../contract.js";
 import { clearNotice, exportProgress, showNotice } from "../notice.js";
-import { ScormApi, findApi } from "./api.js";
-import { chapterValues, duration2004, interactionValues, objectiveValues, timespan12 } from "./report.js";
+import { chapterValues, interactionValues, objectiveValues } from "./report.js";
 import { decodeSuspend, encodeSuspend } from "./suspend.js";
+import { VERSIONS } from "./versions.js";
 
 const NOTICE = "lms";
-const ELEMENT = {
-  "1.2": { entry: "cmi.core.entry", exit: "cmi.core.exit", time: "cmi.core.session_time", mastery: "cmi.student_data.mastery_score" },
-  "2004": { entry: "cmi.entry", exit: "cmi.exit", time: "cmi.session_time", mastery: "cmi.scaled_passing_score" },
-};
 
 const says = (error) => (error?.code ? `error ${error.code}${error.text ? `: ${error.text}` : ""}` : error?.text || "no reason given");
 
-/** Open the SCORM session of this page when an LMS launched it; null (the hosted site) when no API is found. */
-export function connectLms(progress) {
-  const found = findApi(window);
-  if (!found) return null;
-  const session = new Session(new ScormApi(found), progress);
+/** Report this page's work through `launch` (null: a page an LMS shows without the workbook's launcher). */
+export function connectLms(progress, launch) {
+  const session = new Session(launch, progress);
   session.start();
   return session;
 }
 
 class Session {
-  constructor(lms, progress) {
-    this.lms = lms;
-    this.version = lms.version;
-    this.el = ELEMENT[lms.version];
+  constructor(launch, progress) {
+    this.launch = launch;
     this.progress = progress;
-    // The SCO is its launch page's chapter: its exercises, in page order.
-    this.ids = [...document.querySelectorAll(`[${ATTR.exercise}]`)].map((el) => el.getAttribute(ATTR.exercise));
+    this.lms = launch?.lms ?? null;
+    this.version = launch?.version ?? null;
+    this.el = this.version ? VERSIONS[this.version].element : null;
+    this.ids = launch?.ids ?? []; // the launched chapter's exercises: the SCO's score and objectives
     this.started = Date.now();
     this.state = null;
     this.seen = new Map(); // id -> {attempts, steps, since}: what the last change showed, and when the exercise was last checked
     this.resendAll = true;
-    this.calls = { commits: 0, finishes: 0 };
+    this.calls = { commits: 0 };
     this.resumed = { entry: "", records: 0, skipped: 0 };
     this.dropped = null;
   }
@@ -63,27 +57,26 @@ class Session {
   }
 
   start() {
-    // The session belongs to the page the LMS launched: a page of another chapter, opened by a
-    // link inside the same frame, must not report itself as the launched SCO.
-    const launched = this.lms.pin(location.pathname);
-    if (launched !== location.pathname) {
+    if (!this.launch) {
       this.setState(LMS.failed);
-      this.tell("This page is not the chapter the course opened, so its results are not sent to the course from here. Your work is kept in this browser and goes to the platform the next time you open a chapter from the course in this browser.");
+      this.tell("This page was opened by the course without the workbook's launcher, so its results are not sent to the course and your answers are kept only while it is open. Open the chapter from the course's list to have your work counted.");
       return;
     }
-    if (!this.lms.initialize()) {
+    if (this.launch.state !== LMS.open) {
       this.setState(LMS.failed);
-      this.tell(`The course's platform did not open a session for this page (${says(this.lms.lastError)}), so this chapter's results are not sent to it from here. Your work is kept in this browser, and goes to the platform the next time you open the chapter from the course in this browser.`);
+      this.tell(`The course's platform did not open a session for this chapter (${says(this.launch.error)}), so its results are not sent to it, and your answers are kept only while it is open. Export your progress to keep it.`);
       return;
     }
-    const mastery = this.lms.get(this.el.mastery);
-    const threshold = mastery === "" || !Number.isFinite(Number(mastery)) ? null : Number(mastery) / (this.version === "1.2" ? 100 : 1);
-    this.threshold = threshold === null ? null : Math.min(1, Math.max(0, threshold));
     this.restore();
     this.setState(LMS.open);
-    for (const id of this.ids) this.seen.set(id, { ...this.look(id), since: this.started });
+    const onPage = [...document.querySelectorAll(`[${ATTR.exercise}]`)].map((el) => el.getAttribute(ATTR.exercise));
+    for (const id of new Set([...this.ids, ...onPage])) this.seen.set(id, { ...this.look(id), since: this.started });
     this.progress.onChange((id) => this.changed(id));
-    window.addEventListener("pagehide", () => this.finish());
+    const detach = this.launch.attach(() => this.last());
+    window.addEventListener("pagehide", () => {
+      this.last();
+      detach();
+    });
     this.sync(null);
   }
 
@@ -105,8 +98,8 @@ class Session {
 
   /** A record changed: a check (attempts, or a checked step) sends it now; anything else waits for the next commit. */
   changed(id) {
-    if (this.state !== LMS.open || !this.seen.has(id)) return;
-    const before = this.seen.get(id);
+    if (this.state !== LMS.open || id === null || this.launch.state !== LMS.open) return;
+    const before = this.seen.get(id) ?? { attempts: 0, steps: JSON.stringify([[], null]), since: this.started };
     const now = this.look(id);
     const checked = now.attempts > before.attempts;
     if (!checked && now.steps === before.steps) return;
@@ -123,7 +116,7 @@ class Session {
   /** Set what changed (everything after a failure or at the start), then Commit. */
   sync(id, check = null, { final = false } = {}) {
     const records = this.progress.all();
-    const values = [...chapterValues(this.version, records, this.ids, this.threshold)];
+    const values = [...chapterValues(this.version, records, this.ids, this.launch.threshold)];
     this.ids.forEach((exercise, i) => {
       if (!this.resendAll && exercise !== id) return;
       const record = records[exercise] || {};
@@ -133,9 +126,8 @@ class Session {
     });
     const { text, dropped } = encodeSuspend(records, this.version);
     this.dropped = dropped;
-    const elapsed = Date.now() - this.started;
-    values.push(["cmi.suspend_data", text], [this.el.exit, "suspend"],
-      [this.el.time, this.version === "1.2" ? timespan12(elapsed) : duration2004(elapsed)]);
+    const elapsed = Date.now() - this.launch.started; // the launch's time, not this page's
+    values.push(["cmi.suspend_data", text], [this.el.exit, "suspend"], [this.el.time, VERSIONS[this.version].elapsed(elapsed)]);
     let ok = values.every(([element, value]) => this.lms.set(element, value));
     if (ok) ok = this.lms.commit();
     if (ok) this.calls.commits += 1;
@@ -145,13 +137,11 @@ class Session {
     return ok;
   }
 
-  /** pagehide: the last commit, then Finish/Terminate, once. */
-  finish() {
-    if (this.state !== LMS.open) return;
+  /** This page's last report (its pagehide, or the launch ending first), once. */
+  last() {
+    if (this.state !== LMS.open || this.launch.state !== LMS.open) return;
     this.sync(null, null, { final: true });
     this.setState(LMS.closed);
-    this.calls.finishes += 1;
-    this.lms.finish();
   }
 
   tell(message) {

@@ -20,12 +20,43 @@
 //
 // Decoding never trusts the text: every record passes the progress schema's
 // checks (cleanRecord) or is left out.
+//
+// The compact form answers for every field of the one record schema (progress-schema.js
+// FIELDS): each is carried, rebuilt from carried ones, or dropped on purpose (COMPACT);
+// tests/js/suspend.test.mjs fails when a field of the schema is none of these.
 
 import { MASTERED, INTERVAL_MS, TOP_BOX } from "../review.js";
-import { canonical, cleanRecord, isObject } from "../progress-schema.js";
+import { FIELDS, canonical, cleanRecord, isObject } from "../progress-schema.js";
+import { VERSIONS } from "./versions.js";
 
-export const LIMIT_12 = 4096;
-export const LIMIT_2004 = 64000;
+export const LIMIT_12 = VERSIONS["1.2"].suspendLimit;
+export const LIMIT_2004 = VERSIONS["2004"].suspendLimit;
+
+/** What the compact form does with each field of the record schema. */
+export const COMPACT = {
+  // Written as one bit each, in this order (append only: the order is the format).
+  flags: ["solved", "solvedAfterReveal", "hinted", "revealed"],
+  // Written as they are (the variant lists: their newest items that say the state).
+  carried: ["clean", "steppedDone", "done", "variant", "attempts", "updated", "box", "due", "last"],
+  rebuilt: { reviewed: "from the review box and the due time" },
+  dropped: {
+    missed: "the variants answered wrong: history, not state",
+    revealedIn: "the variants whose worked answer was shown: history (revealed and solvedAfterReveal say the state)",
+    carried: "the variants right only given a wrong earlier value: history",
+    stepped: "the variants worked with steps: history (steppedDone says what was solved that way)",
+    stepWork: "the checked steps on screen: too large for 4,096 characters",
+    code: "Build code: too large for 4,096 characters",
+    draftOrder: "a draft order of steps not yet checked",
+    slips: "the named slips hit: the assignment page's, not the LMS's",
+    assigned: "an assignment's graded answers: the assignment page's, not the LMS's",
+  },
+};
+
+/** The schema's fields that COMPACT does not answer for, and COMPACT's names that are not in the schema. */
+export function compactCoverage(schema = FIELDS) {
+  const listed = [...COMPACT.flags, ...COMPACT.carried, ...Object.keys(COMPACT.rebuilt), ...Object.keys(COMPACT.dropped)];
+  return { unlisted: Object.keys(schema).filter((f) => !listed.includes(f)), unknown: listed.filter((f) => !(f in schema)) };
+}
 const JSON_PREFIX = "wbj:";
 const COMPACT_PREFIX = "wb1:";
 const ID = /^(\d{1,3})\.(\d{1,3})$/;
@@ -105,7 +136,8 @@ const fromBase64Url = (text) => {
 };
 
 // ---- the compact form -----------------------------------------------------------
-const FLAG = { solved: 1, solvedAfterReveal: 2, hinted: 4, revealed: 8, review: 16, last: 32 };
+// The record's flags, then two of the layout's own (a review schedule follows, a last answer follows).
+const FLAG = Object.fromEntries([...COMPACT.flags, "review", "last"].map((name, i) => [name, 2 ** i]));
 const newest = (list, n) => (Array.isArray(list) ? list.slice(-n) : []);
 
 /** One record's essential state, as bytes; `withLast` keeps its last answer. */
@@ -116,7 +148,7 @@ function writeRecord(w, id, r, base, withLast) {
   const review = Number.isInteger(r.box) && Number.isFinite(r.due);
   const last = withLast && r.last !== undefined && r.last !== null ? JSON.stringify(r.last) : null;
   let flags = 0;
-  for (const name of ["solved", "solvedAfterReveal", "hinted", "revealed"]) if (r[name]) flags |= FLAG[name];
+  for (const name of COMPACT.flags) if (r[name]) flags |= FLAG[name];
   if (review) flags |= FLAG.review;
   if (last !== null) flags |= FLAG.last;
   w.uint(flags);
@@ -144,7 +176,7 @@ function readRecord(rd, base) {
   const steppedDone = rd.list();
   const doneOnly = rd.list();
   const r = {};
-  for (const name of ["solved", "solvedAfterReveal", "hinted", "revealed"]) if (flags & FLAG[name]) r[name] = true;
+  for (const name of COMPACT.flags) if (flags & FLAG[name]) r[name] = true;
   if (clean.length) r.clean = clean;
   if (steppedDone.length) r.steppedDone = steppedDone;
   const done = [...new Set([...doneOnly, ...steppedDone, ...clean])];
@@ -200,7 +232,8 @@ export function encodeCompact(exercises, limit = LIMIT_12) {
 
 /** suspend_data for SCORM `version` ("1.2" or "2004"): {text, dropped}. */
 export function encodeSuspend(exercises, version) {
-  if (version === "1.2") return encodeCompact(exercises, LIMIT_12);
+  const { suspendLimit, suspendJson } = VERSIONS[version];
+  if (!suspendJson) return encodeCompact(exercises, suspendLimit);
   const fields = [];
   let records = exercises;
   for (const field of [null, "stepWork", "code"]) {
@@ -213,9 +246,9 @@ export function encodeSuspend(exercises, version) {
       }));
     }
     const text = JSON_PREFIX + canonical(records);
-    if (text.length <= LIMIT_2004) return { text, dropped: { fields } };
+    if (text.length <= suspendLimit) return { text, dropped: { fields } };
   }
-  return encodeCompact(exercises, LIMIT_2004);
+  return encodeCompact(exercises, suspendLimit);
 }
 
 /** The records in a suspend_data text: {exercises, skipped}, where `skipped` counts records that failed their checks. */

@@ -1,12 +1,12 @@
-"""README's "Adding a chapter" and "Adding a Build exercise", followed in a copy of the repository.
+"""AUTHORING.md's "Adding a chapter" and "Adding a Build exercise", followed in a copy of the repository.
 
-Each test copies what the build reads (mkdocs.yml, docs/, the two packages, CONTRACT.md) into
-a temporary directory and applies every step of the recipe that has code, exactly as README
+Each test copies what the build reads (mkdocs.yml, docs/, the two packages, the page contract) into
+a temporary directory and applies every step of the recipe that has code, exactly as AUTHORING.md
 writes it: "Create `PATH`:", "In `PATH`, after the line starting `TEXT`, add:" and "At the end
 of `PATH`, add:", each followed by its code block. Then it builds: every registered part loads
-(``workbook.registry``), the new exercise grades, CONTRACT.md's table of Build functions is the
+(``workbook.registry``), the new exercise grades, the contract's table of Build functions is the
 bank's, and ``mkdocs build --strict`` writes the site with the new exercise on its page and the
-page in the menu. A step README leaves out, or gets wrong, fails one of these. (The steps
+page in the menu. A step AUTHORING.md leaves out, or gets wrong, fails one of these. (The steps
 without code, the golden files and the tests' lists, are checked by the suite itself.)
 """
 
@@ -23,7 +23,7 @@ import pytest
 from markdown_table import table_after
 
 ROOT = Path(__file__).resolve().parents[2]
-README = (ROOT / "README.md").read_text(encoding="utf-8")
+GUIDE = (ROOT / "AUTHORING.md").read_text(encoding="utf-8")  # the author's guide (README.md links to it)
 STEP = re.compile(
     r"(?:Create\s+`(?P<create>[^`]+)`"
     r"|In\s+`(?P<into>[^`]+)`,\s+after\s+the\s+line\s+starting\s+`(?P<anchor>[^`]+)`,\s+add"
@@ -49,10 +49,10 @@ print(json.dumps(out))
 
 
 def recipe(title: str) -> list[re.Match]:
-    """The steps with code of README's section ``title``, in order."""
-    start = README.index(f"\n## {title}\n")
-    end = README.find("\n## ", start + 1)
-    return list(STEP.finditer(README[start:end if end > 0 else None]))
+    """The steps with code of AUTHORING.md's section ``title``, in order."""
+    start = GUIDE.index(f"\n## {title}\n")
+    end = GUIDE.find("\n## ", start + 1)
+    return list(STEP.finditer(GUIDE[start:end if end > 0 else None]))
 
 
 def _body(step: re.Match) -> str:
@@ -67,14 +67,14 @@ def follow(title: str, root: Path) -> list[str]:
         path = root / (step["create"] or step["into"] or step["end"])
         body = _body(step)
         if step["create"]:
-            assert not path.exists(), f"README: {path.relative_to(root)} is there already"
+            assert not path.exists(), f"AUTHORING.md: {path.relative_to(root)} is there already"
             path.write_text(body, encoding="utf-8")
         elif step["end"]:
             path.write_text(path.read_text(encoding="utf-8") + body, encoding="utf-8")
         else:
             lines = path.read_text(encoding="utf-8").splitlines(keepends=True)
             at = [i for i, line in enumerate(lines) if line.lstrip().startswith(step["anchor"])]
-            assert len(at) == 1, f"README: {step['anchor']!r} starts {len(at)} lines of {path.relative_to(root)}"
+            assert len(at) == 1, f"AUTHORING.md: {step['anchor']!r} starts {len(at)} lines of {path.relative_to(root)}"
             lines.insert(at[0] + 1, body)
             path.write_text("".join(lines), encoding="utf-8")
         touched.append(str(path.relative_to(root)))
@@ -85,6 +85,7 @@ def copy_repo(root: Path) -> None:
     junk = shutil.ignore_patterns("__pycache__", "*.pyc")
     shutil.copy2(ROOT / "mkdocs.yml", root / "mkdocs.yml")
     shutil.copy2(ROOT / "CONTRACT.md", root / "CONTRACT.md")
+    shutil.copytree(ROOT / "contract", root / "contract")  # its parts, one per audience
     shutil.copytree(ROOT / "docs", root / "docs", ignore=junk)
     for package in ("workbook", "workbook_sandbox"):
         shutil.copytree(ROOT / "pyodide_pkg" / package, root / "pyodide_pkg" / package, ignore=junk)
@@ -103,8 +104,8 @@ def build(root: Path, exercise: str) -> dict:
 
 
 def contract_builds(root: Path) -> dict[str, str]:
-    """CONTRACT.md's table of Build functions in the copy: id -> signature."""
-    text = (root / "CONTRACT.md").read_text(encoding="utf-8")
+    """The page contract's table of Build functions in the copy (contract/pages.md): id -> signature."""
+    text = (root / "contract" / "pages.md").read_text(encoding="utf-8")
     rows = table_after(text, "The Build exercises' functions")
     return {row[0]: row[1].strip("`") for row in rows}
 
@@ -114,7 +115,7 @@ needs_site = pytest.mark.skipif(not (ROOT / "docs" / "assets" / "dist").is_dir()
 
 
 @needs_site
-def test_adding_a_chapter_as_readme_says_builds(tmp_path):
+def test_adding_a_chapter_as_authoring_says_builds(tmp_path):
     copy_repo(tmp_path)
     touched = follow("Adding a chapter", tmp_path)
     assert touched == ["pyodide_pkg/workbook/reference/odometry.py", "pyodide_pkg/workbook/bank/ch11_odometry.py",
@@ -130,14 +131,14 @@ def test_adding_a_chapter_as_readme_says_builds(tmp_path):
 
 
 @needs_site
-def test_adding_a_build_exercise_as_readme_says_builds(tmp_path):
+def test_adding_a_build_exercise_as_authoring_says_builds(tmp_path):
     copy_repo(tmp_path)
     touched = follow("Adding a Build exercise", tmp_path)
     assert touched == ["pyodide_pkg/workbook/reference/rotation2d.py", "pyodide_pkg/workbook/bank/ch0_code.py",
-                       "docs/chapters/00-rotations-2d.md", "CONTRACT.md"]
+                       "docs/chapters/00-rotations-2d.md", "contract/pages.md"]
     found = build(tmp_path, "0.9")
     assert found["kind"] == "build" and found["chapter"][-1] == "0.9"
     assert (found["solution"], found["starter"]) == ("correct", "incorrect")
-    assert contract_builds(tmp_path) == found["builds"], "CONTRACT.md's table of Build functions is not the bank's"
+    assert contract_builds(tmp_path) == found["builds"], "the contract's table of Build functions is not the bank's"
     page = (tmp_path / "site" / "chapters" / "00-rotations-2d" / "index.html").read_text(encoding="utf-8")
     assert 'data-exercise-id="0.9"' in page
