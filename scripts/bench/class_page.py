@@ -3,7 +3,9 @@
 in the page's grader and every Build solve's code run again in the sandbox. Measured: the time
 from the files being given to the page to every file graded (the issue's aim: <= 60 s on this
 machine), the time the statistics take after that (<= 2 s), and the longest task on the page's
-main thread meanwhile (<= 200 ms: the page stays responsive); reported, never asserted.
+main thread meanwhile (<= 200 ms: the page stays responsive), counted from when the files are in the
+page (Playwright's own task that puts 1,000 files into the file input is reported apart); reported,
+never asserted.
 
 Each learner ``s0`` … of class ``BENCH`` hands in chapter 0's and 1's Derive exercises (9),
 each with two answers at their own numbers: a known slip (or a wrong number) first, then the
@@ -76,18 +78,21 @@ def measure(b, learners: int = LEARNERS) -> dict:
         since = page.evaluate("() => performance.now()")
         t0 = time.monotonic()
         page.locator("#wb-class-files").set_input_files(files)
+        given = page.evaluate("() => performance.now()")  # the files are in the page: what follows is its own work
         page.wait_for_function("n => document.querySelector('[data-wb-class]').dataset.wbGraded === String(n)",
                                arg=learners, timeout=TIMEOUT_MS)
         total = (time.monotonic() - t0) * 1000
         root = page.evaluate("""() => { const d = document.querySelector('[data-wb-class]').dataset;
           return { seconds: Number(d.wbSeconds), statsMs: Number(d.wbStatsMs), rows: Number(d.wbRows),
                    verified: Number(d.wbVerified) }; }""")
-        tasks = page.evaluate("s => window.__classLongTasks.filter(([t]) => t >= s).map(([, d]) => d)", since)
+        tasks = page.evaluate("s => window.__classLongTasks.filter(([t]) => t >= s).map(([t, d]) => [t, d])", since)
+        ours = [d for t, d in tasks if t + d > given]  # ended after the files were given: the page's work
         return {"files": learners, "exercises": len(ids) + 1, "regrades": learners * len(ids) * 2,
                 "build_runs": learners,
                 "verified": root["verified"], "expected_verified": learners * (len(ids) + 1), "rows": root["rows"],
                 "total_ms": round(total), "graded_ms": round(root["seconds"] * 1000), "stats_ms": root["statsMs"],
-                "long_tasks_over_50ms": len(tasks), "longest_task_ms": round(max(tasks, default=0)),
+                "long_tasks_over_50ms": len(ours), "longest_task_ms": round(max(ours, default=0)),
+                "longest_task_giving_files_ms": round(max((d for t, d in tasks if t + d <= given), default=0)),
                 "grader": page.locator("[data-wb-grader]").text_content()}
     finally:
         ctx.close()

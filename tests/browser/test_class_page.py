@@ -216,3 +216,18 @@ def test_the_grader_is_named_and_a_changed_mark_is_marked(page, site_url):
     assert page.locator("[data-wb-grader]").text_content() == f"Re-graded here by the workbook's grader version {v['version']}, bank {v['bank']}."
     text = page.locator("article").text_content()
     assert "not re-run here" not in text and "run again here" in text
+
+
+def test_a_class_over_a_hundred_is_paged_and_every_student_reaches_the_gradebook(page, site_url):
+    ids = derive_ids(2)
+    give(page, site_url, a_class(CODE, 120, ids, NOW))
+    rows = page.locator(".wb-class-table tbody tr")
+    assert rows.count() == 100 and page.locator(".wb-class-pager").text_content().count("Students 1–100 of 120") == 1
+    first = set(rows.evaluate_all("rs => rs.map(r => r.dataset.wbStudent)"))
+    assert page.locator("[data-wb-action='previous-students']").is_disabled()
+    page.locator("[data-wb-action='next-students']").click()
+    rest = set(rows.evaluate_all("rs => rs.map(r => r.dataset.wbStudent)"))
+    assert len(rest) == 20 and not first & rest and "Students 101–120 of 120" in page.locator(".wb-class-pager").text_content()
+    assert page.locator("[data-wb-action='next-students']").is_disabled()
+    book = list(csv.reader(io.StringIO(download(page, "gradebook"), newline="")))
+    assert {r[1] for r in book[1:]} == first | rest and len(book) == 121

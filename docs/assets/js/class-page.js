@@ -16,7 +16,6 @@ import { download } from "./notice.js";
 import { withSandbox } from "./sandbox-client.js";
 
 const LEARNERS_AT_ONCE = 4; // files graded side by side: the grader answers one while the sandbox runs another's code
-const ROWS_PER_TASK = 100; // table rows built per task before the event loop gets its turn
 const PAGE_ROWS = 100; // students shown at once: a bigger class is paged (a table of 1,000 rows lays out in one long task)
 const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield() : new Promise((r) => setTimeout(r, 0)));
 
@@ -109,7 +108,8 @@ export async function initClassPage(shared, siteRoot) {
     shown.textContent = `Students ${from + 1}–${to} of ${state.rows.length}`;
     previous.disabled = state.page === 0;
     next.disabled = state.page === pages - 1;
-    return sortRows(state.rows, state.ids, state.sort).slice(from, to).map((r) => state.trs.get(r.key));
+    // A row's <tr> is built when its page is first shown (a class of 1,000 builds 100 at a time).
+    return sortRows(state.rows, state.ids, state.sort).slice(from, to).map((r) => state.trs.get(r.key) ?? state.trs.set(r.key, rowElement(r, state.ids)).get(r.key));
   };
   const placeRows = () => results.querySelector(".wb-class-table tbody")?.replaceChildren(...pageOf());
   const turn = (by) => {
@@ -123,11 +123,7 @@ export async function initClassPage(shared, siteRoot) {
     state.ids = order.filter((id) => state.learners.some((l) => l.cells[id]));
     if (!state.rows.length) return results.replaceChildren();
     state.trs = new Map();
-    const sorted = sortRows(state.rows, state.ids, state.sort);
-    for (let i = 0; i < sorted.length; i += ROWS_PER_TASK) {
-      for (const row of sorted.slice(i, i + ROWS_PER_TASK)) state.trs.set(row.key, rowElement(row, state.ids));
-      await giveWay();
-    }
+    await giveWay();
     const stats = el("div", { className: "wb-class-worked" }, el("p", { textContent: "Working out which exercises worked…" }));
     results.replaceChildren(el("h2", { textContent: "Students and exercises" }), legend(), tableRegion(state, pageOf()), pager,
       el("h2", { textContent: "Which exercises worked" }), stats,
