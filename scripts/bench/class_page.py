@@ -20,6 +20,7 @@ import time
 
 from workbook import bank
 from workbook.assignment import assigned_variant
+from workbook.kinds.build import Build
 from workbook.kinds.derive import Derive
 
 CODE = "BENCH"
@@ -53,7 +54,9 @@ def hand_in(student: str, ids: list[str], now: int) -> bytes:
                     {"answer": answer.typed(answer.key), "status": "correct", "at": now + 1}]
         records[ex_id] = {"attempts": 2, "updated": now + 1, "variant": v, "done": [v], "clean": [v], "solved": True,
                           "assigned": {CODE: {"variant": v, "attempts": attempts}}}
-    records[BUILD] = {"attempts": 1, "updated": now, "code": bank.get(BUILD).solution, "solved": True,
+    build = bank.get(BUILD)
+    assert isinstance(build, Build), BUILD
+    records[BUILD] = {"attempts": 1, "updated": now, "code": build.solution, "solved": True,
                       "done": [0], "clean": [0]}
     data = {"format": "robotics-math-workbook-hand-in", "version": 1, "handedIn": "2026-01-01T00:00:00Z",
             "student": student, "assignment": {"class": CODE, "exercises": [*ids, BUILD], "due": None},
