@@ -125,10 +125,12 @@ export async function initClassPage(shared, siteRoot) {
     state.trs = new Map();
     await giveWay();
     const stats = el("div", { className: "wb-class-worked" }, el("p", { textContent: "Working out which exercises worked…" }));
+    const mistakes = el("div", {}, el("p", { textContent: "Counting the mistakes…" }));
     results.replaceChildren(el("h2", { textContent: "Students and exercises" }), legend(), tableRegion(state, pageOf()), pager,
-      el("h2", { textContent: "Which exercises worked" }), stats,
-      el("h2", { textContent: "Most common mistakes" }), renderMistakes(state.rows, state.ids));
+      el("h2", { textContent: "Which exercises worked" }), stats, el("h2", { textContent: "Most common mistakes" }), mistakes);
     csv.hidden = gradebook.hidden = false;
+    await giveWay(); // the table is laid out in a task of its own
+    mistakes.replaceWith(renderMistakes(state.rows, state.ids));
     await giveWay();
     const started = performance.now();
     stats.replaceChildren(statsTable(await classStats(state.rows, state.ids)));
