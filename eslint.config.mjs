@@ -26,7 +26,7 @@ export default [
     files: [SERVICE_WORKER],
     languageOptions: {
       sourceType: "script",
-      globals: { ...globals.serviceworker, __WB_VERSION__: "readonly", __WB_FILES__: "readonly" },
+      globals: { ...globals.serviceworker, __WB_VERSION__: "readonly", __WB_FILES__: "readonly", __WB_WIRE_BYTES__: "readonly" },
     },
   },
 ];

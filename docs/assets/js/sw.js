@@ -32,6 +32,7 @@
 
 const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
+const WIRE_BYTES = __WB_WIRE_BYTES__; // the whole copy's download, gzip as the host sends it (offline.py)
 
 const SCOPE = self.registration.scope;
 const PREFIX = `robotics-workbook:${new URL(SCOPE).pathname}:`;
@@ -99,7 +100,7 @@ async function unseal() {
   await (await caches.open(CACHE)).delete(SEAL);
 }
 
-/** {state, files, total, bytes, totalBytes}: what this browser holds of this version. */
+/** {state, files, total, bytes, totalBytes, wireBytes}: what this browser holds of this version. */
 async function status() {
   const complete = await sealed();
   let files = 0;
@@ -112,7 +113,7 @@ async function status() {
     }
   }
   const state = complete ? "complete" : copying ? "copying" : "partial";
-  return { type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes, totalBytes: TOTAL_BYTES };
+  return { type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes, totalBytes: TOTAL_BYTES, wireBytes: WIRE_BYTES };
 }
 
 async function broadcast(message) {
