@@ -204,7 +204,9 @@ def test_the_grader_is_named_and_a_changed_mark_is_marked(page, site_url):
     s = "fixed"
     recs = {"0.1": record("0.1", CODE, s, [(answer("0.1", CODE, s, True), "incorrect")], NOW),
             "0.2": record("0.2", CODE, s, [(answer("0.2", CODE, s, True), "correct")], NOW)}
-    give(page, site_url, [("fixed.json", hand_in(CODE, s, ids, recs))])
+    old = json.loads(hand_in(CODE, s, ids, recs))
+    old["grader"] = {"version": "0.0.9", "bank": "000000000000"}  # the grader the student's page said it was
+    give(page, site_url, [("fixed.json", json.dumps(old).encode())])
     changed = page.locator("td[data-wb-exercise='0.1']")
     assert changed.get_attribute("data-wb-cell") == "verified" and changed.get_attribute("data-wb-changed") == "true"
     changed.locator("button").click()
@@ -214,6 +216,10 @@ def test_the_grader_is_named_and_a_changed_mark_is_marked(page, site_url):
     v = version.describe()
     page.wait_for_function("() => document.querySelector('[data-wb-grader]').textContent !== ''")
     assert page.locator("[data-wb-grader]").text_content() == f"Re-graded here by the workbook's grader version {v['version']}, bank {v['bank']}."
+    flags = page.locator("tr[data-wb-student='fixed'] th")
+    assert flags.get_attribute("data-wb-flags") == "other-grader"
+    flags.locator("button").click()
+    assert f"by grader 0.0.9, bank 000000000000; re-graded here by {v['version']}, bank {v['bank']}" in flags.text_content()
     text = page.locator("article").text_content()
     assert "not re-run here" not in text and "run again here" in text
 

@@ -6,6 +6,7 @@
 // exercises worked (class-stats.js), the class's most common mistakes and two CSVs
 // (class-csv.js): the long table and the gradebook.
 
+import { fold } from "./assignment-hash.js";
 import { gradeLearner, problemOf, readLearner } from "./class-grade.js";
 import { groupRows } from "./class-rows.js";
 import { legend, rowElement, sortRows, tableRegion } from "./class-table.js";
@@ -57,12 +58,13 @@ function renderMistakes(rows, ids) {
   return section;
 }
 
-/** The grader's own words for which grader it is ({"op": "version"}), for the page to name. */
+/** The grader's own words for which grader it is ({"op": "version"}), for the page to name; and {version, bank} or null. */
 async function graderVersion(runtime) {
   const reply = await runtime.request({ op: "version" });
-  if (!reply.ok) return "Re-graded here by the workbook's grader (its version could not be read).";
+  if (!reply.ok) return { text: "Re-graded here by the workbook's grader (its version could not be read).", grader: null };
   const { version, bank } = reply.value;
-  return `Re-graded here by the workbook's grader version ${version}, ${bank ? `bank ${bank}` : "its bank's hash not known in this start (compiled files only)"}.`;
+  return { text: `Re-graded here by the workbook's grader version ${version}, ${bank ? `bank ${bank}` : "its bank's hash not known in this start (compiled files only)"}.`,
+    grader: bank ? { version, bank } : null };
 }
 
 export async function initClassPage(shared, siteRoot) {
@@ -119,7 +121,7 @@ export async function initClassPage(shared, siteRoot) {
   previous.addEventListener("click", () => turn(-1));
   next.addEventListener("click", () => turn(1));
   const draw = async () => {
-    state.rows = groupRows(state.learners);
+    state.rows = groupRows(state.learners, await named);
     state.ids = order.filter((id) => state.learners.some((l) => l.cells[id]));
     if (!state.rows.length) return results.replaceChildren();
     state.trs = new Map();
@@ -145,13 +147,14 @@ export async function initClassPage(shared, siteRoot) {
     placeRows();
   };
   const runtime = withSandbox(shared.runtime); // Build code runs in the sandbox worker, one learner's at a time
-  graderVersion(shared.runtime).then((text) => {
+  const named = graderVersion(shared.runtime).then(({ text, grader }) => {
     version.textContent = text;
+    return grader;
   });
   async function takeOne(file, progress) {
     try {
       const learner = readLearner(file.name, await file.text(), known);
-      Object.assign(learner, { file: file.name, seq: state.seq++ });
+      Object.assign(learner, { file: file.name, seq: state.seq++, idKey: learner.kind === "hand-in" ? await fold(learner.student) : null });
       const onRun = (id, text) => {
         status.textContent = `${progress()} Running ${learner.student}’s code for exercise ${id}${text ? `: ${text}` : "…"}`;
       };

@@ -1,19 +1,18 @@
 // The class page's rows (class-page.js): one row per student, whatever files came in.
 // Hand-ins of one student (the same class code and the same id after the assignment's own
-// tidying, assignment-hash.js) are one row, showing the newest file (by its hand-in time,
+// folding, assignment-hash.js fold(): `idKey`, set as the file is read) are one row, showing the newest file (by its hand-in time,
 // then its latest answer) with the others listed in it; two students whose files had the same
 // name are two rows; a hand-in for another class code than most files' is flagged, and so is
 // a progress export (it names no class or student: its row is named after the file).
 
-import { tidy } from "./assignment-hash.js";
 import { lateOf } from "./class-grade.js";
 
 const latestAnswer = (l) => Math.max(0, ...Object.values(l.records).map((r) => (Number.isFinite(r?.updated) ? r.updated : 0)));
 const newestFirst = (a, b) => (Date.parse(b.handedIn ?? "") || 0) - (Date.parse(a.handedIn ?? "") || 0)
   || latestAnswer(b) - latestAnswer(a) || b.seq - a.seq;
 
-/** The row key of a learner: a hand-in's class and tidied id; a progress export is its own. */
-export const rowKey = (l) => (l.kind === "hand-in" ? `hand-in\n${l.code}\n${tidy(l.student, { fold: true })}` : `progress\n${l.seq}`);
+/** The row key of a learner: a hand-in's class and folded id (`idKey`); a progress export is its own. */
+export const rowKey = (l) => (l.kind === "hand-in" ? `hand-in\n${l.code}\n${l.idKey}` : `progress\n${l.seq}`);
 
 /** The class code most hand-ins are for (the first read of the most frequent), or null. */
 export function mainClass(learners) {
@@ -27,9 +26,10 @@ export function mainClass(learners) {
 /**
  * Rows {key, learner (shown), others (older files, newest first), flags: [{kind, text}]} from
  * every learner read (each with `file`, `seq`, `cells`). Flag kinds: "duplicate", "same-file-name",
- * "other-class", "progress", "late".
+ * "other-class", "progress", "late", "other-grader" (the hand-in names the grader the student's
+ * page used, and it is not `grader`, the one that re-graded it here).
  */
-export function groupRows(learners) {
+export function groupRows(learners, grader = null) {
   const groups = new Map();
   for (const l of learners) {
     const key = rowKey(l);
@@ -52,6 +52,10 @@ export function groupRows(learners) {
       flags.push({ kind: "other-class", text: `a hand-in for class “${learner.code}”, not “${main}” like most files` });
     }
     if (learner.kind === "progress") flags.push({ kind: "progress", text: "a progress export, not a hand-in: no class code or student id; its last answers are graded at the numbers they were given for" });
+    const then = learner.grader;
+    if (grader && then && (then.version !== grader.version || then.bank !== grader.bank)) {
+      flags.push({ kind: "other-grader", text: `graded on the student's page by grader ${then.version}, bank ${then.bank}; re-graded here by ${grader.version}, bank ${grader.bank}` });
+    }
     if (learner.late) flags.push({ kind: "late", text: `handed in after the due date (${learner.due}), by the student's clock` });
     rows.push({ key, learner, others, flags });
   }

@@ -19,7 +19,7 @@ function symbol(text, className = "wb-class-symbol") {
   span.setAttribute("aria-hidden", "true");
   return span;
 }
-const FLAG_SYMBOL = { duplicate: "⊕", "same-file-name": "≡", "other-class": "≠", progress: "⤓", late: "!" };
+const FLAG_SYMBOL = { duplicate: "⊕", "same-file-name": "≡", "other-class": "≠", progress: "⤓", late: "!", "other-grader": "Δ" };
 
 /** The table's cell text and its state, for a learner's exercise. */
 export function cellState(c) {
@@ -210,5 +210,6 @@ export function legend() {
     item(CHANGED.symbol, `${CHANGED.text}: a re-graded verdict differs from the one the student's page showed`),
     item("late", "handed in after the due date, by the student's clock"), item(FLAG_SYMBOL.duplicate, "more than one file"),
     item(FLAG_SYMBOL["other-class"], "another class code"), item(FLAG_SYMBOL.progress, "a progress export"),
-    item(FLAG_SYMBOL["same-file-name"], "a file name another student's file had"));
+    item(FLAG_SYMBOL["same-file-name"], "a file name another student's file had"),
+    item(FLAG_SYMBOL["other-grader"], "beside a name: the student's page graded with another grader version"));
 }
