@@ -11,7 +11,8 @@ answer kind without its package (``workbook/answer_kinds/A/`` and
 placeholder that the exercise's generator does not fill (``exercise_text.py``).
 It also writes ``assets/exercises.json`` (the chapters and the ids on each, each
 exercise's title, which ones draw variants and which join the review queue: for the
-progress pages and the Practise page) and exposes the contract to the theme
+progress pages and the Practise page; and, for the teach page, why an exercise has the same
+right answer for every student, ``sameAnswer``) and exposes the contract to the theme
 templates as ``config.extra.contract``.
 """
 
@@ -30,7 +31,7 @@ from blocks import BlockError, ExerciseBlock, FigureBlock, parse
 from exercise_text import text_of
 from render_exercise import PageTools, chapter_list_html, dom_id, exercise_html, exercise_index_html
 from render_figure import figure_html
-from workbook import bank, figures, registry
+from workbook import bank, copying, figures, registry
 from workbook.contract import ANSWER_KINDS, DATA, KINDS, REVIEW_KINDS
 from workbook.kinds.build import Build
 from workbook.variants import VariantError, fill
@@ -208,6 +209,7 @@ def on_post_build(config, **kwargs):
     variants = [ex.id for ex in everything if getattr(ex, "vary", None) is not None]
     reviewed = [ex.id for ex in everything if ex.kind in REVIEW_KINDS]
     titles = {ex.id: ex.title for ex in everything}
+    same = {ex.id: why for ex in everything if (why := copying.same_answer(ex))}
     out.write_text(json.dumps({"version": 2, "chapters": chapters, "variants": variants, "reviewed": reviewed,
-                               "titles": titles},
+                               "titles": titles, "sameAnswer": same},
                               ensure_ascii=False, separators=(",", ":")))

@@ -44,6 +44,7 @@ from .number_format import prose
 from .reference.domain import Undefined
 from .steps import Step
 from .tolerance import FIGURES, REL, agrees, clean
+from .typed_rounding import half_units, spread
 from .verdict import Verdict
 
 
@@ -104,6 +105,7 @@ class Value:
     home: Place
     place: Place
     right: Any = None
+    half: Any = None  # a typed step's half units (workbook.typed_rounding), 0 where taken as exact
 
     def corrected(self, values: list[Value]) -> list[Value]:
         """``values`` with this one made right: a step's key in its place, an earlier exercise's
@@ -174,14 +176,14 @@ def step_values(ex: Worked, mine: Mapping[str, Any], before: str | None, earlier
         reading = kind.reader.read(kind, mine[s.name])
         if isinstance(reading, Verdict):
             continue
-        value = value_of(reading)
+        value, half = value_of(reading), half_units(reading)
         home = Place(step=s.name)
         if kind.marker.mark(kind, reading).status == "correct":
-            out.append(Value(s.name, value, False, _step_says(ex, s.name), home, home))
+            out.append(Value(s.name, value, False, _step_says(ex, s.name), home, home, half=half))
             continue
         found = _follows_from(ex, s.name, mine[s.name], earlier + out)
         place = found.place if isinstance(found, Value) else home
-        out.append(Value(s.name, value, True, _step_says(ex, s.name), home, place, right=kind.key))
+        out.append(Value(s.name, value, True, _step_says(ex, s.name), home, place, right=kind.key, half=half))
     return out
 
 
@@ -196,7 +198,7 @@ def _entries(key: Any) -> list[float]:
     return [float(v) for row in key for v in row] if isinstance(key, tuple) else [float(key)]
 
 
-def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
+def _agrees(kind: AnswerKind, answer: object, target: AnswerKind, room: list[float] | None = None) -> bool:
     """``answer`` (read as ``kind`` reads it) agrees with ``target``'s key, entry by entry as a
     direct answer does. The scale of the question (the largest of the right key's and the
     recomputed key's entries) sets a floor for the entries that cancel only: an entry of the
@@ -209,8 +211,7 @@ def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
     wanted = _entries(target.key)
     if not all(math.isfinite(w) for w in wanted):
         raise Undefined("the result is not a finite number")
-    scale = max(abs(v) for v in _entries(kind.key) + wanted)
-    floor = REL * scale
+    floors = [REL * scale for scale in _scales(kind.key, target.key)]
     rows = reading if isinstance(reading, list) else [[reading]]
     got = [
         (r.value, r.half_unit if r.figures is not None and r.figures >= FIGURES else None) for row in rows for r in row
@@ -222,19 +223,42 @@ def _agrees(kind: AnswerKind, answer: object, target: AnswerKind) -> bool:
         if getattr(kind, "periodic", False)
         else None
     )
-    for (value, half), want in zip(got, wanted):
+    for (value, half), want, floor, moves in zip(got, wanted, floors, room or [0.0] * len(wanted)):
         want = clean(want)
         if turn:
             value = want + math.remainder(value - want, turn)
-        cancels = abs(want) <= floor
-        if not agrees(value, want, rel=getattr(kind, "rel_tol", REL), half_unit=half, floor=floor if cancels else 0.0):
+        floor = max(floor if abs(want) <= floor else 0.0, moves)  # an entry that cancels; the inputs' rounding
+        if not agrees(value, want, rel=getattr(kind, "rel_tol", REL), half_unit=half, floor=floor):
             return False
     return True
 
 
+def _scales(right: Any, recomputed: Any) -> list[float]:
+    """Each entry's scale, for the floor of an entry that cancels: a number's is the larger of the right key and
+    the recomputed one; a matrix entry's is the largest recomputed entry in its row and its column, the terms
+    that meet in it. An entry far from the others (5.7's Ω₃₃ = 1000 beside an x–y block of 0.02) lends its
+    size to none of them, so a block made small by a wrong determinant is held to its own figures.
+
+    >>> _scales(2.0, 3e-9), _scales(((1.0, 0.0), (0.0, 1000.0)), ((0.02, 0.0), (0.0, 1000.0)))
+    ([2.0], [0.02, 1000.0, 1000.0, 1000.0])
+    """
+    if not isinstance(recomputed, tuple):
+        return [max(abs(float(right)), abs(float(recomputed)))]
+    rows = [[abs(float(v)) for v in row] for row in recomputed]
+    return [max(max(row), max(r[j] for r in rows)) for row in rows for j in range(len(row))]
+
+
 def _follows(ex: Worked, step: str | None, answer: object, values: list[Value]) -> bool:
+    """``answer`` agrees with the key worked from ``values``, or with one the typed steps' own rounding
+    allows (:mod:`workbook.typed_rounding`)."""
     kind = ex.answer if step is None else ex.step_answers[step]
-    return _agrees(kind, answer, _carried_kind(ex, step, {v.name: v.value for v in values}))
+    given = {v.name: v.value for v in values}
+    target = _carried_kind(ex, step, given)
+    if _agrees(kind, answer, target):
+        return True
+    halves = {v.name: v.half for v in values if v.half is not None}
+    room = spread(lambda g: _entries(_carried_kind(ex, step, g).key), given, halves) if halves else None
+    return room is not None and _agrees(kind, answer, target, room)
 
 
 def _follows_from(ex: Worked, step: str | None, answer: object, values: list[Value]) -> Value | Undefined | None:

@@ -78,7 +78,7 @@ def build(ex_id: str, declared: tuple[Step, ...], made: Mapping[str, Any] | None
     names = [s.name for s in declared]
     if sorted(made) != sorted(names):
         raise ValueError(f"exercise {ex_id}: its steps are {names}, but make() returns steps {sorted(made)}")
-    return {s.name: s.answer.build(f"{ex_id} (step {s.name})", **made[s.name]) for s in declared}
+    return {s.name: s.answer.build(f"{ex_id} (step {s.name})", slips_of=ex_id, **made[s.name]) for s in declared}
 
 
 def check_sent(sent: object) -> None:

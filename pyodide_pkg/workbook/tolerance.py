@@ -23,6 +23,7 @@ False
 from __future__ import annotations
 
 import math
+from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Decimal
 
 REL = 1e-3
 FIGURES = 3  # a value typed to this many significant figures or more may use its own rounding
@@ -81,43 +82,52 @@ def agrees(value: float, key: float, rel: float = REL, exact: bool = False, half
     return abs(value - key) <= rel * abs(key) * (1 + 1e-12)
 
 
-def is_close_miss(value: float, key: float, rel: float = REL, half_unit: float | None = None) -> bool:
-    """Not accepted, but within 2 % of a non-zero key (or 5 floors of a zero key), or the key
-    rounded to the figures typed (``half_unit``: half a unit of the last digit typed, however few).
+def is_close_miss(value: float, key: float, rel: float = REL, figures: int | None = None) -> bool:
+    """Not accepted, but within 2 % of a non-zero key (or 5 floors of a zero key), or the key rounded to
+    the significant figures typed (``figures``, however few: :func:`is_rounding`).
 
     >>> is_close_miss(0.1438, 1 / 7), is_close_miss(0.1429, 1 / 7), is_close_miss(0.2, 1 / 7)
     (True, False, False)
-    >>> is_close_miss(0.12, 0.12341), is_close_miss(0.12, 0.12341, half_unit=0.005)  # 2 figures, rounded right
+    >>> is_close_miss(0.12, 0.12341), is_close_miss(0.12, 0.12341, figures=2)  # 2 figures, rounded right
     (False, True)
+    >>> is_close_miss(1.0, math.sqrt(0.5), figures=1)  # 0.7071 to 1 figure is 0.7, not 1
+    False
     >>> is_close_miss(-0.1429, 1 / 7)  # a sign slip is not "close"
     False
     >>> is_close_miss(0.003, 0.0), is_close_miss(0.02, 1e-17), is_close_miss(0.0005, 0.0)
     (True, False, False)
-    >>> is_close_miss(0.0, -0.1, half_unit=0.5)  # 0 is no rounding of −0.1
+    >>> is_close_miss(0.0, -0.1, figures=1)  # 0 is no rounding of −0.1
     False
     """
     if not (math.isfinite(value) and math.isfinite(key)) or agrees(value, key, rel):
         return False
     key = clean(key)
-    if half_unit is not None and is_rounding(value, key, half_unit):
+    if figures is not None and is_rounding(value, key, figures):
         return True
     if key == 0.0:
         return abs(value) <= 5 * ZERO_FLOOR
     return abs(value - key) <= CLOSE * abs(key)
 
 
-def is_rounding(value: float, key: float, half_unit: float) -> bool:
-    """``value`` is ``key`` rounded to the last digit typed (``half_unit``: half a unit of that digit) with at
-    least one significant figure: not zero, the key's sign, within half a unit. 0 is no rounding of −0.1.
+def is_rounding(value: float, key: float, figures: int | None) -> bool:
+    """``value`` is ``key`` rounded to ``figures`` significant figures (half up, or half to even): not
+    zero, and the key's sign. ``1`` is no rounding of 0.7071 (to 1 figure it is 0.7); 0 is none of −0.1.
 
-    >>> is_rounding(0.12, 0.12341, 0.005), is_rounding(0.0, -0.1, 0.5), is_rounding(0.1, -0.1, 0.5)
-    (True, False, False)
-    >>> is_rounding(-0.1, -0.1234, 0.05), is_rounding(-0.2, -0.1234, 0.05)
-    (True, False)
+    >>> is_rounding(0.12, 0.12341, 2), is_rounding(0.7, 0.7071, 1), is_rounding(1.0, 0.7071, 1)
+    (True, True, False)
+    >>> is_rounding(0.0, -0.1, 1), is_rounding(0.1, -0.1, 1), is_rounding(-0.1, -0.1234, 1)
+    (False, False, True)
+    >>> is_rounding(1.0, 0.97, 1), is_rounding(0.13, 0.125, 2), is_rounding(0.12, 0.125, 2), is_rounding(1200, 1234, 2)
+    (True, True, True, True)
     """
     key = clean(key)
-    return (key != 0.0 and value != 0.0 and (value > 0) == (key > 0)
-            and abs(value - key) <= half_unit * (1 + 1e-9))
+    if not figures or figures < 1 or key == 0.0 or value == 0.0 or (value > 0) != (key > 0) \
+            or not (math.isfinite(value) and math.isfinite(key)):
+        return False
+    digits = Decimal(repr(key))
+    step = Decimal(1).scaleb(digits.adjusted() - (figures - 1))
+    return any(math.isclose(value, float(digits.quantize(step, rounding=way)), rel_tol=1e-9)
+               for way in (ROUND_HALF_UP, ROUND_HALF_EVEN))
 
 
 def is_sign_slip(value: float, key: float, rel: float = REL) -> bool:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
+from pathlib import Path
 from urllib.parse import urlsplit
 
 from playwright.sync_api import Locator, Page
@@ -17,12 +18,9 @@ def role(name: str, extra: str = "") -> str:
         raise KeyError(f"no role {name!r} in the contract")
     return f'[{ATTR.role}="{name}"]{extra}'
 
-CHAPTERS = {
-    0: "chapters/00-rotations-2d/", 1: "chapters/01-transforms/", 2: "chapters/02-rotations-3d/",
-    3: "chapters/03-ekf-predict/", 4: "chapters/04-ekf-update/", 5: "chapters/05-pose-graph-slam/",
-    6: "chapters/06-arm-kinematics/", 7: "chapters/07-jacobians/", 8: "chapters/08-pid-control/",
-    9: "chapters/09-capstone/", 10: "chapters/10-poses-3d/",
-}
+# every chapter page, by its number, from the pages themselves (docs/chapters/NN-slug.md)
+CHAPTERS = {int(page.name[:2]): f"chapters/{page.stem}/"
+            for page in sorted((Path(__file__).resolve().parents[2] / "docs" / "chapters").glob("[0-9][0-9]-*.md"))}
 
 
 def open_chapter(page: Page, site_url: str, n: int, wait_ready: bool = True) -> None:

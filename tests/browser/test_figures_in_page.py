@@ -198,3 +198,28 @@ def test_ch10_poses_3d_chain_and_both_quaternion_orders(tour):
     page.wait_for_function("([selector, before]) => document.querySelector(selector).innerHTML !== before",
                            arg=[role("figure") + " svg", before])
     assert readout(page, "p") == text  # turning the view moves no frame
+
+
+def test_ch13_icp_steps_onto_the_map_from_a_good_start_and_not_from_a_poor_one(tour):
+    """Chapter 13: one ICP iteration from the keyboard takes the scan from 15° and 0.3 m off onto the
+    map; with the first guess turned to 60° off, twelve iterations leave it in a wrong pose."""
+    from workbook.figures.align_icp import draw
+
+    page = tour(13)  # the module's one tab: one booted grader for these tests
+    assert readout(page, "error") == "15.0°, 0.747 m"
+    assert press(page, "steps", "ArrowRight", "error") == "0.0°, 0.000 m"
+    assert slider_value(page, "steps") == 1
+    figure(page).locator('input[type="range"][data-param="steps"]').focus()
+    page.keyboard.press("End")
+    assert slider_value(page, "steps") == 12
+    figure(page).locator('input[type="range"][data-param="turn"]').focus()
+    for _ in range(9):  # the turn from 15° to 60°, in steps of 5°
+        page.keyboard.press("ArrowRight")
+    assert slider_value(page, "turn") == 60
+    want = draw({"turn": 60, "shift": 0.3, "steps": 12})["readouts"]
+    assert want["error"] != "0.0°, 0.000 m"
+    page.wait_for_function(
+        "([selector, want]) => document.querySelector(selector).textContent === want",
+        arg=[role("figure") + " " + role("readout") + '[data-readout="error"]', want["error"]],
+    )
+    assert "not reached" in readout(page, "verdict")

@@ -7,6 +7,7 @@ some input) and RIGHT ones (correct rewrites in another style). A program is eit
 
 from __future__ import annotations
 
+import holdout_programs_align
 import holdout_programs_ekf
 import holdout_programs_poses
 import holdout_programs_se2
@@ -154,6 +155,8 @@ WRONG: dict[str, dict[str, object]] = {
             ("or (u < u_min and e < 0)", "or (u_old < u_min and e < 0)")],
         "integral clipped to the limits": [("        new_integral = integral  # integrating", "        new_integral = min(new_integral, u_max) if e > 0 else max(new_integral, u_min)  # integrating")],
         "dt = 0 still integrates": [("new_integral = integral + e * dt", "new_integral = integral + e * (dt or 1)")],
+        "at the limit taken as above it": [("(u > u_max and e > 0) or (u < u_min and e < 0)",
+                                            "(u >= u_max and e > 0) or (u <= u_min and e < 0)")],
     },
     "9.9": {
         "bearing innovation not wrapped": [("wrap(z[1] - (math.atan2(dy, dx) - x[2]))", "z[1] - (math.atan2(dy, dx) - x[2])")],
@@ -353,3 +356,4 @@ def nav_step(x, P, u, z, landmark, waypoint, dt, Q, R):
 WRONG["4.10"], RIGHT["4.10"] = holdout_programs_ekf.WRONG, holdout_programs_ekf.RIGHT
 WRONG["5.10"], RIGHT["5.10"] = holdout_programs_se2.WRONG, holdout_programs_se2.RIGHT
 WRONG["10.8"], RIGHT["10.8"] = holdout_programs_poses.WRONG, holdout_programs_poses.RIGHT
+WRONG["13.9"], RIGHT["13.9"] = holdout_programs_align.WRONG, holdout_programs_align.RIGHT

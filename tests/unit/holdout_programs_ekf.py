@@ -33,6 +33,7 @@ WRONG = {
     "covariance not updated": [("return (x_new, P_new)", "return (x_new, P)")],
     "innovation reversed": [("y = [z[0] - h[0], wrap(z[1] - h[1])]", "y = [h[0] - z[0], wrap(h[1] - z[1])]")],
     "S without R": [("for k in range(3)) + R[i][j] for j", "for k in range(3)) for j")],
+    "R's diagonal only": [("for k in range(3)) + R[i][j] for j", "for k in range(3)) + (R[i][j] if i == j else 0.0) for j")],
     "no refusal at the landmark": [("    if q == 0:\n        return None  # the landmark is where the robot is: no bearing, no H\n", "")],
 }
 

@@ -13,6 +13,8 @@ WRONG: dict[str, object] = {
     "w made non-negative": [("    return [a * c0 + b * c1 for c0, c1 in zip(q0, q1)]",
                              "    q = [a * c0 + b * c1 for c0, c1 in zip(q0, q1)]\n"
                              "    return q if q[0] >= 0 else [-c for c in q]")],
+    "no clamp before acos": [("math.acos(min(d, 1.0))", "math.acos(d)")],
+    "straight line for arcs up to 11.5°": [("    if s < 1e-6:", "    if s < 0.2:")],
     "plain lerp made unit everywhere": [("    if s < 1e-6:", "    if True:")],
 }
 

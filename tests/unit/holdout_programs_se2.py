@@ -101,6 +101,9 @@ WRONG = {
     "error the other way round, Jacobians kept": [("e = np.array(z, dtype=float) - h", "e = h - np.array(z, dtype=float)")],
     "edge angle error not wrapped": [("        e[2] = wrap(e[2])\n", "")],
     "result angles not wrapped": [("    new[:, 2] = wrap(new[:, 2])\n", "")],
+    "the prediction's angle wrapped, not the error's": [
+        ("h = np.append(Rt @ d, x[j, 2] - x[i, 2])", "h = np.append(Rt @ d, wrap(x[j, 2] - x[i, 2]))"),
+        ("        e[2] = wrap(e[2])\n", "")],
     "nothing wrapped": [("        e[2] = wrap(e[2])\n", ""), ("    new[:, 2] = wrap(new[:, 2])\n", "")],
     "pose 0 not anchored (least squares)": [("    dx = np.zeros(3 * n)\n    dx[3:] = np.linalg.solve(H[3:, 3:], -b[3:])",
                                              "    dx = np.linalg.lstsq(H, -b, rcond=None)[0]")],
@@ -118,6 +121,7 @@ SAYS = {
     "error the other way round, Jacobians kept": ("Every pose moved by exactly minus",),
     "edge angle error not wrapped": ("These are the poses of a step whose edge angle",),
     "result angles not wrapped": ("The angle of pose",),
+    "the prediction's angle wrapped, not the error's": ("These are the poses of a step whose edge angle",),
     "nothing wrapped": ("The angle of pose", "These are the poses of a step whose edge angle"),
     "pose 0 not anchored (least squares)": ("Pose 0 moved",),
     "pose 0 put at the origin": ("Pose 0 moved",),

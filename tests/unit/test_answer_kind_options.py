@@ -1,11 +1,17 @@
 """Each answer kind takes only the options it honours; a Derive exercise holds one; mistakes fail the build."""
 
+import ast
+import dataclasses
+import inspect
+
 import pytest
 
+from workbook import bank
 from workbook.answer_kinds import classes
 from workbook.answer_kinds.expression import formula
 from workbook.answer_kinds.matrix import matrix
 from workbook.answer_kinds.number import number
+from workbook.kinds import derive
 from workbook.kinds.derive import Derive
 from workbook.variants import Param, VariantError, Vary
 
@@ -51,3 +57,23 @@ def test_options_are_checked_for_sense():
         Derive(id="9.94", title="t", spec=matrix(key=((1.0,), (2.0,)), units=("m",)))
     with pytest.raises(ValueError, match="names are for a vector"):
         Derive(id="9.93", title="t", spec=matrix(key=((1.0, 2.0), (3.0, 4.0)), names=("a", "b", "c", "d")))
+
+
+def test_a_derive_exercise_is_built_complete_and_never_changed():
+    """Derive's fields are what the bank wrote: the draw is computed once and read through read-only views,
+    and a variant is another exercise (dataclasses.replace), never the same one changed (issue 47)."""
+    tree = ast.parse(inspect.getsource(derive))
+    calls = [n for n in ast.walk(tree) if isinstance(n, ast.Attribute) and n.attr == "__setattr__"]
+    assert not calls, "kinds/derive.py changes a frozen dataclass through object.__setattr__"
+    ex = bank.get("2.1")
+    other = ex.variant(5)
+    assert other is not ex and ex.seed == 0 and other.seed == 5 and other.title != ex.title
+    assert {f.name: getattr(other, f.name) for f in dataclasses.fields(other) if f.name not in ("seed", "title")} == \
+        {f.name: getattr(ex, f.name) for f in dataclasses.fields(ex) if f.name not in ("seed", "title")}
+    for name in ("values", "params", "step_answers"):
+        copy = getattr(ex, name)
+        copy["x"] = 1  # the caller's own copy: the exercise does not change
+        assert "x" not in getattr(ex, name)
+        with pytest.raises(TypeError):
+            getattr(ex.drawn, "steps" if name == "step_answers" else name)["x"] = 1  # the draw is read-only
+    assert other.variant(0) == ex and other.variant(0).values == ex.values

@@ -11,11 +11,14 @@ from __future__ import annotations
 import math
 import re
 from html import escape
+from pathlib import Path
 
 import pytest
 
+from holdout_programs_debug import HALF_FIXES
 from workbook import bank
 from workbook.api import dispatch
+from workbook.bank import ch10_bugs
 from workbook.contract import ATTR, REVIEW_KINDS, ROLE
 from workbook.figures import symptoms
 from workbook.kinds.base import PlainPage
@@ -23,6 +26,7 @@ from workbook.number_format import fmt, prose
 from workbook.reference.arm import forward_kinematics_2link
 from workbook.reference.pid import simulate_saturated
 from workbook.reference.rotation3d import quat_norm
+from workbook.reference.se3 import compose, invert, transform_point
 
 HUNTS = ("0.8", "2.9", "3.11", "3.12", "4.9", "6.8", "7.9", "8.9", "10.9", "10.10")
 
@@ -157,6 +161,79 @@ def test_scalar_first_reads_the_identity_as_a_half_turn():
     assert "facing 180° instead of 0°" in ex.bug
     for args in ex.cases:
         assert close(fixed(*args), ex.reference(*args))
+
+
+CH10 = (Path(__file__).resolve().parents[2] / "docs" / "chapters" / "10-poses-3d.md").read_text(encoding="utf-8")
+
+
+def _statement(exercise_id: str) -> str:
+    """An exercise's statement in chapter 10, its lines joined (up to its hint)."""
+    start = CH10.index(f"::: exercise {exercise_id} |")
+    return " ".join(CH10[start:CH10.index("::: hint", start)].split())
+
+
+def test_10_9_says_where_the_bug_puts_a_detection_straight_ahead():
+    """10.9's statement: nearer or farther, higher or lower, by tilt; in the case the explanation quotes
+    (30° down) the point lands 0.31 m nearer and only 0.083 m low, so "higher or lower" alone is not it."""
+    text = _statement("10.9")
+    assert "nearer or farther and higher or lower than they are" in text and "tilt" in text
+    T_world_base = bank.get("10.9").cases[0][0]
+    seen = set()
+    for pitch in (5, 10, 20, 30, 45, 60, 80):
+        T_cam_base = ch10_bugs._mount(pitch, 0.3, 0.5)
+        right = transform_point(compose(T_world_base, invert(T_cam_base)), (1.0, 0.0, 0.0))
+        wrong = transform_point(compose(T_world_base, T_cam_base), (1.0, 0.0, 0.0))
+        camera = transform_point(compose(T_world_base, invert(T_cam_base)), (0.0, 0.0, 0.0))
+        nearer = math.dist(right[:2], camera[:2]) - math.dist(wrong[:2], camera[:2])
+        seen |= {"nearer" if nearer > 0 else "farther", "lower" if wrong[2] < right[2] else "higher"}
+        if pitch == 30:
+            assert math.isclose(nearer, 0.3098, abs_tol=1e-4) and math.isclose(wrong[2] - right[2], -0.0830, abs_tol=1e-4)
+    assert seen == {"nearer", "farther", "lower", "higher"}
+
+
+def test_10_10_says_a_ground_robot_always_hears_180_degrees():
+    """10.10's statement: for a robot on the floor (a turn about z only), the bug reports 180° whatever the yaw,
+    so it is right only when the robot really faces 180°; not "every heading it reports is wrong"."""
+    text = _statement("10.10")
+    assert "every heading it reports is wrong" not in text and "keeps reporting 180°, whichever way it turns" in text
+    _ex, buggy, fixed = programs("10.10")
+    for yaw_deg in range(-179, 181, 7):
+        half = math.radians(yaw_deg) / 2
+        q_msg = (0.0, 0.0, math.sin(half), math.cos(half))
+        assert math.isclose(abs(math.degrees(buggy(q_msg)[2])), 180.0)
+        assert math.isclose(math.degrees(fixed(q_msg)[2]), yaw_deg, abs_tol=1e-9)
+
+
+def test_chapter_10_says_where_slerp_s_division_fails():
+    """The unguarded SLERP formula is right to rounding down to Ω = 1e-7 rad; it fails (0/0) only when the dot
+    product rounds to 1, as the chapter now says (it said the division "loses all precision" near 0)."""
+    prose = " ".join(CH10.split("## Two traps")[0].split())
+    assert "loses all precision" not in prose and "down to $\\Omega = 10^{-7}$ rad" in prose
+
+    def unguarded(q0, q1, t):
+        omega = math.acos(min(sum(a * b for a, b in zip(q0, q1)), 1.0))
+        a, b = math.sin((1 - t) * omega) / math.sin(omega), math.sin(t * omega) / math.sin(omega)
+        return [a * x + b * y for x, y in zip(q0, q1)]
+
+    for exponent in range(1, 8):
+        for t in (0.1, 0.3, 0.75):
+            q1 = (math.cos(10.0 ** -exponent), 0.0, 0.6 * math.sin(10.0 ** -exponent), 0.8 * math.sin(10.0 ** -exponent))
+            half = math.atan2(math.hypot(q1[2], q1[3]), q1[0])  # the arc these rounded numbers really span
+            want = (math.cos(t * half), 0.0, 0.6 * math.sin(t * half), 0.8 * math.sin(t * half))
+            assert close(unguarded((1.0, 0.0, 0.0, 0.0), q1, t), want, tol=3e-16)
+    with pytest.raises(ZeroDivisionError):
+        unguarded((1.0, 0.0, 0.0, 0.0), (math.cos(1e-8), 0.0, math.sin(1e-8), 0.0), 0.5)
+
+
+@pytest.mark.parametrize("exercise_id,name", [(i, n) for i in HALF_FIXES for n in HALF_FIXES[i]])
+def test_a_repair_that_only_half_fixes_the_bug_disagrees_on_a_case(exercise_id, name):
+    ex = bank.get(exercise_id)
+    code = ex.code
+    for old, new in HALF_FIXES[exercise_id][name]:
+        assert old in code, old
+        code = code.replace(old, new)
+    half = load(code, ex.function)
+    assert any(not close(half(*args), ex.reference(*args)) for args in ex.cases), name
 
 
 @pytest.mark.parametrize("exercise_id", HUNTS)

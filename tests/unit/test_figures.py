@@ -355,3 +355,14 @@ def test_labels_never_overlap_each_other_or_the_vectors(name):
                 assert not segment_hits_box(p, q, box), f"{name} at {params}: {text!r} lies on a vector"
         count += 1
     assert count > 1000
+
+
+def test_a_parameter_beyond_any_float_is_a_figure_error_not_a_crash():
+    """An integer too large for a float (10**400) failed inside the grader (OverflowError, "internal");
+    it is outside every control's range, and the reply says so, for every figure and control."""
+    for name in figures.names():
+        for control in figures.get(name).controls:
+            for huge in (10**400, -(10**400)):
+                reply = json.loads(handle(json.dumps({"op": "figure", "figure": name, "params": {control.name: huge}})))
+                assert reply["ok"] is False and reply["error"]["kind"] == "figure", (name, control.name, reply)
+                assert "outside" in reply["error"]["message"] and control.label in reply["error"]["message"]

@@ -1,13 +1,16 @@
 """Formula answers: what a learner types for the variables, LaTeX, speed, and equivalence by evaluation."""
 
 import math
+import re
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+from workbook import bank
 from workbook.answer_kinds.expression.mark import equivalent
 from workbook.expr import InvalidAnswer, parse_formula
+from workbook.number_format import compact, prose
 
 ARM = ("theta1", "theta2", "L1", "L2")
 ARM_DOMAIN = {"theta1": (-math.pi, math.pi), "theta2": (-math.pi, math.pi), "L1": (0.2, 3.0), "L2": (0.2, 3.0)}
@@ -227,3 +230,27 @@ def test_any_formula_shown_as_latex_reads_back_as_the_same_formula(text):
     domain = {"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.5, 2.0), "L2": (0.5, 2.0)}
     same = equivalent(again, lambda **env: read.evaluate(env), domain)
     assert same is not False, (text, read.latex)
+
+
+@pytest.mark.parametrize("ex_id", ["3.9", "4.8", "6.6", "7.7"])
+@pytest.mark.parametrize("wrong", ["1", "2*L1", "theta1 + L2", "cos(theta)*v", "dx + dy"])
+def test_a_counterexample_names_the_point_it_was_computed_at(ex_id, wrong):
+    """"Not the same formula: at θ = 2.08 … yours gives 1, the answer −0.3950": evaluated at the printed point,
+    the key and the learner's formula give the printed numbers, all printed by the one printer (a true minus)."""
+    ex = bank.get(ex_id)
+    ans = ex.answer
+    try:
+        formula = parse_formula(wrong, ans.variables)
+    except InvalidAnswer:
+        pytest.skip(f"{wrong} names a variable {ex_id} does not have")
+    message = ex.check(wrong).message
+    said = re.fullmatch(r"Not the same formula: at (.*) yours gives (\S+), the answer (\S+)\.", message)
+    if said is None:
+        assert not message.startswith("Not the same formula: at"), message
+        return
+    point = {}
+    for pair in said[1].split(", "):
+        name, value = pair.split(" = ")
+        point[name] = float(value.replace("\u2212", "-"))
+        assert prose(point[name]) == value
+    assert said[2] == compact(formula.evaluate(point)) and said[3] == compact(ans.key(**point))

@@ -1,15 +1,19 @@
 """The number answer kind: precision-aware tolerance, the notations learners type, degrees in sin and cos."""
 
 import math
+import re
+from decimal import ROUND_HALF_EVEN, ROUND_HALF_UP, Decimal
 
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
+import many_draws
 from workbook import bank
 from workbook.answer_kinds.base import Slip
 from workbook.answer_kinds.number import number
 from workbook.number_format import fmt
+from workbook.tolerance import clean
 
 
 def answer(key, **options):
@@ -30,7 +34,7 @@ def test_a_value_typed_to_three_figures_may_use_its_own_rounding(typed, status):
 def test_close_says_how_many_figures_are_wanted():
     two = answer(0.12341).check("0.12")
     assert (two.status, two.tag) == ("incorrect", "close") and "3 significant figures" in two.message
-    assert "you typed 2" in two.message
+    assert "you gave 2 significant figures" in two.message
     far = answer(0.12341).check("0.1238")
     assert far.tag == "close" and "at least 3 significant figures" in far.message
 
@@ -145,3 +149,87 @@ def test_zero_typed_for_a_key_of_minus_a_tenth_is_plain_wrong():
     said = v.check(typed)
     assert said.status == "incorrect" and said.tag != "close" and "close" not in said.message, said.message
     assert said.data["wrong"] == [[1, 3], [3, 1]] and not said.data.get("close")
+
+
+# ---------------------------------------------------------------- "too coarse" only when it is a rounding
+
+def test_one_for_cos_45_is_not_close_but_0_7_and_0_71_are():
+    """3.2's answer is 0.7071: 1 (cos 0 for cos 45°) is no rounding of it to 1 figure, so it is plainly wrong;
+    0.7 and 0.71 are, and the message counts their significant figures. 10.3's (½, ½, ½, ½) against 1s too."""
+    v = bank.get("3.2")
+    assert "Close" not in v.check("1").message and v.check("1").tag != "close"
+    assert v.check("0.7").message.startswith("Close, but give at least 3 significant figures: you gave 1 "
+                                             "significant figure.")
+    assert "you gave 2 significant figures." in v.check("0.71").message
+    assert v.check("0.72").tag == "close" and "you gave" not in v.check("0.72").message  # 0.71 at 2 figures
+    quaternion = bank.get("10.3")
+    said = quaternion.check("1, 1, 1, 1")
+    assert not said.data.get("close") and "close" not in said.message and "significant" not in said.message
+
+
+def _rounded(x: float, figures: int) -> str:
+    """``x`` rounded to ``figures`` significant figures, written with exactly that many (-0.98 to 1 is -1)."""
+    r = float(f"{x:.{figures - 1}e}")
+    return f"{r:.{max(0, figures - 1 - math.floor(math.log10(abs(r))))}f}"
+
+
+def _is_rounding(x: float, text: str) -> bool:
+    """``text`` is ``x`` rounded to the significant figures ``text`` has (half up, or half to even)."""
+    n, value = _figures(text), float(text)
+    if n == 0:
+        return False
+    step = Decimal(1).scaleb(Decimal(repr(x)).adjusted() - (n - 1))
+    return any(math.isclose(value, float(Decimal(repr(x)).quantize(step, rounding=way)), rel_tol=1e-9)
+               for way in (ROUND_HALF_UP, ROUND_HALF_EVEN))
+
+
+def _figures(text: str) -> int:
+    whole, _, fraction = text.lstrip("-").partition(".")
+    digits = (whole + fraction).lstrip("0")
+    return len(digits if fraction else digits.rstrip("0"))
+
+
+SCALAR_AND_VECTOR = [ex for ex in bank.all_exercises() if ex.kind == "derive" and ex.answer.kind in ("number", "matrix")]
+
+
+@pytest.mark.parametrize("ex", SCALAR_AND_VECTOR, ids=[ex.id for ex in SCALAR_AND_VECTOR])
+def test_too_few_figures_is_said_only_of_the_key_rounded_to_them(ex):
+    """Over 200 draws of every number and matrix exercise: "give at least 3 significant figures: you gave n" is
+    said only of an answer that is the key rounded to its own n figures; 1 and 2 for every entry are tried too."""
+    for seed in range(many_draws.count(200)):
+        v = ex.variant(seed)
+        key = [[v.answer.key]] if v.answer.kind == "number" else [list(row) for row in v.answer.key]
+        flat = [clean(x) for row in key for x in row]
+        for figures in (1, 2, None):
+            typed = [("1" if figures is None else _rounded(x, figures)) if x else "0" for x in flat]
+            cols = len(key[0])
+            text = typed[0] if v.answer.kind == "number" else \
+                "; ".join(", ".join(typed[i * cols:(i + 1) * cols]) for i in range(len(key)))
+            said = v.check(text)
+            if v.answer.kind == "number":
+                told = re.search(r"you gave (\d+) significant figure", said.message)
+                if told:
+                    assert int(told[1]) == _figures(text) < 3 and _is_rounding(flat[0], text), (seed, text, said.message)
+            elif "type at least 3 significant figures" in said.message:
+                few = said.data["close"]
+                assert few and all(_is_rounding(flat[(i - 1) * cols + j - 1], typed[(i - 1) * cols + j - 1])
+                                   for i, j in few), (seed, text, said.message)
+            if figures is None:
+                continue
+            # the key rounded to 1 or 2 figures, where every entry is such a rounding: told so, never "not quite"
+            if said.status == "incorrect" and said.tag == "close" and v.answer.kind == "number" and \
+                    _is_rounding(flat[0], text):  # (a binary tie such as 3.15 may print as 3.1: no rounding)
+                assert "you gave" in said.message or _figures(text) >= 3, (seed, text, said.message)
+
+
+@pytest.mark.parametrize("typed,status", [
+    ("7 500", "correct"), ("7\u2009500", "correct"), ("7\u202f500", "correct"), ("7 500.0", "correct"),
+    ("7 500 ", "correct"), ("7 50", "invalid"), ("7 5000", "invalid"), ("75 00", "invalid"), ("0 500", "invalid"),
+])
+def test_iso_digit_groups_are_one_number(typed, status):
+    """ISO 80000-1 groups digits in threes with a (thin) space: 7 500 is 7500. Other spacing stays "two numbers"."""
+    said = answer(7500.0).check(typed)
+    assert said.status == status, (typed, said.message)
+    if status == "invalid":
+        assert "two numbers" in said.message
+    assert answer(12345678.0).check("12 345 678").status == "correct"

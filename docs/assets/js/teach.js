@@ -53,13 +53,22 @@ function field(label, input, help) {
   return el("div", { className: "wb-course-field" }, ...parts);
 }
 
-function chapterBox(chapter, titles) {
+// An exercise whose right answer is the same for every student (manifest.sameAnswer, from the bank)
+// says so beside its box, with the reason: per-student numbers do not stop copying there.
+function sameNote(why) {
+  if (!why) return "";
+  const note = el("span", { className: "wb-teach-same", textContent: ` (same answer for every student: ${why})` });
+  note.setAttribute(A.sameAnswer, "");
+  return note;
+}
+
+function chapterBox(chapter, titles, same) {
   const all = el("input", { type: "checkbox", id: uid("chapter") });
   all.setAttribute(COURSE.attr.chapter, chapter.url);
   const boxes = chapter.ids.map((id) => {
     const box = el("input", { type: "checkbox", value: id, id: uid("ex") });
     box.setAttribute(COURSE.attr.exercise, id);
-    return el("li", {}, box, el("label", { htmlFor: box.id, textContent: ` ${id} · ${titles?.[id] ?? ""}` }));
+    return el("li", {}, box, el("label", { htmlFor: box.id, textContent: ` ${id} · ${titles?.[id] ?? ""}` }, sameNote(same?.[id])));
   });
   const inputs = () => [...list.querySelectorAll(`input[${COURSE.attr.exercise}]`)];
   const list = el("ul", { className: "wb-teach-exercises" }, ...boxes);
@@ -82,7 +91,7 @@ export async function initTeach(siteRoot) {
   code.setAttribute(A.field, FIELD.class);
   const due = el("input", { type: "date" });
   due.setAttribute(A.field, FIELD.due);
-  const chapters = manifest.chapters.map((c) => chapterBox(c, manifest.titles));
+  const chapters = manifest.chapters.map((c) => chapterBox(c, manifest.titles, manifest.sameAnswer));
   const make = el("button", { type: "submit", className: "md-button md-button--primary", textContent: "Make the link" });
   const status = el("p", { role: "status", className: "wb-course-status" });
   const out = el("input", { type: "text", readOnly: true, id: uid("link") });

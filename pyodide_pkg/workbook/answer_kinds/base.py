@@ -21,6 +21,7 @@ ValueError: exercise 0.1: an answer of kind '' has no option 'periodic' (its opt
 from __future__ import annotations
 
 import dataclasses
+import re
 from collections.abc import Mapping
 from dataclasses import dataclass
 from types import ModuleType
@@ -28,13 +29,32 @@ from typing import Any, ClassVar
 
 from ..verdict import GradingError, Verdict
 
+SLIP_NAME = re.compile(r"[a-z0-9]+(?:-[a-z0-9]+)*")  # a slip's stable name: lower case words joined by hyphens
+
 
 @dataclass(frozen=True)
 class Slip:
-    """A known wrong answer with its own message, matched like the key (a number, rows, or a function)."""
+    """A known wrong answer with its own message, matched like the key (a number, rows, or a function).
+
+    ``name`` is its stable name within the exercise (``"cos-minus-one"``): the class page counts it by
+    :attr:`id`, ``"6.3/cos-minus-one"``, which no change of wording moves. ``exercise`` is set when the
+    exercise builds its answer kind (:meth:`AnswerSpec.build`).
+    """
 
     value: Any
     message: str
+    name: str = ""
+    exercise: str = ""
+
+    @property
+    def id(self) -> str:
+        """``exercise/name`` (``"6.3/cos-minus-one"``), or "" for a slip without a name."""
+        return f"{self.exercise}/{self.name}" if self.name and self.exercise else ""
+
+
+def slip_data(slip: Slip) -> dict[str, str]:
+    """What a slip's verdict carries besides its message: ``{"slipId": "6.3/cos-minus-one"}`` (none without a name)."""
+    return {"slipId": slip.id} if slip.id else {}
 
 
 @dataclass(frozen=True)
@@ -117,14 +137,20 @@ class AnswerSpec:
     def kind(self) -> str:
         return self.cls.kind
 
-    def build(self, exercise_id: str, **more: Any) -> AnswerKind:
-        """The answer kind with these options and ``more`` (a variant's ``make()``); unknown names are errors."""
+    def build(self, exercise_id: str, slips_of: str | None = None, **more: Any) -> AnswerKind:
+        """The answer kind with these options and ``more`` (a variant's ``make()``); unknown names are errors.
+        Its slips are the exercise's, ``slips_of`` (``exercise_id`` unless a step's says otherwise)."""
         names = [f.name for f in dataclasses.fields(self.cls)]
         for name in list(self.options) + list(more):
             if name not in names:
                 raise ValueError(f"exercise {exercise_id}: an answer of kind {self.cls.kind!r} has no option "
                                  f"{name!r} (its options: {', '.join(names)})")
+        options = {**self.options, **more}
+        if options.get("slips"):
+            owner = slips_of or exercise_id
+            options["slips"] = tuple(dataclasses.replace(s, exercise=owner) if isinstance(s, Slip) else s
+                                     for s in options["slips"])
         try:
-            return self.cls(**{**self.options, **more})
+            return self.cls(**options)
         except (TypeError, ValueError) as err:
             raise ValueError(f"exercise {exercise_id}: {err}") from None

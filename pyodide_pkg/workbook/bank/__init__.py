@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from functools import cache, lru_cache
 
+from .. import run_caches
 from ..kinds.base import Exercise
 from ..registry import CHAPTER_MODULES
 
@@ -77,6 +78,9 @@ def variant(exercise_id: str, seed: int = 0) -> Exercise:
     """Exercise ``exercise_id`` with variant ``seed``'s numbers (kinds without variants: itself)."""
     ex = get(exercise_id)
     return ex.variant(seed) if hasattr(ex, "variant") else ex
+
+
+run_caches.register(variant.cache_clear)  # a Build run in this process empties it (kinds.build)
 
 
 def all_exercises() -> list[Exercise]:

@@ -24,7 +24,8 @@ def _quarter_turn(p):
     return {
         "key": yr,
         "slips": (Slip(rotate_2d(x, y, -math.pi / 2)[1],
-                       "That is a clockwise turn. R(θ) with θ > 0 turns counter-clockwise."),),
+                       "That is a clockwise turn. R(θ) with θ > 0 turns counter-clockwise.",
+                           name="clockwise-turn-r-theta"),),
         "values": {"px": paren(x), "py": paren(y), "xr": fmt(xr), "yr": fmt(yr)},
     }
 
@@ -39,9 +40,10 @@ def _composed_entry(p):
         "slips": (
             Slip(rot2(math.radians(a))[0][0] * rot2(math.radians(b))[0][0],
                  "You multiplied the two (1,1) entries. A matrix product mixes a row with a column: use R(α)R(β) = "
-                 "R(α+β)."),
+                 "R(α+β).", name="multiplied-two-1-1"),
             Slip(det_rot2(math.radians(a + b)),
-                 "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle."),
+                 "That is the determinant, not the (1,1) entry. The (1,1) entry is cos of the total angle.",
+                     name="determinant-1-1-entry"),
         ),
         "values": {"total": fmt(a + b), "c": fmt(key)},
     }
@@ -61,7 +63,8 @@ def _diagonal_point(p):
         "key": key,
         "title": f"Rotate ({fmt(a)}, {fmt(a)}) by 45°",
         "label": f"{axis}-coordinate of the rotated point",
-        "slips": (Slip(slip, f"That is the {other}-coordinate. The {axis}-coordinate is {rules[axis]}."),),
+        "slips": (Slip(slip, f"That is the {other}-coordinate. The {axis}-coordinate is {rules[axis]}.",
+            name="coordinate-coordinate"),),
         "values": {"rule": tex[axis], "c": fmt(c), "xr": fmt(xr), "xrel": relation(xr, c * a - c * a), "yr": fmt(yr),
                    "yrel": relation(yr, c * a + c * a), "r": r},
     }
@@ -73,17 +76,25 @@ def _rotation_det(p):
     return {
         "key": det_rot2(math.radians(theta)),
         "label": f"det R({fmt(theta)}°)",
-        "slips": (Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ."),),
+        "slips": (Slip(-1.0, "A determinant of −1 would be a reflection. Expand cos²θ + sin²θ.",
+            name="determinant-1-would-reflection"),),
     }
 
 
+def _any_turn(total):
+    """The words for a turn by ``total``° that is no multiple of 90°: where it sends x and y (TeX)."""
+    c, s = math.cos(math.radians(total)), math.sin(math.radians(total))
+    return (f"rotation by {fmt(total)}°", rf"{fmt(c)}\,x {'-' if s < 0 else '+'} {fmt(abs(s))}\,y",
+            rf"{fmt(-s)}\,x {'-' if c < 0 else '+'} {fmt(abs(c))}\,y")
+
+
 def _whole_product(p):
-    """0.7: the whole matrix R(α)·R(β) = R(α + β), for α + β a multiple of 90°."""
+    """0.7: the whole matrix R(α)·R(β) = R(α + β) (the workbook's own α + β is a quarter turn)."""
     a, b = p["a"], p["b"]
     total = a + b
     ra, rb = rot2(math.radians(a)), rot2(math.radians(b))
     key = grid(compose(math.radians(a), math.radians(b)))
-    turn, x_to, y_to = TURNS[total]
+    turn, x_to, y_to = TURNS.get(total) or _any_turn(total)
     return {
         "key": key,
         "title": f"The whole product R({fmt(a)}°)·R({fmt(b)}°)",
@@ -93,10 +104,10 @@ def _whole_product(p):
             Slip(grid([[u * v for u, v in zip(rowa, rowb)] for rowa, rowb in zip(ra, rb)]),
                  "You multiplied entry by entry. A matrix product takes row i of the left matrix against "
                  f"column j of the right one: (1,1) is cos{fmt(a)}°·cos{fmt(b)}° − "
-                 f"sin{fmt(a)}°·sin{fmt(b)}°."),
+                 f"sin{fmt(a)}°·sin{fmt(b)}°.", name="multiplied-entry-entry-matrix"),
             Slip(grid(add(ra, rb)),
                  f"That is the sum R({fmt(a)}°) + R({fmt(b)}°). Composing rotations multiplies the matrices; "
-                 "the angles add, not the matrices."),
+                 "the angles add, not the matrices.", name="sum-r-r-composing"),
         ),
         "values": {"total": fmt(total), "turn": turn, "x_to": x_to, "y_to": y_to},
     }
@@ -107,13 +118,14 @@ EXERCISES = (
         id="0.1",
         title="Rotate a point by 90°",
         spec=number(label="y-coordinate of the rotated point"),
-        vary=Vary(_quarter_turn, Param("x", 3, -5, 5, 1, avoid=(0,)), Param("y", 0, -5, 5, 1)),
+        vary=Vary(_quarter_turn, Param("x", 3, -9.9, 9.9, 0.1, avoid=(0,)), Param("y", 0, -9.9, 9.9, 0.1)),
     ),
     Derive(
         id="0.2",
         title="Compose two rotations",
         spec=number(),
-        vary=Vary(_composed_entry, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°")),
+        vary=Vary(_composed_entry, Param("a", 30, 0.5, 179.5, 0.5, unit="°"),
+                  Param("b", 60, 0.5, 179.5, 0.5, unit="°")),
     ),
     Trace(
         id="0.3",
@@ -136,7 +148,8 @@ EXERCISES = (
         id="0.4",
         title="Rotate (1, 1) by 45°",
         spec=number(),
-        vary=Vary(_diagonal_point, Param("a", 1, 1, 5, 1), Choice("axis", "x", ("x", "y"))),
+        # x' of (a, a) is 0 for every a: the variants ask y' = a√2, which tells students apart
+        vary=Vary(_diagonal_point, Param("a", 1, 0.05, 9.95, 0.05), Choice("axis", "x", ("y",))),
     ),
     Build(
         id="0.5",
@@ -165,6 +178,7 @@ EXERCISES = (
     Derive(
         id="0.6",
         title="The determinant of a rotation",
+        same_answer="det R(θ) is 1 for every angle θ: that is the point of the exercise.",
         spec=number(),
         vary=Vary(_rotation_det, Param("theta", 37, 5, 355, 5, unit="°", avoid=(90, 180, 270))),
     ),
@@ -172,7 +186,6 @@ EXERCISES = (
         id="0.7",
         title="The whole product R(30°)·R(60°)",
         spec=matrix(),
-        vary=Vary(_whole_product, Param("a", 30, 5, 175, 5, unit="°"), Param("b", 60, 5, 175, 5, unit="°"),
-                  valid=lambda p: p["a"] + p["b"] in TURNS),
+        vary=Vary(_whole_product, Param("a", 30, 1, 179, 1, unit="°"), Param("b", 60, 1, 179, 1, unit="°")),
     ),
 )

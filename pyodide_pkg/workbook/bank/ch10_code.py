@@ -54,6 +54,8 @@ _H = math.sqrt(0.5)
 _Q0 = (0.5, 0.5, 0.5, 0.5)  # 120° about (1, 1, 1)
 _Z90 = (_H, 0.0, 0.0, _H)
 _TINY = quat_multiply(_Q0, quat_from_axis_angle((0, 1, 0), 1e-9))  # 1e-9 rad from _Q0
+_ROUNDS_UP = tuple(c / math.sqrt(12) for c in (1.0, 1.0, 1.0, 3.0))  # its dot with itself rounds above 1
+_ARC_4DEG = quat_multiply(_Z90, quat_from_axis_angle((1, 0, 0), 0.16))  # Ω = 0.08 rad from _Z90
 _MINUS_Z60 = tuple(-c for c in quat_from_axis_angle((0, 0, 1), math.pi / 3))  # 60° about z, written past 360°
 
 EXERCISES = (
@@ -79,6 +81,8 @@ EXERCISES = (
             (_Q0, _Q0, 0.5),  # equal: sin Ω = 0
             (_Q0, _TINY, 0.25),  # nearly equal: sin Ω rounds to 0
             (_Q0, tuple(-c for c in _TINY), 0.75),  # nearly equal, across the double cover
+            (_ROUNDS_UP, _ROUNDS_UP, 0.5),  # equal, and the dot rounds to 1.0000000000000002: clamp before acos
+            (_Z90, _ARC_4DEG, 0.3),  # a 4.6° arc: sin Ω = 0.08 is far from 0, so the arc, not the straight line
         ),
         random_args=_pair,
     ),

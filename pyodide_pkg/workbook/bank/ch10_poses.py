@@ -51,29 +51,35 @@ def _chain(p, given=None):
         "slips": kept_slips(column(world), (
             (column(transform_point(compose(T_bc, T_wb), pc)),
              "The chain is reversed: that is T_base_cam · T_world_base · p. The inner names must meet: "
-             "T_world_base · T_base_cam · p_cam, so the camera's transform acts on the point first."),
-            (column(mine), "That is the point in the base frame, one step short. Apply T_world_base to it too."),
+             "T_world_base · T_base_cam · p_cam, so the camera's transform acts on the point first.",
+                 "chain-reversed-t-base"),
+            (column(mine), "That is the point in the base frame, one step short. Apply T_world_base to it too.",
+                "point-base-frame-step"),
             (column(transform_point(invert(T_wb), mine)),
              "That applies the inverse of T_world_base, which takes world points into the base frame. "
-             "The point is in the base frame already: apply T_world_base itself, R₁ p + t₁."),
+             "The point is in the base frame already: apply T_world_base itself, R₁ p + t₁.",
+                 "applies-inverse-t-world"),
             (column([a + b for a, b in zip(mine, t1)]),
              f"That adds the base's position but skips its turn: R₁ (a yaw of {fmt(p['yaw'])}°) must turn "
-             "the point before t₁ is added."),
-            (column(turned), "That is R₁ p_base, the point turned but not yet shifted: add t₁, the base's position."),
+             "the point before t₁ is added.", "adds-base-s-position"),
+            (column(turned), "That is R₁ p_base, the point turned but not yet shifted: add t₁, the base's position.",
+                "r1-p-base-point"),
         )),
         "steps": {"pb": {"key": column(in_base), "slips": kept_slips(column(in_base), (
             (column(transform_point(invert(T_bc), pc)),
              "That applies the inverse of T_base_cam. The point is in the camera frame, and T_base_cam takes "
-             "camera coordinates to base coordinates: R₂ p + t₂."),
+             "camera coordinates to base coordinates: R₂ p + t₂.", "applies-inverse-t-base"),
             (column([a + b for a, b in zip(pc, t2)]),
-             f"That adds t₂ but skips the camera's roll of {fmt(p['roll'])}°: turn the point with R₂ first."),
+             f"That adds t₂ but skips the camera's roll of {fmt(p['roll'])}°: turn the point with R₂ first.",
+                 "adds-t2-but-skips"),
             (column(matvec(R2, [a + b for a, b in zip(pc, t2)])),
-             "That turns p + t₂; the transform turns p and then adds t₂: R₂ p + t₂."),
+             "That turns p + t₂; the transform turns p and then adds t₂: R₂ p + t₂.", "turns-p-t2-transform"),
         ))},
             "Rb": {"key": column(turned_key), "slips": kept_slips(column(turned_key), (
                 (column(matvec(transpose(R1), mine)),
-                 f"That turns by R₁ᵀ, a yaw of {fmt(-p['yaw'])}°. The base's transform turns by R₁ itself."),
-                (column(mine), "That is p_base unturned: multiply it by R₁."),
+                 f"That turns by R₁ᵀ, a yaw of {fmt(-p['yaw'])}°. The base's transform turns by R₁ itself.",
+                     "turns-r1t-yaw-base"),
+                (column(mine), "That is p_base unturned: multiply it by R₁.", "p-base-unturned-multiply"),
             ))},
         },
         "values": {
@@ -110,11 +116,11 @@ def _inverse_entry(p):
         "key": key,
         "slips": kept_slips(key, (
             (float(-t[i]), f"That is −t_{name}, the position negated in world axes. T⁻¹'s translation is −Rᵀt: the "
-                    "old origin seen along the frame's own axes."),
+                    "old origin seen along the frame's own axes.", "t-position-negated-world"),
             (RTt[i], "The sign is off: the translation of T⁻¹ is −Rᵀt, not Rᵀt. Check: T⁻¹ must send the "
-                     f"position ({_vec(t)}) to the origin."),
+                     f"position ({_vec(t)}) to the origin.", "sign-off-translation-t"),
             (-matvec(R, t)[i], "That multiplies t by R. Undoing the turn takes Rᵀ: row "
-                               f"{p['row']} of Rᵀ is column {p['row']} of R."),
+                               f"{p['row']} of Rᵀ is column {p['row']} of R.", "multiplies-t-r-undoing"),
         )),
         "label": f"row {p['row']}, column 4 of T⁻¹",
         "values": {
@@ -159,7 +165,7 @@ EXERCISES = (
         title="An entry of the inverse pose",
         spec=number(label="row 1, column 4 of T⁻¹"),
         vary=Vary(_inverse_entry, Choice("yaw", 90, _ANGLES), Choice("roll", 90, _ANGLES),
-                  Param("tx", 2, -3, 3, 1), Param("ty", -1, -3, 3, 1), Param("tz", 3, -3, 3, 1),
+                  Param("tx", 2, -9.9, 9.9, 0.1), Param("ty", -1, -9.9, 9.9, 0.1), Param("tz", 3, -9.9, 9.9, 0.1),
                   Choice("row", 1, (1, 2, 3)), valid=_inverse_ok),
     ),
 )

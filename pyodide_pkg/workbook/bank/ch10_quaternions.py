@@ -38,9 +38,9 @@ def _both_signs(key, candidates):
     accepts either way), each negation with its candidate's message; a candidate that is the key
     or its negation is no slip."""
     minus = column(_neg([r[0] for r in key]))
-    pairs = tuple(pair for value, message in candidates
+    pairs = tuple(pair for value, message, name in candidates
                   if value is not None and apart(value, key) and apart(value, minus)
-                  for pair in ((value, message), (column(_neg([r[0] for r in value])), message)))
+                  for pair in ((value, message, name), (column(_neg([r[0] for r in value])), message, name)))
     return kept_slips(key, pairs)
 
 
@@ -66,13 +66,13 @@ def _compose(p):
         "slips": _both_signs(column(key), (
             (column(quat_multiply(q_bc, q_wb)),
              "That is q_bc ⊗ q_wb, the factors swapped. The chain's names must meet: q_wc = q_wb ⊗ q_bc, "
-             "and swapping them flips the sign of the cross term u₁ × u₂."),
+             "and swapping them flips the sign of the cross term u₁ × u₂.", "q-bc-times-q"),
             (column(to_xyzw(key)),
              "Those are the right numbers in the order (x, y, z, w), scalar last, as ROS and SciPy store "
-             "them. This answer asks for (w, x, y, z), scalar first."),
+             "them. This answer asks for (w, x, y, z), scalar first.", "those-right-numbers-order"),
             (column(tuple(a * b for a, b in zip(q_wb, q_bc))),
              "That multiplies component by component. The Hamilton product takes a dot product for the "
-             "scalar part and a cross product in the vector part."),
+             "scalar part and a cross product in the vector part.", "multiplies-component-component-hamilton"),
         )),
         "values": {
             "a": fmt(p["a"]), "A": p["A"], "b": fmt(p["b"]), "B": p["B"],
@@ -113,23 +113,26 @@ def _angle(p, given=None):
         "slips": kept_slips(key, (
             (long_way, f"That is 2·arccos({fmt(mine)}) without the absolute value: the long way round, "
                        f"{fmt(long_way)}° = 360° − {fmt(360 - long_way)}°. q₁ and −q₁ are the same orientation, "
-                       "so take 2·arccos|q₀ · q₁|."),
+                       "so take 2·arccos|q₀ · q₁|.", "2-arccos-without-absolute"),
             (float(half), f"That is arccos|q₀ · q₁| = {fmt(half)}°, half the angle: a quaternion carries θ/2, so "
-                          "the angle is twice that."),
+                          "the angle is twice that.", "arccos-q-q1-half"),
             (float(abs(p["b"] - p["a"])), f"That subtracts the two angles, {fmt(p['b'])}° − {fmt(p['a'])}°, "
-                                          "which only works for turns about the same axis. Use the dot product."),
+                                          "which only works for turns about the same axis. Use the dot product.",
+                                              "subtracts-two-angles-which"),
         ), turn=360),
         "steps": {
             "dot": {"key": d, "slips": kept_slips(d, (
                 (q0[0] * q1[0] - sum(a * b for a, b in zip(q0[1:], q1[1:])),
                  "That subtracts the vector parts' products, as the scalar part of a Hamilton product does. The "
-                 "four-dimensional dot product adds all four: w₀w₁ + x₀x₁ + y₀y₁ + z₀z₁."),
+                 "four-dimensional dot product adds all four: w₀w₁ + x₀x₁ + y₀y₁ + z₀z₁.",
+                     "subtracts-vector-parts-products"),
                 (abs(d), "The sign is lost: the dot product itself is negative here. The absolute value comes "
-                         "afterwards, in the angle."),
+                         "afterwards, in the angle.", "sign-lost-dot-product"),
             ))},
             "half": {"key": half_key, "slips": kept_slips(half_key, (
                 (long_way / 2, f"That is arccos({fmt(mine)}) without the absolute value: the long way round. "
-                               "q₁ and −q₁ are the same orientation, so take arccos|q₀ · q₁|."),
+                               "q₁ and −q₁ are the same orientation, so take arccos|q₀ · q₁|.",
+                                   "arccos-without-absolute-value"),
             ), turn=180)},
         },
         "values": {
@@ -178,26 +181,29 @@ def _midpoint(p, given=None):
         "slips": _both_signs(column(key), (
             (column(tuple(c / n for c in raw)) if flip < 0 and n > 0 else None,
              "That is the midpoint the long way round: q₀ · q₁ is negative, so q₁ must be replaced by −q₁ "
-             "(the same orientation) before interpolating, or the path turns by more than 180°."),
+             "(the same orientation) before interpolating, or the path turns by more than 180°.",
+             "midpoint-long-way-round"),
             (column(tuple(c / 2 for c in summed)),
              "That is the plain average (q₀ + q₁)/2, which is shorter than 1: not a rotation. SLERP's "
-             "weights sin(Ω/2)/sin Ω = 1/(2 cos(Ω/2)) bring it back onto the unit sphere."),
+             "weights sin(Ω/2)/sin Ω = 1/(2 cos(Ω/2)) bring it back onto the unit sphere.", "plain-average-q0-q1"),
             (column(to_xyzw(key)),
              "Those are the right numbers in the order (x, y, z, w), scalar last. This answer asks for "
-             "(w, x, y, z), scalar first."),
+             "(w, x, y, z), scalar first.", "those-right-numbers-order"),
         )),
         "steps": {
             "dot": {"key": d, "slips": kept_slips(d, (
                 (q0[0] * q1[0] - sum(a * b for a, b in zip(q0[1:], q1[1:])),
                  "That subtracts the vector parts' products, as the scalar part of a Hamilton product does. The "
-                 "four-dimensional dot product adds all four: w₀w₁ + x₀x₁ + y₀y₁ + z₀z₁."),
+                 "four-dimensional dot product adds all four: w₀w₁ + x₀x₁ + y₀y₁ + z₀z₁.",
+                     "subtracts-vector-parts-products"),
             ))},
             "omega": {"key": omega_key, "slips": kept_slips(omega_key, (
                 (math.degrees(math.acos(max(-1.0, min(1.0, mine)))),
                  f"That is arccos({fmt(mine)}), the arc the long way round. After replacing q₁ by −q₁ the "
-                 "cosine is |q₀ · q₁|, and Ω is under 90°."),
+                 "cosine is |q₀ · q₁|, and Ω is under 90°.", "arccos-arc-long-way"),
                 (2 * omega_key, "That is the angle between the two orientations, twice the arc: on the sphere of "
-                                "quaternions the arc Ω is half the turn, cos Ω = |q₀ · q₁|."),
+                                "quaternions the arc Ω is half the turn, cos Ω = |q₀ · q₁|.",
+                                    "angle-between-two-orientations"),
             ))},
         },
         "values": {
@@ -223,14 +229,14 @@ EXERCISES = (
         id="10.3",
         title="Compose two turns as quaternions",
         spec=matrix(label="q_wc = (w, x, y, z)ᵀ", names=("w", "x", "y", "z"), either_sign=SAME_ROTATION),
-        vary=Vary(_compose, Choice("a", 90, (90, 180, -90)), Choice("A", "z", ("x", "y", "z")),
-                  Choice("b", 90, (90, 180, -90)), Choice("B", "x", ("x", "y", "z")), valid=_compose_ok),
+        vary=Vary(_compose, Param("a", 90, -175, 180, 5, avoid=(0,)), Choice("A", "z", ("x", "y", "z")),
+                  Param("b", 90, -175, 180, 5, avoid=(0,)), Choice("B", "x", ("x", "y", "z")), valid=_compose_ok),
     ),
     Derive(
         id="10.4",
         title="The angle between two orientations",
         spec=number(label="θ", unit="°", angle="deg"),
-        vary=Vary(_angle, Param("a", 60, 0, 180, 30), Param("b", 120, 0, 150, 30),  # b < 180: w < 0
+        vary=Vary(_angle, Param("a", 60, 0, 180, 1), Param("b", 120, 0, 179, 1),  # b < 180: w < 0
                   Choice("B", "z", ("x", "y", "z")), valid=_angle_ok),
         steps=(Step("dot", "q₀ · q₁", number(label="q₀ · q₁, the four-dimensional dot product")),
                Step("half", "θ/2", number(label="θ/2 = arccos|q₀ · q₁|", unit="°", angle="deg"))),
@@ -240,7 +246,7 @@ EXERCISES = (
         title="A SLERP midpoint, the short way",
         spec=matrix(label="slerp(q₀, q₁, ½) = (w, x, y, z)ᵀ", names=("w", "x", "y", "z"),
                     either_sign=SAME_ROTATION),
-        vary=Vary(_midpoint, Param("a", 0, 0, 180, 30), Param("b", 120, 0, 180, 30),
+        vary=Vary(_midpoint, Param("a", 0, 0, 180, 1), Param("b", 120, 0, 180, 1),
                   Choice("A", "z", ("x", "y", "z")), valid=_midpoint_ok),
         steps=(Step("dot", "q₀ · q₁", number(label="q₀ · q₁, before any flip")),
                Step("omega", "Ω", number(label="Ω, the arc with cos Ω = |q₀ · q₁|", unit="°", angle="deg"))),

@@ -15,7 +15,7 @@ from ..reference.transform2d import apply, chain, transform2d
 from ..steps import Step as WorkStep
 from ..variants import Param, Vary
 from . import column, grid
-from .checks import apart, kept_slips
+from .checks import apart, kept_slips, slips_apart
 
 
 def _with(rot, t):
@@ -47,8 +47,8 @@ def _pure_translation(p):
         "slips": (
             Slip(apply(transform2d(0, 0, 0), px, py)[0],
                  f"That is the point in the robot frame. The robot sits at ({fmt(tx)}, {fmt(ty)}), so add its "
-                 "position."),
-            Slip(apply(T, 0, 0)[0], f"That is the robot's own x. {ahead}: add the point too."),
+                 "position.", name="point-robot-frame-robot"),
+            Slip(apply(T, 0, 0)[0], f"That is the robot's own x. {ahead}: add the point too.", name="robot-s-own-add"),
         ),
         "values": {"stx": signed(tx), "sty": signed(ty), "wx": fmt(wx), "wy": fmt(wy)},
     }
@@ -65,18 +65,22 @@ def _turn_and_shift(p):
         left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives y = "
                                     f"{fmt(turned[1])}, "
                                     f"and shifting it by ({fmt(tx)}, {fmt(ty)}) without turning also gives "
-                                    f"y = {fmt(shifted[1])}. T rotates first, then adds t."),)
+                                    f"y = {fmt(shifted[1])}. T rotates first, then adds t.",
+                                        name="left-something-out-turning"),)
     else:
         left_out = (Slip(turned[1], f"You left something out: turning ({fmt(d)}, 0) by 90° alone gives "
-                                    f"y = {fmt(turned[1])}. T rotates first, then adds t = ({fmt(tx)}, {fmt(ty)})."),
+                                    f"y = {fmt(turned[1])}. T rotates first, then adds t = ({fmt(tx)}, {fmt(ty)}).",
+                                        name="left-something-out-turning"),
                     Slip(shifted[1], f"You left something out: shifting ({fmt(d)}, 0) by ({fmt(tx)}, {fmt(ty)}) "
-                                     f"without turning gives y = {fmt(shifted[1])}. T rotates first, then adds t."))
+                                     f"without turning gives y = {fmt(shifted[1])}. T rotates first, then adds t.",
+                                         name="left-something-out-shifting"))
     distance = "one metre" if d == 1 else f"{fmt(d)} metres"
     return {
         "key": wy,
         "slips": left_out + (
             Slip(apply(transform2d(tx, ty, -math.pi / 2), d, 0)[1],
-                 "That is a clockwise turn. A heading of +90° turns the robot's x-axis onto the world's +y."),
+                 "That is a clockwise turn. A heading of +90° turns the robot's x-axis onto the world's +y.",
+                     name="clockwise-turn-heading-90"),
         ),
         "values": {"distance": distance, "Distance": distance[0].upper() + distance[1:], "stx": signed(tx),
                    "sty": signed(ty), "wx": fmt(wx), "wy": fmt(wy), "ty_turn": fmt(turned[1]), "sx": fmt(shifted[0])},
@@ -94,10 +98,11 @@ def _tool_point(p):
         "key": wx,
         "slips": (
             Slip(apply(chain(T_base_tool, T_world_base), d, 0)[0],
-                 "The order is reversed. Apply the tool-to-base transform to the point first, then base-to-world."),
+                 "The order is reversed. Apply the tool-to-base transform to the point first, then base-to-world.",
+                     name="order-reversed-apply-tool"),
             Slip(apply(chain(T_world_base, transform2d(ux, uy, 0)), d, 0)[0],
                  f"You added the offsets but skipped the tool frame's 90° turn: ({fmt(d)}, 0) in the tool frame "
-                 "points along the base's y-axis."),
+                 "points along the base's y-axis.", name="added-offsets-but-skipped"),
         ),
         "values": {"bpx": fmt(in_base[0]), "bpy": fmt(in_base[1]), "wx": fmt(wx), "wy": fmt(wy), "verb": verb},
     }
@@ -107,7 +112,8 @@ def _tool_point_ok(p):
     """The base is offset (else the chain is one transform), and the slips differ from the key and each other."""
     b_plus_u = p["bx"] + p["ux"]
     reversed_x, unturned_x = p["ux"] - p["by"], b_plus_u + p["d"]
-    return (p["bx"], p["by"]) != (0, 0) and reversed_x != b_plus_u and reversed_x != unturned_x
+    return ((p["bx"], p["by"]) != (0, 0) and apart(reversed_x, b_plus_u, unturned_x)
+            and slips_apart(_tool_point(p)))
 
 
 def _inverse_steps(R, t, given):
@@ -119,16 +125,16 @@ def _inverse_steps(R, t, given):
     return (RT, tinv), {
         "RT": {"key": grid(transpose(R)), "slips": kept_slips(grid(transpose(R)), (
             (grid(R), "That is R itself. Undoing the turn takes the transpose Rᵀ: swap the two entries off the "
-                      "diagonal, so the sine changes sign."),))},
+                      "diagonal, so the sine changes sign.", "r-itself-undoing-turn"),))},
         "tinv": {"key": column(back), "slips": kept_slips(column(back), (
             (column([-v for v in t]), "That is −t, the robot's position negated in world axes. T⁻¹ needs it in "
-                                      "the robot's own axes: multiply by Rᵀ as well, −Rᵀt."),
+                                      "the robot's own axes: multiply by Rᵀ as well, −Rᵀt.", "t-robot-s-position"),
             (column(matvec(RT, t)), "That is Rᵀt, without the minus: the translation of T⁻¹ is −Rᵀt. Check with "
                                     f"the robot's own position: T⁻¹ must send ({fmt(t[0])}, {fmt(t[1])}) to the "
-                                    "origin."),
+                                    "origin.", "rtt-without-minus-translation"),
             (column([-v for v in matvec(transpose(RT), t)]),
              "That multiplies t by R, the turn forwards (or takes the columns of Rᵀ for its rows). −Rᵀt takes "
-             "each row of Rᵀ times t."),
+             "each row of Rᵀ times t.", "multiplies-t-r-turn"),
         ))},
     }
 
@@ -154,14 +160,15 @@ def _inverse_pose(p, given=None):
         "slips": (
             Slip(_with(RT, [-tx, -ty]),
                  "The rotation block is right, but the translation is −t, the robot's position negated in world "
-                 "axes. T⁻¹ needs it in the robot's own axes: −Rᵀt."),
+                 "axes. T⁻¹ needs it in the robot's own axes: −Rᵀt.", name="rotation-block-right-but"),
             Slip(_with(RT, RT_t),
                  "The translation has the wrong sign: it is −Rᵀt. Check with the robot's own position: "
-                 f"T⁻¹ must send ({fmt(tx)}, {fmt(ty)}) to the origin."),
+                 f"T⁻¹ must send ({fmt(tx)}, {fmt(ty)}) to the origin.", name="translation-has-wrong-sign"),
             Slip(_with(R, [-tx, -ty]),
                  "Negating the translation is not enough: the turn must be undone too, so the rotation block is "
-                 "Rᵀ, and the translation becomes −Rᵀt."),
-            Slip(grid(T), "That is T itself, the robot's pose. The question asks for the transform that undoes it."),
+                 "Rᵀ, and the translation becomes −Rᵀt.", name="negating-translation-enough-turn"),
+            Slip(grid(T), "That is T itself, the robot's pose. The question asks for the transform that undoes it.",
+                name="t-itself-robot-s"),
         ),
         "steps": worked,
         "values": {
@@ -192,24 +199,25 @@ EXERCISES = (
         id="1.1",
         title="Pure translation",
         spec=number(label="x-coordinate in the world frame"),
-        vary=Vary(_pure_translation, Param("tx", 3, -5, 5, 1, avoid=(0,)), Param("ty", 4, -5, 5, 1),
-                  Param("px", 1, -5, 5, 1, avoid=(0,)), Param("py", 0, -5, 5, 1),
-                  valid=lambda p: p["px"] != p["tx"]),
+        vary=Vary(_pure_translation, Param("tx", 3, -9.9, 9.9, 0.1, avoid=(0,)), Param("ty", 4, -9.9, 9.9, 0.1),
+                  Param("px", 1, -9.9, 9.9, 0.1, avoid=(0,)), Param("py", 0, -9.9, 9.9, 0.1),
+                  valid=lambda p: p["px"] != p["tx"] and slips_apart(_pure_translation(p))),
     ),
     Derive(
         id="1.2",
         title="Rotation plus translation",
         spec=number(label="y-coordinate in the world frame"),
-        vary=Vary(_turn_and_shift, Param("tx", 2, -5, 5, 1), Param("ty", 1, -5, 5, 1, avoid=(0,)),
+        vary=Vary(_turn_and_shift, Param("tx", 2, -9.9, 9.9, 0.1), Param("ty", 1, -9.9, 9.9, 0.1, avoid=(0,)),
                   Param("d", 1, 0.5, 3, 0.5, unit=" m"),
-                  valid=lambda p: p["ty"] != 2 * p["d"]),
+                  valid=lambda p: not math.isclose(p["ty"], 2 * p["d"]) and slips_apart(_turn_and_shift(p))),
     ),
     Derive(
         id="1.3",
         title="Chain two transforms",
         spec=number(label="x-coordinate in the world frame"),
-        vary=Vary(_tool_point, Param("bx", 0, -3, 3, 1), Param("by", 1, -3, 3, 1), Param("ux", 2, -3, 3, 1),
-                  Param("uy", 0, -3, 3, 1), Param("d", 1, 1, 3, 1), valid=_tool_point_ok),
+        vary=Vary(_tool_point, Param("bx", 0, -9.9, 9.9, 0.1), Param("by", 1, -5, 5, 0.1),
+                  Param("ux", 2, -9.9, 9.9, 0.1), Param("uy", 0, -5, 5, 0.1), Param("d", 1, 1, 3, 1),
+                  valid=_tool_point_ok),
     ),
     Trace(
         id="1.4",

@@ -45,7 +45,8 @@ def _yaw_x_axis(p):
         "title": f"Yaw by {fmt(g)}°",
         "label": f"y-component of Rz({fmt(g)}°)·(1, 0, 0)ᵀ",
         "slips": (Slip(matvec(rz(-math.radians(g)), [1, 0, 0])[1],
-                       "That is a clockwise yaw. A positive angle about z turns x towards y (right-hand rule)."),),
+                       "That is a clockwise yaw. A positive angle about z turns x towards y (right-hand rule).",
+                           name="clockwise-yaw-positive-angle"),),
         "values": {"c": fmt(c), "s": fmt(s), "ms": fmt(-s), "onto": word, "into": "into" if g == 90 else word},
     }
 
@@ -60,7 +61,7 @@ def _quat_w(p):
         "title": f"Quaternion for {fmt(t)}° about {axis}",
         "slips": (Slip(math.cos(math.radians(t)),
                        f"That is cos {fmt(t)}°, the full angle. A quaternion uses half the angle: "
-                       f"w = cos(θ/2) = cos {fmt(t / 2)}°."),),
+                       f"w = cos(θ/2) = cos {fmt(t / 2)}°.", name="cos-full-angle-quaternion"),),
         "values": {
             "half": fmt(t / 2), "n": _axis_text(axis),
             "w_surd": "\\tfrac{\\sqrt2}{2} \\approx " if math.isclose(q[0], _QUARTER) else "",
@@ -68,6 +69,12 @@ def _quat_w(p):
             "squares": " + ".join(map(fmt, squares)), "norm_rel": norm_rel,
         },
     }
+
+
+def _quat_w_ok(p):
+    """The full-angle slip cos θ is told apart from w and from −w (which is right too)."""
+    made = _quat_w(p)
+    return slips_apart(made) and slips_apart({**made, "key": -made["key"]})
 
 
 def _half_turn_component(p):
@@ -81,7 +88,7 @@ def _half_turn_component(p):
         "label": comp,
         "slips": (Slip(q[_SLOT[axis]],
                        f"That is the {axis} component. The axis is ({n}), so sin(θ/2) lands in {axis} only; "
-                       f"{comp} gets sin(θ/2)·0."),),
+                       f"{comp} gets sin(θ/2)·0.", name="component-axis-so-sin"),),
         "values": {"n": n},
     }
 
@@ -93,7 +100,8 @@ def _quat_norm(p):
     theta = math.degrees(angle)
     return {
         "key": quat_norm(q),
-        "slips": (Slip(sum(q), "That is the sum of the components. The norm squares them first: √(4 · 0.5²)."),),
+        "slips": (Slip(sum(q), "That is the sum of the components. The norm squares them first: √(4 · 0.5²).",
+            name="sum-components-norm-squares"),),
         "values": {
             "pw": paren(q[0]), "px": paren(q[1]), "py": paren(q[2]), "pz": paren(q[3]),
             "half": fmt(theta / 2), "theta": fmt(theta),
@@ -113,9 +121,10 @@ def _yaw_vector(p):
         "slips": (
             Slip(column(matvec(rz(-math.pi / 2), v)),
                  "That is Rz(−90°)·v, a clockwise yaw (the same as multiplying by the transpose of Rz(90°)). "
-                 "A positive yaw turns x towards y."),
+                 "A positive yaw turns x towards y.", name="rz-90-v-clockwise"),
             Slip(column((v[1], v[0], v[2])),
-                 "You swapped x and y but lost a sign. A quarter turn about z sends (x, y) to (−y, x)."),
+                 "You swapped x and y but lost a sign. A quarter turn about z sends (x, y) to (−y, x).",
+                     name="swapped-y-but-lost"),
         ),
         "values": {"px": paren(v[0]), "py": paren(v[1]), "x2": fmt(v[0] ** 2), "y2": fmt(v[1] ** 2),
                    "z2": fmt(v[2] ** 2)},
@@ -135,13 +144,13 @@ def _quat_whole(p):
         "slips": (
             Slip(column(quat_from_axis_angle(n, 2 * rad)),
                  f"That is the quaternion of a {fmt(2 * t)}° turn: you used the full angle. A quaternion holds "
-                 "half of it: w = cos(θ/2), (x, y, z) = sin(θ/2)·n."),
+                 "half of it: w = cos(θ/2), (x, y, z) = sin(θ/2)·n.", name="quaternion-turn-used-full"),
             Slip(column(q[1:] + q[:1]),
                  "Those are the right numbers in the order (x, y, z, w), scalar last, as some libraries store "
-                 "them. This answer asks for (w, x, y, z)."),
+                 "them. This answer asks for (w, x, y, z).", name="those-right-numbers-order"),
             Slip(column(quat_from_axis_angle(n, -rad)),
                  f"That is the conjugate, a turn of −{fmt(t)}° (clockwise {view}). For +{fmt(t)}° about +{axis}, "
-                 f"the {axis} part is +sin {fmt(t / 2)}°."),
+                 f"the {axis} part is +sin {fmt(t / 2)}°.", name="conjugate-turn-clockwise-about"),
         ),
         "values": {
             "half": fmt(t / 2), "a": "an" if axis == "x" else "a",  # "an x part", "a z part"
@@ -174,19 +183,21 @@ def _quat_product(p):
         "slips": (
             Slip(column(swapped),
                  "That is q₂ ⊗ q₁: the cross term u₁ × u₂ went in with a minus sign, which is exactly what "
-                 "swapping the two factors does. The product does not commute: q₁ ⊗ q₂ adds +u₁ × u₂."),
+                 "swapping the two factors does. The product does not commute: q₁ ⊗ q₂ adds +u₁ × u₂.",
+                     name="q2-q1-cross-term"),
             Slip(column((q1[0] * q2[0] + dot, *key[1:])),
                  f"The scalar part subtracts the dot product: w = w₁w₂ − u₁·u₂ = {fmt(q1[0] * q2[0])} − "
-                 f"{paren(dot)}, not w₁w₂ + u₁·u₂."),
+                 f"{paren(dot)}, not w₁w₂ + u₁·u₂.", name="scalar-part-subtracts-dot"),
             Slip(column((key[0], *plain)),
                  "The vector part is missing the cross product: it is w₁u₂ + w₂u₁ + u₁ × u₂. The cross term is "
-                 f"({', '.join(map(fmt, cross))}) here."),
+                 f"({', '.join(map(fmt, cross))}) here.", name="vector-part-missing-cross"),
             Slip(column(tuple(a * b for a, b in zip(q1, q2))),
                  "That multiplies component by component. The Hamilton product mixes them: the scalar part "
-                 "takes a dot product and the vector part a cross product."),
+                 "takes a dot product and the vector part a cross product.",
+                     name="multiplies-component-component-hamilton"),
             Slip(column(key[1:] + key[:1]),
                  "Those are the right numbers in the order (x, y, z, w), scalar last, as some libraries store "
-                 "them. This answer asks for (w, x, y, z), scalar first."),
+                 "them. This answer asks for (w, x, y, z), scalar first.", name="those-right-numbers-order"),
         ),
         "values": {
             "w1": fmt(q1[0]), "w2": fmt(q2[0]), "u1": ", ".join(map(fmt, u1)), "u2": ", ".join(map(fmt, u2)),
@@ -214,7 +225,7 @@ EXERCISES = (
         id="2.1",
         title="Yaw by 90°",
         spec=number(),
-        vary=Vary(_yaw_x_axis, Param("gamma", 90, 5, 175, 5, unit="°")),
+        vary=Vary(_yaw_x_axis, Param("gamma", 90, 0.5, 179.5, 0.5, unit="°")),
     ),
     Trace(
         id="2.2",
@@ -243,12 +254,13 @@ EXERCISES = (
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
             label="w",
         ),
-        vary=Vary(_quat_w, Param("theta", 90, 10, 170, 10, unit="°", avoid=(120,)),
-                  Choice("axis", "z", ("x", "y", "z"))),
+        vary=Vary(_quat_w, Param("theta", 90, 10, 179, 1, unit="°", avoid=(120,)),
+                  Choice("axis", "z", ("x", "y", "z")), valid=_quat_w_ok),
     ),
     Derive(
         id="2.4",
         title="Quaternion for 180° about x",
+        same_answer="The component off the axis of a half turn is 0 for every axis and component asked.",
         spec=number(label="z"),
         vary=Vary(_half_turn_component, Choice("axis", "x", ("x", "y", "z")), Choice("comp", "z", ("x", "y", "z")),
                   valid=lambda p: p["comp"] != p["axis"]),
@@ -256,6 +268,7 @@ EXERCISES = (
     Derive(
         id="2.5",
         title="The norm of a quaternion",
+        same_answer="Every quaternion it draws, with components ±0.5, has norm 1: that is the point of the exercise.",
         spec=number(label="‖q‖"),
         vary=Vary(_quat_norm, *(Param(c, 0.5, -0.5, 0.5, 1) for c in "wxyz"),
                   valid=lambda p: not math.isclose(sum(p.values()), 1.0)),
@@ -274,7 +287,7 @@ EXERCISES = (
             names=("w", "x", "y", "z"),
             either_sign="−q is the same rotation as q (by convention w ≥ 0 is written, but both are right).",
         ),
-        vary=Vary(_quat_whole, Param("theta", 90, 10, 170, 10, unit="°"), Choice("axis", "z", ("x", "y", "z"))),
+        vary=Vary(_quat_whole, Param("theta", 90, 1, 179, 1, unit="°"), Choice("axis", "z", ("x", "y", "z"))),
     ),
     Derive(
         id="2.10",

@@ -64,16 +64,18 @@ def _drive_east(p):
     dx, dy, _ = motion_model((0, 0, _EAST), v, 0, dt)  # the displacement alone
     east = "Facing east, all the motion goes into x: cos 0 = 1."
     if x0 == y0:  # y′ and "sin used for x" are the same number
-        slips = [Slip(yn, f"That is y (or you used sin for x). {east}")]
+        slips = [Slip(yn, f"That is y (or you used sin for x). {east}", name="y-used-sin")]
     else:
-        slips = [Slip(yn, f"That is y. {east}"),
-                 Slip(x0 + dy, f"That leaves x where it started: you used sin for x. {east}")]
+        slips = [Slip(yn, f"That is y. {east}", name="y"),
+                 Slip(x0 + dy, f"That leaves x where it started: you used sin for x. {east}",
+                     name="leaves-where-started-used")]
     if x0:
-        slips.append(Slip(dx, f"That is the distance driven alone. x′ = x + v·cosθ·dt starts from x = {fmt(x0)}."))
+        slips.append(Slip(dx, f"That is the distance driven alone. x′ = x + v·cosθ·dt starts from x = {fmt(x0)}.",
+            name="distance-driven-alone-xp"))
     if dt != 1:
         slips.append(Slip(motion_model((x0, y0, _EAST), v, 0, 1)[0],
                           f"You left out dt. The robot drives for {fmt(dt)} s, so it covers v·dt = {fmt(dx)} m, "
-                          f"not {fmt(v)} m."))
+                          f"not {fmt(v)} m.", name="left-out-dt-robot"))
     return {
         "key": xn,
         "slips": tuple(slips),
@@ -95,9 +97,10 @@ def _drive_at_heading(p):
     d = v * dt
     slips = [Slip(motion_model((0, 0, theta), v, 0, 1)[1],
                   f"You left out dt. The robot drives for {fmt(dt)} s, so it covers v·dt = {fmt(d)} m, not {fmt(v)} "
-                  "m.")]
+                  "m.", name="left-out-dt-robot")]
     if apart(xn, yn):
-        slips.append(Slip(xn, "That is x′, the cosine share. The new y takes the sine: y′ = y + v·sinθ·dt."))
+        slips.append(Slip(xn, "That is x′, the cosine share. The new y takes the sine: y′ = y + v·sinθ·dt.",
+            name="xp-cosine-share-new"))
     even = math.isclose(abs(math.cos(theta)), abs(math.sin(theta)))
     arg = _tfrac(deg)
     return {
@@ -129,8 +132,9 @@ def _north_f13(p):
         "key": F[0][2],
         "slips": (
             Slip(motion_jacobian((0, 0, _NORTH), v, 0, 1)[0][2],
-                 f"You left out dt: F(1,3) = −v·sinθ·dt, and dt = {fmt(dt)}."),
-            Slip(clean(-F[1][2]), "That uses cos θ. Differentiating v·cosθ·dt with respect to θ gives −v·sinθ·dt."),
+                 f"You left out dt: F(1,3) = −v·sinθ·dt, and dt = {fmt(dt)}.", name="left-out-dt-f"),
+            Slip(clean(-F[1][2]), "That uses cos θ. Differentiating v·cosθ·dt with respect to θ gives −v·sinθ·dt.",
+                name="uses-cos-theta-differentiating"),
         ),
         "values": {"f13": fmt(F[0][2])},
     }
@@ -163,10 +167,12 @@ def push_steps(F, P, Q, FP, FPF) -> dict:
     return {
         "FP": {"key": grid(FP), "slips": (
             Slip(grid(matmul(P, F)), "That is P F, the product in the wrong order: F comes first, so row i "
-                                     "of F P is row i of F times P."),)},
+                                     "of F P is row i of F times P.", name="p-f-product-wrong"),)},
         "FPF": {"key": grid(FPF), "slips": (
-            Slip(grid(matmul(FP, F)), "That is (F P) F: the second factor is Fᵀ, the transpose of F."),
-            Slip(grid(add(FPF, Q)), "That already adds Q: this step is F P Fᵀ alone; Q comes last.")),
+            Slip(grid(matmul(FP, F)), "That is (F P) F: the second factor is Fᵀ, the transpose of F.",
+                name="f-p-f-second"),
+            Slip(grid(add(FPF, Q)), "That already adds Q: this step is F P Fᵀ alone; Q comes last.",
+                name="already-adds-q-step")),
         },
     }
 
@@ -192,18 +198,21 @@ def _covariance_entry(p, given=None):
     f23 = F[1][2]
     i, asked = _ASKED[entry]
     if entry == "1,1":
-        slips = [Slip(Pm[1][1], "That is P⁻(2,2), the y variance. The question asks for the top-left entry."),
-                 Slip(FPF[0][0], f"That is F P Fᵀ alone. Add the process noise Q: its (1,1) entry is {fmt(Q[0][0])}.")]
+        slips = [Slip(Pm[1][1], "That is P⁻(2,2), the y variance. The question asks for the top-left entry.",
+            name="p-2-2-y"),
+                 Slip(FPF[0][0], f"That is F P Fᵀ alone. Add the process noise Q: its (1,1) entry is {fmt(Q[0][0])}.",
+                     name="f-p-ft-alone")]
     else:
         slips = [Slip(Pm[0][0], "That is P⁻(1,1), the x variance. The question asks for the (2,2) entry, the y "
-                                "variance."),
-                 Slip(FPF[1][1], f"That is F P Fᵀ alone. Add the process noise Q: its (2,2) entry is {fmt(Q[1][1])}."),
+                                "variance.", name="p-1-1-variance"),
+                 Slip(FPF[1][1], f"That is F P Fᵀ alone. Add the process noise Q: its (2,2) entry is {fmt(Q[1][1])}.",
+                     name="f-p-ft-alone"),
                  Slip(add(P, Q)[1][1], "That is P + Q: you left F out. F passes the heading uncertainty into y: "
-                                       f"add F₂₃²·P₃₃ = {fmt(f23 * f23 * P[2][2])}.")]
+                                       f"add F₂₃²·P₃₃ = {fmt(f23 * f23 * P[2][2])}.", name="p-q-left-f")]
         if not math.isclose(f23, 1.0):
             slips.append(Slip(P[1][1] + f23 * P[2][2] + Q[1][1],
                               f"F₂₃ enters twice, once from F and once from Fᵀ: the heading adds F₂₃²·P₃₃ = "
-                              f"{fmt(f23 * f23 * P[2][2])}, not F₂₃·P₃₃."))
+                              f"{fmt(f23 * f23 * P[2][2])}, not F₂₃·P₃₃.", name="f2-enters-twice-once"))
     return {
         "key": Pm[i][i],
         "label": f"P⁻({entry})",
@@ -231,7 +240,7 @@ EXERCISES = (
         title="Predict the new position",
         spec=number(label="x", unit="m"),
         vary=Vary(_drive_east, Param("x0", 0, -3, 3, 1, unit=" m"), Param("y0", 0, -3, 3, 1, unit=" m"),
-                  Param("v", 1, 0.5, 3, 0.5, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
+                  Param("v", 1, 0.1, 4, 0.1, unit=" m/s"), Param("dt", 1, 0.1, 2, 0.1, unit=" s"),
                   valid=_drive_east_ok),
     ),
     Derive(
@@ -246,15 +255,15 @@ EXERCISES = (
         id="3.3",
         title="An entry of the Jacobian F",
         spec=number(label="F(1,3)"),
-        vary=Vary(_north_f13, Param("v", 1, 0.5, 3, 0.5, unit=" m/s"),
+        vary=Vary(_north_f13, Param("v", 1, 0.1, 4, 0.1, unit=" m/s"),
                   Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_f13_ok),
     ),
     Derive(
         id="3.4",
         title="Predict the covariance",
         spec=number(),
-        vary=Vary(_covariance_entry, Param("v", 1, 0.5, 2, 0.5, unit=" m/s"), Param("dt", 1, 0.2, 2, 0.2, unit=" s"),
-                  Param("p11", 1, 0.5, 2, 0.1), Param("p22", 1, 0.5, 2, 0.1), Param("p33", 0.1, 0.01, 0.2, 0.01),
+        vary=Vary(_covariance_entry, Param("v", 1, 0.5, 2, 0.1, unit=" m/s"), Param("dt", 1, 0.2, 2, 0.2, unit=" s"),
+                  Param("p11", 1, 0.5, 2, 0.01), Param("p22", 1, 0.5, 2, 0.01), Param("p33", 0.1, 0.01, 0.2, 0.01),
                   Param("q11", 0.01, 0.01, 0.05, 0.01), Param("q22", 0.01, 0.01, 0.05, 0.01),
                   Param("q33", 0.001, 0.001, 0.005, 0.001), Choice("entry", "1,1", ("1,1", "2,2")),
                   valid=_covariance_entry_ok),
@@ -314,6 +323,7 @@ EXERCISES = (
     Derive(
         id="3.9",
         title="F(1,3) as a formula",
+        same_answer="A formula in v, θ and dt: students differ only in which of two entries they are asked.",
         spec=formula(
             variables=("v", "theta", "dt"),
             domain={"v": (0.2, 3.0), "theta": (-3.0, 3.0), "dt": (0.05, 1.0)},

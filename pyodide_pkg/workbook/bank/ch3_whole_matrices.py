@@ -65,17 +65,19 @@ def _predicted_covariance(p, given=None):
     FP, FPF, Pm = _pushed_forward(F, _P, _Q, given)
     f13 = F[0][2]
     slips = [
-        Slip(grid(FPF), "That is F P Fᵀ without the process noise. Add Q: the motion itself is uncertain."),
+        Slip(grid(FPF), "That is F P Fᵀ without the process noise. Add Q: the motion itself is uncertain.",
+            name="f-p-ft-without"),
         Slip(grid(add(_P, _Q)), "That is P + Q: you left F out. F passes the heading uncertainty into x, which is "
-                                "where the off-diagonal terms come from."),
+                                "where the off-diagonal terms come from.", name="p-q-left-f"),
         Slip(grid(add(matmul(matmul(transpose(F), _P), F), _Q)),
-             "That is Fᵀ P F + Q, the product in the wrong order. The covariance is pushed forward as F P Fᵀ."),
+             "That is Fᵀ P F + Q, the product in the wrong order. The covariance is pushed forward as F P Fᵀ.",
+                 name="ft-p-f-q"),
     ]
     if not math.isclose(abs(f13), 1.0):
         once = [row[:] for row in Pm]
         once[0][0] = _P[0][0] + abs(f13) * _P[2][2] + _Q[0][0]
         slips.append(Slip(grid(once), "Check P⁻(1,1): F₁₃ enters twice, once from F and once from Fᵀ, so x gains "
-                                      f"F₁₃²·P₃₃ = {fmt(f13 * f13 * _P[2][2])}, not |F₁₃|·P₃₃."))
+                                      f"F₁₃²·P₃₃ = {fmt(f13 * f13 * _P[2][2])}, not |F₁₃|·P₃₃.", name="check-p-1-1"))
     return {
         "key": grid(Pm),
         "slips": tuple(slips),
@@ -117,16 +119,19 @@ def _heading_column(p, given=None):
     return theta_col, {
         "move": {"key": column(moved), "slips": kept_slips(column(moved), (
             (column(east), "That is the move facing east (or cos and sin swapped). Facing north, cos θ = 0 and "
-                           f"sin θ = 1: all of v·dt = {fmt(v * dt)} m goes into y."),
+                           f"sin θ = 1: all of v·dt = {fmt(v * dt)} m goes into y.", "move-facing-east-cos"),
             (column(motion_model((0, 0, _NORTH), v, 0, 1)[:2]),
-             f"You left out dt: in {fmt(dt)} s the robot covers v·dt = {fmt(v * dt)} m, not {fmt(v)} m."),
+             f"You left out dt: in {fmt(dt)} s the robot covers v·dt = {fmt(v * dt)} m, not {fmt(v)} m.",
+                 "left-out-dt-s"),
         ))},
         "col": {"key": column(key), "slips": kept_slips(column(key), (
             (column((ax, ay, 1.0)), "That is the move (Δx, Δy) itself. The θ column holds its derivatives by θ: "
-                                    "∂(v cos θ dt)/∂θ = −v sin θ dt = −Δy, and ∂(v sin θ dt)/∂θ = Δx."),
+                                    "∂(v cos θ dt)/∂θ = −v sin θ dt = −Δy, and ∂(v sin θ dt)/∂θ = Δx.",
+                                        "move-dx-dy-itself"),
             (column((ay, -ax, 1.0)), "The signs are flipped: the derivative of cos θ is −sin θ (and that of sin θ "
-                                     "is cos θ), so F(1,3) = −v sin θ dt = −Δy and F(2,3) = Δx."),
-            (column((-ay, ax, 0.0)), "F(3,3) is 1, not 0: θ′ = θ + ω dt contains θ itself, so ∂θ′/∂θ = 1."),
+                                     "is cos θ), so F(1,3) = −v sin θ dt = −Δy and F(2,3) = Δx.",
+                                         "signs-flipped-derivative-cos"),
+            (column((-ay, ax, 0.0)), "F(3,3) is 1, not 0: θ′ = θ + ω dt contains θ itself, so ∂θ′/∂θ = 1.", "f-3-3-1"),
         ))},
     }
 
@@ -142,14 +147,15 @@ def _north_jacobian(p, given=None):
         "slips": (
             Slip(grid(motion_jacobian((0, 0, _EAST), v, 0, dt)),
                  "That is F at θ = 0 (or sin and cos swapped). Facing north, sin θ = 1 and cos θ = 0: the "
-                 "heading column is (−v·dt, 0, 1)."),
+                 "heading column is (−v·dt, 0, 1).", name="f-theta-0-sin"),
             Slip(grid(motion_jacobian((0, 0, _NORTH), v, 0, 1)),
-                 f"You left out dt: F(1,3) = −v·sin θ·dt = −{fmt(v)} · 1 · {fmt(dt)}."),
+                 f"You left out dt: F(1,3) = −v·sin θ·dt = −{fmt(v)} · 1 · {fmt(dt)}.", name="left-out-dt-f"),
             Slip(grid(sub(F, identity(3))),
                  "That is the derivative of the displacement alone. x′ = x + v cos θ dt also contains x itself, "
-                 "so F carries the identity on its diagonal."),
+                 "so F carries the identity on its diagonal.", name="derivative-displacement-alone-xp"),
             Slip(grid(motion_jacobian((0, 0, -_NORTH), v, 0, dt)),
-                 "The sign of F(1,3) is flipped: the derivative of cos θ is −sin θ, so F(1,3) = −v sin θ dt."),
+                 "The sign of F(1,3) is flipped: the derivative of cos θ is −sin θ, so F(1,3) = −v sin θ dt.",
+                     name="sign-f-1-3"),
         ),
         "steps": worked,
         "values": {
@@ -167,7 +173,7 @@ def _north_jacobian_ok(p) -> bool:
 
 
 
-_VARY_37 = Vary(_north_jacobian, Param("v", 2, 0.5, 3, 0.5, unit=" m/s"),
+_VARY_37 = Vary(_north_jacobian, Param("v", 2, 0.1, 4, 0.1, unit=" m/s"),
                 Param("dt", 0.5, 0.1, 2, 0.1, unit=" s", avoid=(1,)), valid=_north_jacobian_ok)
 
 EXERCISES = (

@@ -122,6 +122,8 @@ EXERCISES = (
              (4 * math.cos(3.1), 4 * math.sin(3.1)), [[0.05, 0.0], [0.0, 0.001]]),
             # the landmark where the robot is: no bearing, so None
             ([1.0, 2.0, 0.3], [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.1]], (0.5, 0.2), (1.0, 2.0), _R0),
+            # the chapter's sighting with range and bearing noise correlated: R's off-diagonal counts
+            ([0.0, 0.0, 0.0], _P0, (4.8, 0.95), (3.0, 4.0), [[0.1, 0.02], [0.02, 0.01]]),
             # a sighting exactly as predicted: x stays, P shrinks
             ([1.0, -1.0, 0.5], _P0, (5.0, math.atan2(3.0, 4.0) - 0.5), (5.0, 2.0), _R0),
         ),

@@ -16,23 +16,35 @@ from ..reference.ekf import ekf_update, innovation, measurement_jacobian, range_
 from ..steps import Step
 from ..variants import Param, Vary
 from . import column
-from .checks import apart, kept_slips
+from .checks import apart, kept_slips, slips_apart
 
 _POSE = (0, 0, 0)
 _LANDMARK = (3, 4)
 _H_PRED = range_bearing(_POSE, _LANDMARK)
 
 # 4.1 to 4.3 and 4.7: a robot facing east (θ = 0) at (x, y) sights a landmark at (lx, ly).
-_SIGHTING = (Param("x", 0, -2, 2, 1), Param("y", 0, -2, 2, 1), Param("lx", 3, -5, 5, 1), Param("ly", 4, -5, 5, 1))
+# Positions in steps of 0.1 m: offsets, ranges and bearings differ from one student to the next.
+_SIGHTING = (Param("x", 0, -2, 2, 0.1), Param("y", 0, -2, 2, 0.1), Param("lx", 3, -5, 5, 0.1),
+             Param("ly", 4, -5, 5, 0.1))
+
+
+def _exact(v):
+    """A difference or sum of the grid's decimals without float noise (3 stays the whole number 3)."""
+    v = round(v, 10)
+    return int(v) if v == int(v) else v
+
+
+def _offsets(p):
+    """The landmark's offset (dx, dy) from the robot, without float noise."""
+    return _exact(p["lx"] - p["x"]), _exact(p["ly"] - p["y"])
 
 
 def _sighting(p):
     """The offsets and distances of a sighting, and the strings every derivation of it prints."""
     pose, landmark = (p["x"], p["y"], 0), (p["lx"], p["ly"])
-    dx, dy = p["lx"] - p["x"], p["ly"] - p["y"]
-    q = dx * dx + dy * dy
-    root = math.isqrt(q)
-    whole = root * root == q  # √q is a whole number
+    dx, dy = _offsets(p)
+    q = _exact(dx * dx + dy * dy)
+    whole = isinstance(q, int) and math.isqrt(q) ** 2 == q  # √q is a whole number
     r = range_bearing(pose, landmark)[0]
     return {
         "pose": pose, "landmark": landmark, "dx": dx, "dy": dy, "q": q, "r": r, "whole": whole,
@@ -40,7 +52,7 @@ def _sighting(p):
         "values": {
             "px": paren(p["x"]), "py": paren(p["y"]), "dx": fmt(dx), "dy": fmt(dy),
             "dx2": fmt(dx * dx), "dy2": fmt(dy * dy), "q": fmt(q), "r": fmt(r),
-            "rq": fmt(r) if whole else f"\\sqrt{{{q}}}",  # √q in TeX: exact
+            "rq": fmt(r) if whole else f"\\sqrt{{{fmt(q)}}}",  # √q in TeX: exact
             "req": relation(r),
         },
     }
@@ -59,10 +71,12 @@ def _offset(p, s, given):
     key = column((s["dx"], s["dy"]))
     dx, dy = (row[0] for row in chains.given(given, "d", key))
     slips = [Slip(column((-s["dx"], -s["dy"])), "That is the robot's position minus the landmark's: the offset is "
-                                                "the landmark minus the robot, dx = lx − x and dy = ly − y.")]
+                                                "the landmark minus the robot, dx = lx − x and dy = ly − y.",
+                                                    name="robot-s-position-minus")]
     if apart(key, column(s["landmark"]), slips[0].value):
         slips.append(Slip(column(s["landmark"]), "That is where the landmark is. Its offset from the robot "
-                                                 f"subtracts the robot's position ({fmt(p['x'])}, {fmt(p['y'])})."))
+                                                 f"subtracts the robot's position ({fmt(p['x'])}, {fmt(p['y'])}).",
+                                                     name="where-landmark-offset-robot"))
     return (dx, dy), {"key": key, "slips": tuple(slips)}
 
 
@@ -71,11 +85,11 @@ def _squared(d, given):
     dx, dy = d
     key = dx * dx + dy * dy
     slips = [Slip((dx + dy) ** 2, "That is (dx + dy)², the square of the sum. Square each offset on its own, "
-                                  "then add: q = dx² + dy².")]
+                                  "then add: q = dx² + dy².", name="dx-dy-2-square")]
     signed = dx * abs(dx) + dy * abs(dy)  # a negative offset squared as −(d²)
     if (dx < 0 or dy < 0) and apart(key, slips[0].value, signed):
         slips.append(Slip(signed, "A negative offset squared gives a positive number: (−a)² = a², so every "
-                                  "term of q = dx² + dy² adds."))
+                                  "term of q = dx² + dy² adds.", name="negative-offset-squared-gives"))
     return chains.given(given, "q", key), {"key": key, "slips": tuple(slips)}
 
 
@@ -103,10 +117,11 @@ def _predicted_range(p, given=None):
     elif s["whole"]:
         remark = f"A {a}-{b}-{fmt(s['r'])} right triangle: the range comes out whole."
     else:
-        remark = f"A right triangle with legs {a} m and {b} m: the range is its hypotenuse."
+        remark = f"A right triangle with legs {fmt(a)} m and {fmt(b)} m: the range is its hypotenuse."
     return {
         "key": r,
-        "slips": (Slip(float(q), "That is q = dx² + dy², the squared range. Take its square root."),),
+        "slips": (Slip(float(q), "That is q = dx² + dy², the squared range. Take its square root.",
+            name="q-dx2-dy2-squared"),),
         "steps": {"d": offset, "q": squared},
         "values": {**s["values"], "remark": remark,
                    "next41": ("Exercise 4.4 compares this range with a measurement." if s["r"] == _H_PRED[0]
@@ -124,11 +139,11 @@ def _predicted_bearing(p, given=None):
     phi = bearing_of(dx, dy)  # the learner's own offset may be (0, 0): then no bearing is defined
     turn = 2 * math.pi
     slips = [Slip(math.atan2(dx, dy), "The arguments are swapped. atan2 takes (dy, dx): the angle is measured "
-                                      "from the x-axis.")]
+                                      "from the x-axis.", name="phi-arguments-swapped")]
     if dx < 0 and apart(phi, slips[0].value, math.atan(dy / dx), turn=turn):
         slips.append(Slip(math.atan(dy / dx), "That is atan(dy/dx), which cannot tell a landmark behind the robot "
                                               "(dx < 0) from one ahead of it: it is off by π. atan2(dy, dx) looks at "
-                                              "both signs."))
+                                              "both signs.", name="atan-dy-dx-which"))
     rad = chains.given(given, "phi", phi)
     deg = math.degrees(rad)
     return {
@@ -136,7 +151,7 @@ def _predicted_bearing(p, given=None):
         "slips": (
             Slip(math.degrees(math.atan2(dx, dy)),
                  f"The arguments are swapped. atan2 takes (dy, dx): atan2({fmt(dy)}, {fmt(dx)}), measured from the "
-                 "x-axis."),
+                 "x-axis.", name="arguments-swapped"),
         ),
         "steps": {"d": offset, "phi": {"key": phi, "slips": tuple(slips)}},
         "values": {**s["values"], "rad_rel": relation(phi), "deg": fmt(deg),
@@ -162,18 +177,19 @@ def _range_slope(p, given=None):
     return {
         "key": -mine,
         "slips": (
-            Slip(-dy / root, "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx."),
+            Slip(-dy / root, "That is H(1,2) = −dy/√q, the derivative with respect to y. H(1,1) uses dx.",
+                name="h-1-2-dy"),
             Slip(slope, "The sign is flipped: that is ∂r/∂dx = dx/√q. The robot's x enters through dx = lx − x, "
-                        "so the chain rule multiplies by ∂dx/∂x = −1: H(1,1) = −dx/√q."),
+                        "so the chain rule multiplies by ∂dx/∂x = −1: H(1,1) = −dx/√q.", name="sign-flipped-r-dx"),
             Slip(-dx / (root * root), f"You divided by q. The range row divides by √q = {s['rq_plain']}; "
-                                      "it is the bearing row that divides by q."),
+                                      "it is the bearing row that divides by q.", name="divided-q-range-row"),
         ),
         "steps": {"d": offset, "drdx": {"key": slope, "slips": kept_slips(slope, (
             (dx / (root * root), "That divides by q. The range is √q, and the derivative of √q by dx is "
-                                 "(1/(2√q))·2dx = dx/√q."),
-            (dy / root, "That is ∂r/∂dy = dy/√q. The derivative by dx has dx on top."),
+                                 "(1/(2√q))·2dx = dx/√q.", "divides-q-range-q"),
+            (dy / root, "That is ∂r/∂dy = dy/√q. The derivative by dx has dx on top.", "r-dy-dy-q"),
             (-slope, "That already has the minus of ∂dx/∂x = −1: that is H(1,1) itself. This step is the "
-                     "derivative by dx alone, dx/√q."),
+                     "derivative by dx alone, dx/√q.", "already-has-minus-dx"),
         ))}},
         "values": {**s["values"], "h11": fmt(h11), "size": fmt(abs(h11)), "drel": relation(h11),
                    "cos_rel": relation(abs(h11), math.cos(math.radians(shown(deg)))),
@@ -187,14 +203,17 @@ def _range_innovation(p, given=None):
     hr = chains.given(given, "hr", p["hr"])
     y = innovation((p["zr"], p["zphi"]), (hr, p["hphi"]))
     closer = y[0] < 0
+    places = 1 if round(p["zr"], 1) == p["zr"] else 2  # the ranges as the sensor gives them: 4.8, or 4.83
     return {
         "key": y[0],
         "slips": (
             Slip(innovation((hr,), (p["zr"],))[0],
-                 "The sign is flipped. The innovation is z − h(x): measured minus predicted."),
-            Slip(y[1], "That is the bearing innovation, the second component. The range is the first."),
+                 "The sign is flipped. The innovation is z − h(x): measured minus predicted.",
+                     name="sign-flipped-innovation-z"),
+            Slip(y[1], "That is the bearing innovation, the second component. The range is the first.",
+                name="bearing-innovation-second-component"),
         ),
-        "values": {"zr1": fixed(p["zr"], 1), "hr1": fixed(hr, 1), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
+        "values": {"zr1": fixed(p["zr"], places), "hr1": fixed(hr, places), "yr": fmt(y[0]), "gap": fmt(abs(y[0])),
                    "from41": "(its range is exercise 4.1's)" if _range_of_41(p) is not None else "",
                    "closer": "closer" if closer else "farther", "pull": "pull" if closer else "push",
                    "towards": "towards" if closer else "away from"},
@@ -214,12 +233,17 @@ def _innovation_is_a_surprise(p):
 
 
 def _ahead(p):
-    return p["lx"] > p["x"]
+    return _offsets(p)[0] > 0
 
 
 def _off_both_axes(p):
-    """A real right triangle: the landmark is not straight along x or y from the robot."""
-    return p["lx"] != p["x"] and p["ly"] != p["y"]
+    """A real right triangle: the landmark is at least 0.5 m off the robot's x and y lines."""
+    return all(abs(d) >= 0.5 for d in _offsets(p))
+
+
+def _range_ok(p):
+    """4.1: a real right triangle, and the range told apart from q (they meet at r = 1)."""
+    return _off_both_axes(p) and slips_apart(_predicted_range(p))
 
 
 EXERCISES = (
@@ -227,7 +251,7 @@ EXERCISES = (
         id="4.1",
         title="Predicted range",
         spec=number(label="r", unit="m"),
-        vary=Vary(_predicted_range, *_SIGHTING, valid=_off_both_axes),
+        vary=Vary(_predicted_range, *_SIGHTING, valid=_range_ok),
         steps=(OFFSET, SQUARED),
     ),
     Derive(
@@ -235,7 +259,7 @@ EXERCISES = (
         title="Predicted bearing",
         spec=number(label="φ", unit="°", angle="deg", periodic=True),
         vary=Vary(_predicted_bearing, *_SIGHTING,
-                  valid=lambda p: _off_both_axes(p) and p["lx"] - p["x"] != p["ly"] - p["y"]),
+                  valid=lambda p: _off_both_axes(p) and _offsets(p)[0] != _offsets(p)[1]),
         steps=(OFFSET, ANGLE),
     ),
     Derive(
@@ -243,7 +267,7 @@ EXERCISES = (
         title="An entry of H",
         spec=number(label="H(1,1)"),
         vary=Vary(_range_slope, *_SIGHTING,
-                  valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(p["lx"] - p["x"]) != abs(p["ly"] - p["y"])),
+                  valid=lambda p: _ahead(p) and _off_both_axes(p) and abs(_offsets(p)[0]) != abs(_offsets(p)[1])),
         steps=(OFFSET, SLOPE),
     ),
     Derive(
@@ -252,7 +276,7 @@ EXERCISES = (
         spec=number(label="range innovation", unit="m"),
         vary=Vary(_range_innovation,
                   Param("hr", 5, 3, 7, 0.1, unit=" m"), Param("hphi", _H_PRED[1], 0.2273, 1.4273, 0.1, unit=" rad"),
-                  Param("zr", 4.8, 2.5, 7.5, 0.1, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),
+                  Param("zr", 4.8, 2.5, 7.5, 0.01, unit=" m"), Param("zphi", 0.95, 0.05, 1.6, 0.01, unit=" rad"),
                   valid=_innovation_is_a_surprise),
         uses=(Uses("4.1", "hr", "range r", variant=_range_of_41),),
     ),

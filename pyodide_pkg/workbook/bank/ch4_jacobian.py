@@ -21,6 +21,7 @@ from .ch4_ekf_update import (  # the chapter's sighting and its first step
     _ahead,
     _jacobian_of,
     _offset,
+    _offsets,
     _sighting,
 )
 from .checks import kept_slips
@@ -38,14 +39,16 @@ def _bearing_row(d, given):
     key = ((dy / q, -dx / q, -1.0),)
     slips = kept_slips(key, (
         (((dy / root, -dx / root, -1.0),), "That divides by √q, as the range row does. The derivative of "
-                                           f"atan2(dy, dx) divides by q = dx² + dy² = {fmt(q)} itself."),
+                                           f"atan2(dy, dx) divides by q = dx² + dy² = {fmt(q)} itself.",
+                                               "divides-q-range-row"),
         (((-dy / q, dx / q, -1.0),), "The x and y entries have the wrong sign: (−dy/q, dx/q) is atan2's "
                                      "derivative by (dx, dy). The robot's x and y enter through dx = lx − x and "
-                                     "dy = ly − y, so the chain rule multiplies each by −1."),
+                                     "dy = ly − y, so the chain rule multiplies each by −1.", "y-entries-have-wrong"),
         (((dy / q, -dx / q, 0.0),), "∂φ/∂θ is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot "
-                                    "by δθ changes it by −δθ."),
+                                    "by δθ changes it by −δθ.", "phi-theta-0-bearing"),
         (((-dx / q, -dy / q, -1.0),), "That follows the range row's pattern (−dx, −dy). The bearing turns, it "
-                                      "does not stretch: ∂φ/∂x = dy/q and ∂φ/∂y = −dx/q, dx and dy crossed over."),
+                                      "does not stretch: ∂φ/∂x = dy/q and ∂φ/∂y = −dx/q, dx and dy crossed over.",
+                                          "follows-range-row-s"),
     ))
     return chains.given(given, "bearing", key)[0], {"key": key, "slips": slips}
 
@@ -66,20 +69,21 @@ def _whole_jacobian(p, given=None):
         "slips": (
             Slip(grid([[h / root for h in H[0]], H[1]]),
                  "The range row divides by q. Differentiating √q gives 1/(2√q) times the derivative of q, so "
-                 f"the range row divides by √q = {s['rq_plain']} (only the bearing row divides by q)."),
+                 f"the range row divides by √q = {s['rq_plain']} (only the bearing row divides by q).",
+                     name="range-row-divides-q"),
             Slip(grid([H[0], [dy / root, -dx / root, -1.0]]),
                  "The bearing row divides by √q. The derivative of atan2(dy, dx) divides by q = dx² + dy² = "
-                 f"{fmt(s['q'])}."),
+                 f"{fmt(s['q'])}.", name="bearing-row-divides-q"),
             Slip(grid([H[0], [H[1][0], H[1][1], 0.0]]),
                  "H(2,3) is not 0: the bearing is φ = atan2(dy, dx) − θ, so turning the robot by δθ changes "
-                 "it by −δθ."),
+                 "it by −δθ.", name="h-2-3-0"),
             Slip(grid([[-h for h in H[0]], [-H[1][0], -H[1][1], H[1][2]]]),
                  "The x and y columns have the wrong sign: you differentiated by the landmark's position. "
-                 "dx = lx − x, so moving the robot by +δx shrinks dx."),
+                 "dx = lx − x, so moving the robot by +δx shrinks dx.", name="y-columns-have-wrong"),
         ),
         "steps": {"d": offset, "bearing": row},
         "values": {**s["values"], "brel": relation_all(printed),
-                   "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{s['q']}}} {relation(s['r'])} {fmt(s['r'])}"},
+                   "away": fmt(s["r"]) if s["whole"] else f"\\sqrt{{{fmt(s['q'])}}} {relation(s['r'])} {fmt(s['r'])}"},
     }
 
 
@@ -99,6 +103,9 @@ def _over_root_q(sign, top):
 
 # 4.8: each entry of H's position columns, (row, column) -> (numerator, its sign, what it says in words,
 # and its slips: the chain rule's sign, the other row's denominator, the neighbouring entries).
+# each entry's four slips, in this order: the sign, the range row's √q for the bearing's q (or the reverse),
+# the other column's derivative, the other row's entry
+_ENTRY_SLIPS = ("sign-flipped", "wrong-denominator", "other-column", "other-row")
 _ENTRIES = {
     "2,1": ("dy", 1, "past a landmark on its left", "dy > 0",
             "swings the landmark further round to the left, so the bearing grows", "dy", (
@@ -168,7 +175,7 @@ def _jacobian_entry_formula(p):
         "key": lambda dx, dy: measurement_jacobian((0.0, 0.0, 0.0), (dx, dy))[i][j],
         "answer_text": f"{minus}{top}/{den}",
         "label": f"H({entry}) = ∂{'r' if i == 0 else 'φ'}/∂{var}",
-        "slips": tuple(Slip(f, message) for f, message in slips),
+        "slips": tuple(Slip(f, message, name=name) for (f, message), name in zip(slips, _ENTRY_SLIPS, strict=True)),
         "values": {
             "ij": f"{i + 1}{j + 1}", "fn": f_tex, "var": var, "dvar": dvar,
             "what": "range" if i == 0 else "bearing", "fdef": f_def, "fop": f_of, "inner": inner,
@@ -185,12 +192,13 @@ EXERCISES = (
         id="4.7",
         title="The whole measurement Jacobian H",
         spec=matrix(label="H"),
-        vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and p["ly"] > p["y"]),
+        vary=Vary(_whole_jacobian, *_SIGHTING, valid=lambda p: _ahead(p) and _offsets(p)[1] > 0),
         steps=(OFFSET, BEARING_ROW),
     ),
     Derive(
         id="4.8",
         title="H(2,1) as a formula",
+        same_answer="A formula in dx and dy: students differ only in which of four entries they are asked.",
         spec=formula(variables=("dx", "dy"), domain={"dx": (0.5, 5.0), "dy": (0.5, 5.0)}),
         vary=Vary(_jacobian_entry_formula, Choice("entry", "2,1", ("1,1", "1,2", "2,1", "2,2"))),
     ),

@@ -46,6 +46,7 @@ def gauss_newton_se2(poses, edges):
 '''
 
 _W = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 10.0]]
+_DIAG = [[10.0, 0.0, 0.0], [0.0, 10.0, 0.0], [0.0, 0.0, 5.0]]
 _CORRELATED = [[4.0, 1.0, 0.0], [1.0, 2.0, 0.0], [0.0, 0.0, 20.0]]
 
 Pose = tuple[float, float, float]
@@ -81,6 +82,10 @@ _EDGE_CASES: tuple[Graph, ...] = (
     (((0.0, 0.0, 3.0), (-1.0, 0.1, 3.1), (-2.0, 0.3, 3.12)),
      ((0, 1, (1.0, -0.1, 0.25), [[2.0, 0.0, 0.0], [0.0, 2.0, 0.0], [0.0, 0.0, 50.0]]),
       (1, 2, (1.0, 0.0, 0.2), _W))),
+    # the measured turn and the predicted one on opposite sides of ±π: the error, −6.22 rad as plain
+    # numbers, is 0.06 once wrapped (wrapping the prediction alone leaves it −6.22)
+    (((0.0, 0.0, 0.0), (1.0, 0.0, 3.1), (1.1, -1.0, 3.1)),
+     ((0, 1, (1.0, 0.0, -3.12), _DIAG), (1, 2, (1.0, 0.1, 0.0), _DIAG))),
     # no edge from pose 0 to pose 1: pose 1 hangs on pose 2; edges written backwards; pose 0 turned, off the origin
     (((3.0, 1.0, math.pi), (1.2, 0.8, -2.0), (2.0, 1.1, 2.8)),
      ((2, 1, (1.0, -0.5, 1.2), _CORRELATED),

@@ -31,9 +31,10 @@ def _offset_step(p, given):
     dx, dy = p["xj"] - p["xi"], p["yj"] - p["yi"]
     key = column((dx, dy))
     slips = kept_slips(key, (
-        (column((-dx, -dy)), "That is tᵢ − tⱼ. The offset of pose j from pose i is tⱼ − tᵢ = (xⱼ − xᵢ, yⱼ − yᵢ)."),
+        (column((-dx, -dy)), "That is tᵢ − tⱼ. The offset of pose j from pose i is tⱼ − tᵢ = (xⱼ − xᵢ, yⱼ − yᵢ).",
+            "t-t-offset-pose"),
         (column((p["xj"], p["yj"])), "That is where pose j is. Its offset from pose i subtracts pose i's position "
-                                     f"({fmt(p['xi'])}, {fmt(p['yi'])})."),
+                                     f"({fmt(p['xi'])}, {fmt(p['yi'])}).", "where-pose-j-offset"),
     ))
     d = [row[0] for row in chains.given(given, "d", key)]
     return d, {"key": key, "slips": slips}
@@ -47,14 +48,14 @@ def _turned_step(theta, d, given):
     slips = kept_slips(key, (
         (column(_times([[-s, -c], [c, -s]], d)),
          "That uses the derivative of R(θᵢ), not of its transpose. h turns the offset into pose i's frame with "
-         "R(θᵢ)ᵀ = [cos θ, sin θ; −sin θ, cos θ]: differentiate that one."),
+         "R(θᵢ)ᵀ = [cos θ, sin θ; −sin θ, cos θ]: differentiate that one.", "uses-derivative-r-theta"),
         (column(_times(rotation_transpose(theta), d)),
          "That is R(θᵢ)ᵀ(tⱼ − tᵢ) = h itself. Differentiate each entry of R(θᵢ)ᵀ by θ first: cos θ becomes "
-         "−sin θ and sin θ becomes cos θ."),
+         "−sin θ and sin θ becomes cos θ.", "r-theta-t-t"),
         (column([-v for v in _times(rotation_transpose_derivative(theta), d)]),
          "Every sign is flipped: that is −R′(θᵢ)ᵀ(tⱼ − tᵢ). Either a derivative's sign slipped (cos θ gives "
          "−sin θ, sin θ gives +cos θ) or the minus of e = z − h came in early; this step is the product before "
-         "that minus."),
+         "that minus.", "every-sign-flipped-rp"),
     ))
     return [row[0] for row in chains.given(given, "turned", key)], {"key": key, "slips": slips}
 
@@ -75,20 +76,21 @@ def _heading_entry(p, given=None):
     h = _times(rotation_transpose(theta), d)
     key = -g[row]
     flipped = (g[row], "The sign is flipped: that is a row of ∂h/∂θᵢ = R′(θᵢ)ᵀ(tⱼ − tᵢ). The error is e = z − h, "
-                       "so its derivative is minus h's.")
+                       "so its derivative is minus h's.", "sign-flipped-row-of-dh")
     if row == 0:
         slips = kept_slips(key, (
             flipped,
-            (-g[1], "That is the other row, ∂e_y/∂θᵢ. The entry asked is in row 1 of −R′(θᵢ)ᵀ(tⱼ − tᵢ)."),
+            (-g[1], "That is the other row, ∂e_y/∂θᵢ. The entry asked is in row 1 of −R′(θᵢ)ᵀ(tⱼ − tᵢ).",
+                "other-row-e-y"),
             (-h[0], "That multiplies by R(θᵢ)ᵀ, not by its derivative: it is −h_x itself. The entry is the change "
-                    "of e as θᵢ changes, so it needs R′(θᵢ)ᵀ."),
+                    "of e as θᵢ changes, so it needs R′(θᵢ)ᵀ.", "multiplies-r-theta-t"),
         ))
     else:  # row 1 of R(θ)ᵀ is minus row 0 of R′(θ)ᵀ, so −h_y is both slips below: one message names both
         slips = kept_slips(key, (
             flipped,
             (-g[0], "That is the other row's entry, ∂e_x/∂θᵢ (the same number as −h_y, which multiplying by "
                     "R(θᵢ)ᵀ instead of its derivative would give). The entry asked is ∂e_y/∂θᵢ, row 2 of "
-                    "−R′(θᵢ)ᵀ(tⱼ − tᵢ)."),
+                    "−R′(θᵢ)ᵀ(tⱼ − tᵢ).", "other-row-s-entry"),
         ))
     # what the derivation prints: the draw's own numbers, never the learner's
     true_d = (p["xj"] - p["xi"], p["yj"] - p["yi"])
@@ -132,8 +134,8 @@ EXERCISES = (
         title="An entry of the edge Jacobian ∂e/∂xᵢ",
         spec=number(label="∂e_x/∂θᵢ"),
         vary=Vary(_heading_entry,
-                  Param("xi", 1, -2, 2, 1), Param("yi", 1, -2, 2, 1), Choice("ti", 60, _ANGLES),
-                  Param("xj", 4, -3, 4, 1), Param("yj", 2, -3, 4, 1), Param("tj", 80, -170, 170, 10),
+                  Param("xi", 1, -2, 2, 0.5), Param("yi", 1, -2, 2, 0.5), Choice("ti", 60, _ANGLES),
+                  Param("xj", 4, -3, 4, 0.5), Param("yj", 2, -3, 4, 0.5), Param("tj", 80, -170, 170, 10),
                   Choice("entry", "x", ("x", "y")),
                   valid=_fair),
         steps=(OFFSET, TURNED),

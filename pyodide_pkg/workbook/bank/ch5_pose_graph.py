@@ -22,7 +22,7 @@ from ..reference.pose_graph import (
 from ..steps import Step
 from ..variants import Param, Vary
 from . import column, grid
-from .checks import apart
+from .checks import apart, slips_apart
 
 _X1 = (0.0, 0.0, 0.0)
 _Z12 = (1.0, 0.0, 0.0)
@@ -50,9 +50,10 @@ def _pose_count(p):
     return {
         "key": pose_graph_variables(n, pose_dof=3),
         "slips": (
-            Slip(n, "That counts poses, not numbers. Each planar pose carries three unknowns: x, y and θ."),
+            Slip(n, "That counts poses, not numbers. Each planar pose carries three unknowns: x, y and θ.",
+                name="counts-poses-numbers-each"),
             Slip(pose_graph_variables(n, pose_dof=6),
-                 "Six per pose is the 3D case. A planar pose has only x, y and θ."),
+                 "Six per pose is the 3D case. A planar pose has only x, y and θ.", name="six-per-pose-3d"),
         ),
         "values": {"unknowns": fmt(pose_graph_variables(n, pose_dof=3)),
                    "unknowns3d": fmt(pose_graph_variables(n, pose_dof=6))},
@@ -69,21 +70,24 @@ def _odometry_error(p, given=None):
     exact = edge_error(_X1, x2, _Z12)[0]
     change = abs(exact - e[0]) / abs(e[0]) if e[0] else 0.0
     again = [Slip(column(d), "That is x₂ − x₁ again, from step 1. Subtract it from the odometry reading "
-                             "z₁₂ = (1, 0, 0).")]
+                             "z₁₂ = (1, 0, 0).", name="x2-x1-again-step")]
     return {
         "key": e[0],
         "slips": (
             Slip(-e[0], "The sign is flipped: you computed (x₂ − x₁) − z₁₂. The error is measurement minus "
-                        "prediction."),
-            Slip(d[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂."),
+                        "prediction.", name="sign-flipped-computed-x2"),
+            Slip(d[0], "That is the pose difference x₂ − x₁ alone. Subtract it from the odometry reading z₁₂.",
+                name="pose-difference-x2-x1"),
         ),
         "steps": {
             "d": {"key": diff, "slips": (
                 Slip(column(a - b for a, b in zip(_X1, x2)), "That is x₁ − x₂, the difference the wrong way round: "
-                                                             "the motion runs from pose 1 to pose 2, x₂ − x₁."),)},
+                                                             "the motion runs from pose 1 to pose 2, x₂ − x₁.",
+                                                                 name="x1-x2-difference-wrong"),)},
             "e": {"key": column(e), "slips": (
                 Slip(column(-v for v in e), "The sign is flipped: that is (x₂ − x₁) − z₁₂. The error is the "
-                                            "measurement minus the prediction, z₁₂ − (x₂ − x₁)."),
+                                            "measurement minus the prediction, z₁₂ − (x₂ − x₁).",
+                                                name="sign-flipped-x2-x1"),
                 *(again if apart(e, d) else ())),
             },
         },
@@ -105,8 +109,10 @@ def _information_diagonal(p):
     return {
         "key": omega[0][0],
         "slips": (
-            Slip(s, "That is Σ(1,1), the covariance itself. The information matrix is its inverse, Ω = Σ⁻¹."),
-            Slip(omega[2][2], "That is Ω(3,3), the heading entry. The (1,1) entry belongs to x."),
+            Slip(s, "That is Σ(1,1), the covariance itself. The information matrix is its inverse, Ω = Σ⁻¹.",
+                name="1-1-covariance-itself"),
+            Slip(omega[2][2], "That is Ω(3,3), the heading entry. The (1,1) entry belongs to x.",
+                name="omega-3-3-heading"),
         ),
         "values": {"wxy": fmt(omega[0][0]), "wt": fmt(omega[2][2]), "times": _times(omega[2][2] / omega[0][0])},
     }
@@ -121,12 +127,15 @@ def _hessian_size(p):
         "key": size,
         "slips": (
             Slip(gauss_newton_size(n, 6),
-                 f"That counts the poses only. In full SLAM the {m} landmarks are unknowns too, 3 numbers each."),
+                 f"That counts the poses only. In full SLAM the {m} landmarks are unknowns too, 3 numbers each.",
+                     name="counts-poses-only-full"),
             Slip(gauss_newton_size(n, 3, m, 3),
-                 "A 3D pose has 6 degrees of freedom (x, y, z, roll, pitch, yaw), not 3."),
+                 "A 3D pose has 6 degrees of freedom (x, y, z, roll, pitch, yaw), not 3.", name="3d-pose-has-6"),
             Slip(size ** 2,
-                 "That is the number of entries of H. The question asks for its side: one row per unknown."),
-            Slip(gauss_newton_size(0, 6, m, 3), f"That counts the landmarks only. Add the {n} poses, 6 numbers each."),
+                 "That is the number of entries of H. The question asks for its side: one row per unknown.",
+                     name="number-entries-h-question"),
+            Slip(gauss_newton_size(0, 6, m, 3), f"That counts the landmarks only. Add the {n} poses, 6 numbers each.",
+                name="counts-landmarks-only-add"),
         ),
         "values": {"poses": fmt(gauss_newton_size(n, 6)), "marks": fmt(gauss_newton_size(0, 6, m, 3)),
                    "size": fmt(size), "entries": f"{'over' if rest else 'exactly'} {million} million"},
@@ -162,29 +171,32 @@ def _turned_edge_error(p, given=None):
         "slips": (
             Slip(column(world),
                  "You subtracted the poses in world axes. Odometry measures the motion in pose 1's frame, and "
-                 "pose 1 faces north: turn x₂ − x₁ into that frame first (its forward axis is the world's +y)."),
+                 "pose 1 faces north: turn x₂ − x₁ into that frame first (its forward axis is the world's +y).",
+                     name="subtracted-poses-world-axes"),
             Slip(column([-v for v in e]),
                  "The sign is flipped: that is prediction minus measurement. The error is z₁₂ − h, measured "
-                 "minus predicted."),
+                 "minus predicted.", name="sign-flipped-prediction-minus"),
             Slip(column(h),
                  "That is h, the motion the poses imply, seen from pose 1. The error subtracts it from the "
-                 "odometry reading z₁₂."),
+                 "odometry reading z₁₂.", name="h-motion-poses-imply"),
         ),
         "steps": {
             "d": {"key": column((dx, dy)), "slips": (
                 Slip(column((-dx, -dy)), "That is x₁ − x₂, the wrong way round: the difference runs from pose 1 "
-                                         "to pose 2, x₂ − x₁."),
-                Slip(column(xj[:2]), "That is where pose 2 is. Subtract pose 1's position (2, 1) from it.")),
+                                         "to pose 2, x₂ − x₁.", name="x1-x2-wrong-way"),
+                Slip(column(xj[:2]), "That is where pose 2 is. Subtract pose 1's position (2, 1) from it.",
+                    name="where-pose-2-subtract")),
             },
             "h": {"key": column(h), "slips": (
                 Slip(column((d[0], d[1], turn)),
                      "That is the world difference as it is. Turn it into pose 1's frame with R(90°)ᵀ: facing "
-                     "north, pose 1's forward axis is the world's +y."),
+                     "north, pose 1's forward axis is the world's +y.", name="world-difference-turn-into"),
                 Slip(column((*relative_pose((0.0, 0.0, -_XI[2]), (d[0], d[1], 0.0))[:2], turn)),
                      "That turns the difference by R(90°), the wrong way. Into pose 1's frame it is R(θ₁)ᵀ, the "
-                     "transpose: the world's +y becomes pose 1's forward axis."),
+                     "transpose: the world's +y becomes pose 1's forward axis.", name="turns-difference-r-90"),
                 Slip(column((h[0], h[1], xj[2])),
-                     "The third entry is pose 2's heading. h holds the turn from pose 1 to pose 2: θ₂ − θ₁.")),
+                     "The third entry is pose 2's heading. h holds the turn from pose 1 to pose 2: θ₂ − θ₁.",
+                         name="third-entry-pose-2")),
             },
         },
         "values": {
@@ -227,31 +239,33 @@ def _correlated_information(p, given=None):
         "slips": (
             Slip(grid([[1 / sigma[i][i] if i == j else 0.0 for j in range(3)] for i in range(3)]),
                  f"You inverted the diagonal alone. With the correlation {fmt(b)} between x and y, the 2×2 block has "
-                 "to be inverted as a whole: 1/det times [[d, −b], [−c, a]]."),
+                 "to be inverted as a whole: 1/det times [[d, −b], [−c, a]].",
+                     name="inverted-diagonal-alone-correlation"),
             Slip(grid([[1 / v if v else 0.0 for v in row] for row in sigma]),
                  "You took the reciprocal of each entry. The inverse of a matrix is not entry by entry: invert "
-                 "the x–y block as a whole, then the θ entry on its own."),
+                 "the x–y block as a whole, then the θ entry on its own.", name="took-reciprocal-each-entry"),
             Slip(grid([[v / det if i < 2 and j < 2 else (1 / v if i == j else 0.0)
                         for j, v in enumerate(row)] for i, row in enumerate(sigma)]),
                  "The off-diagonal entries have the wrong sign. The inverse of [[a, b], [c, d]] is "
-                 "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal."),
+                 "[[d, −b], [−c, a]] / (ad − bc): swap the diagonal and negate the off-diagonal.",
+                     name="off-diagonal-entries-have"),
         ),
         "steps": {
             "det": {"key": det2([row[:2] for row in sigma[:2]]), "slips": (
                 Slip(s * s + b * b, "That adds b·c. The determinant of [[a, b], [c, d]] is ad − bc: subtract the "
-                                    "product of the off-diagonal entries."),
+                                    "product of the off-diagonal entries.", name="adds-b-c-determinant"),
                 Slip(s * s, "That is the product of the diagonal alone. The correlation takes b·c = "
-                            f"{fmt(b * b)} off it: det = ad − bc.")),
+                            f"{fmt(b * b)} off it: det = ad − bc.", name="product-diagonal-alone-correlation")),
             },
             "block": {"key": grid(block), "slips": (
                 Slip(grid([[s, -b], [-b, s]]), "That is the swapped and negated matrix before dividing: multiply it "
-                                               f"by 1/det = 1/{fmt(det)}."),
+                                               f"by 1/det = 1/{fmt(det)}.", name="swapped-negated-matrix-before"),
                 Slip(grid([[s / det, b / det], [b / det, s / det]]),
                      "The off-diagonal entries keep their sign here. The inverse negates them: [[d, −b], [−c, a]] / "
-                     "det."),
+                     "det.", name="off-diagonal-entries-keep"),
                 Slip(grid([[1 / s, 0.0], [0.0, 1 / s]]),
                      "That inverts the diagonal alone, as if x and y were not correlated. The block is inverted as "
-                     "a whole, with its determinant.")),
+                     "a whole, with its determinant.", name="inverts-diagonal-alone-if")),
             },
         },
         "values": {
@@ -276,15 +290,16 @@ EXERCISES = (
         id="5.1",
         title="Count the unknowns",
         spec=number(label="number of optimisation variables", unit="variables"),
-        vary=Vary(_pose_count, Param("n", 100, 10, 500, 10)),
+        vary=Vary(_pose_count, Param("n", 100, 10, 999, 1)),
     ),
     Derive(
         id="5.2",
         title="Odometry edge error",
         spec=number(label="x-component of e = z₁₂ − (x₂ − x₁)", unit="m"),
-        vary=Vary(_odometry_error, Param("x2", 1.1, 0.7, 1.4, 0.1, unit=" m", avoid=(1,)),
+        vary=Vary(_odometry_error, Param("x2", 1.1, 0.5, 1.5, 0.005, unit=" m", avoid=(1,)),
                   Param("y2", 0.05, -0.1, 0.1, 0.05, unit=" m"),
-                  Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,))),
+                  Param("t2", 0.02, -0.05, 0.05, 0.01, unit=" rad", avoid=(0,)),
+                  valid=lambda p: slips_apart(_odometry_error(p))),
         steps=(Step("d", "x₂ − x₁", matrix(label="x₂ − x₁", names=("dx|x", "dy|y", "dθ|θ"), units=("m", "m", "rad"))),
                Step("e", "e = z₁₂ − (x₂ − x₁)", matrix(label="e = z₁₂ − (x₂ − x₁)", names=("e_x|x", "e_y|y", "e_θ|θ"),
                                                       units=("m", "m", "rad")))),
@@ -293,7 +308,7 @@ EXERCISES = (
         id="5.3",
         title="Information matrix",
         spec=number(label="Ω(1,1), the (1,1) entry of Σ⁻¹"),
-        vary=Vary(_information_diagonal, Param("s", 0.01, 0.01, 0.05, 0.01, avoid=(0.03,)),
+        vary=Vary(_information_diagonal, Param("s", 0.01, 0.01, 0.1, 0.0005, avoid=(0.03,)),
                   Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,))),
     ),
     Trace(
@@ -320,7 +335,7 @@ EXERCISES = (
         id="5.5",
         title="Size of the Gauss–Newton system",
         spec=number(label="rows (= columns) of H"),
-        vary=Vary(_hessian_size, Param("n", 1000, 500, 3000, 100), Param("m", 500, 100, 1000, 100),
+        vary=Vary(_hessian_size, Param("n", 1000, 500, 3000, 10), Param("m", 500, 100, 1000, 10),
                   valid=_distinct_sizes),
     ),
     Derive(
@@ -337,8 +352,8 @@ EXERCISES = (
         id="5.7",
         title="Information from a correlated covariance",
         spec=matrix(label="Ω = Σ⁻¹"),
-        vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.01, avoid=(0.03,)),
-                  Param("b", 0.01, 0.005, 0.045, 0.005), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
+        vary=Vary(_correlated_information, Param("s", 0.02, 0.01, 0.05, 0.001, avoid=(0.03,)),
+                  Param("b", 0.01, 0.005, 0.045, 0.001), Param("t", 0.001, 0.001, 0.005, 0.001, avoid=(0.003,)),
                   valid=_two_places_suffice),
         steps=(Step("det", "determinant of the x–y block", number(label="det = ad − bc of the x–y block")),
                Step("block", "inverse of the x–y block", matrix(label="the x–y block of Ω"))),

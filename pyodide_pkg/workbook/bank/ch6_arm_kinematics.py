@@ -35,7 +35,8 @@ def _straight_reach(p):
     elbow = forward_kinematics_2link(L, 0, 0, 0)[0]  # link 1 alone
     return {
         "key": tip,
-        "slips": (Slip(elbow, "That is the elbow, the end of link 1. Add link 2, which also points along x."),),
+        "slips": (Slip(elbow, "That is the elbow, the end of link 1. Add link 2, which also points along x.",
+            name="elbow-end-link-1"),),
         "values": {"tip": fmt(tip)},
     }
 
@@ -49,9 +50,9 @@ def link2_direction_slips(t1: float, t2: float) -> tuple[Slip, ...]:
     """The slips in θ1 + θ2, the direction of link 2 (in degrees; 6.2, 7.1, 7.6)."""
     return kept_slips(t1 + t2, (
         (t2, f"That is θ2 alone. θ2 is measured from link 1, which points at {prose(t1)}°: "
-             "link 2 points at θ1 + θ2."),
+             "link 2 points at θ1 + θ2.", "theta2-alone-theta2-measured"),
         (t1 - t2, "That is θ1 − θ2. θ2 turns link 2 further, the same way θ1 turns link 1, "
-                  "so the two angles add."),
+                  "so the two angles add.", "theta1-theta2-theta2-turns"),
     ), turn=360)
 
 
@@ -66,18 +67,19 @@ def _bent_reach(p, given=None):
     t12 = chains.given(given, "t12", t1 + t2)
     x2 = chains.given(given, "x2", forward_kinematics_2link(0, 1, math.radians(t12), 0)[0])
     x2_slips = kept_slips(c12, (
-        (s12, "That is link 2's share of y, L2·sin(θ1 + θ2). Its share of x uses the cosine."),
+        (s12, "That is link 2's share of y, L2·sin(θ1 + θ2). Its share of x uses the cosine.", "link-2-share-of-y"),
         (forward_kinematics_2link(0, 1, r2, 0)[0],  # link 2 drawn at θ2 itself
-         f"That is cos {prose(t2)}°, link 2 at θ2. It points at θ1 + θ2: take the cosine of {prose(t1 + t2)}°."),
+         f"That is cos {prose(t2)}°, link 2 at θ2. It points at θ1 + θ2: take the cosine of {prose(t1 + t2)}°.",
+             "cos-link-2-theta2"),
     ))
     return {
         "key": c1 + x2,
         "slips": (
             Slip(forward_kinematics_2link(1, 1, r1, r2 - r1)[0],  # link 2 drawn at θ2 itself
                  f"You used cos {fmt(t2)}° for link 2. Its direction is θ1 + θ2 = {fmt(t1 + t2)}°: joint angles "
-                 "add up along the chain."),
-            Slip(y, "That is the y-coordinate. For x use the cosines."),
-            Slip(c12, f"That is link 2's share alone. Add link 1's L1·cos θ1 = {fmt(c1)}."),
+                 "add up along the chain.", name="used-cos-link-2"),
+            Slip(y, "That is the y-coordinate. For x use the cosines.", name="y-coordinate-use-cosines"),
+            Slip(c12, f"That is link 2's share alone. Add link 1's L1·cos θ1 = {fmt(c1)}.", name="link-2-alone"),
         ),
         "steps": {
             "t12": {"key": t12, "slips": link2_direction_slips(t1, t2)},
@@ -129,6 +131,27 @@ def _elbow_share(theta2):
     return math.atan2(y, x)
 
 
+def _diagonal_steps(x, y, c2, t2, phi, branch, other, rel, target):
+    """6.3's steps: cos θ2 from the law of cosines, then θ2 of the branch (the learner's own c2 and t2 when given)."""
+    r = math.hypot(x, y)
+    return {
+        "c2": {"key": c2, "slips": (
+            Slip((r * r) / 2, "You left out L1² + L2²: the law of cosines takes them away from x² + y² "
+                              "before dividing by 2·L1·L2.", name="left-out-l12-l22"),
+            Slip((r * r - 4) / 2, "You took away (L1 + L2)², not L1² + L2²: square each link on its own.",
+                name="took-away-l1-l2"),
+            Slip((r - 2) / 2, "You used the distance r = √(x² + y²) itself. The law of cosines takes its "
+                              "square, x² + y².", name="used-distance-r-x2"),
+        )},
+        "t2": {"key": t2, "label": f"θ2 ({branch}, θ2 {rel} 0)", "slips": (
+            Slip(-t2, f"That is θ2 of the {other} solution. This exercise asks for the {branch} one, "
+                      f"θ2 {rel} 0.", name="theta2-solution-exercise-asks"),
+            Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}; it goes into θ1, not θ2.",
+                name="direction-target-goes-into"),
+        )},
+    }
+
+
 def _diagonal_ik(p, given=None):
     """6.3: unit links reaching a diagonal target (±1, ±1); asked: θ2 or θ1 of one elbow branch, in degrees.
     Steps: cos θ2 from the law of cosines, then θ2 of the branch, each from the learner's own
@@ -141,50 +164,45 @@ def _diagonal_ik(p, given=None):
     other, rel = ("elbow-up", "≥") if down else ("elbow-down", "≤")
     c2 = chains.given(given, "c2", cos_elbow(1, 1, x, y))
     t2 = chains.given(given, "t2", sign * math.degrees(math.acos(c2)))  # ValueError when |cos θ2| > 1
-    t1 = math.degrees(math.atan2(y, x) - _elbow_share(math.radians(t2)))
     phi = math.degrees(math.atan2(y, x))
     share = math.degrees(_elbow_share(mine[1]))  # the angle the elbow adds, for the printed θ2
     elbow, elbow_twin = _unit(mine[0]), _unit(twin[0])
     side, above = _elbow_side((x, y), elbow)
     target = f"atan2({fmt(y)}, {fmt(x)})"
-    r = math.hypot(x, y)
+    steps = _diagonal_steps(x, y, c2, t2, phi, branch, other, rel, target)
     if asked == "θ2":
-        key = t2
+        key = t2  # θ1 is not asked, so a θ2 of ±180° (no θ1 reaches the target) is a fair θ2 all the same
         slips = [
-            Slip(cos_elbow(1, 1, x, y), "That is cos θ2. The angle whose cosine is 0 is what is asked."),
+            Slip(cos_elbow(1, 1, x, y), "That is cos θ2. The angle whose cosine is 0 is what is asked.",
+                name="cos-theta2-angle-whose"),
             Slip(math.degrees(twin[1]), f"{fmt(math.degrees(twin[1]))}° is a valid pose too: the {other} solution. "
-                                        f"This exercise asks for the {branch} one, θ2 {rel} 0."),
-            Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}; it goes into θ1, not θ2."),
+                                        f"This exercise asks for the {branch} one, θ2 {rel} 0.",
+                                            name="valid-pose-too-solution"),
+            Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}; it goes into θ1, not θ2.",
+                name="direction-target-goes-into"),
         ]
     else:
-        key = t1
+        try:  # θ1 follows from the learner's θ2; at θ2 = ±180° none does, though their steps stand
+            key = math.degrees(math.atan2(y, x) - _elbow_share(math.radians(t2)))
+        except Undefined as err:
+            return {"undefined": str(err), "steps": steps}
         slips = [
             Slip(math.degrees(twin[0]), f"{fmt(math.degrees(twin[0]))}° is θ1 of the {other} pose. "
-                                        f"This exercise asks for the {branch} one, θ2 {rel} 0."),
+                                        f"This exercise asks for the {branch} one, θ2 {rel} 0.",
+                                            name="theta1-pose-exercise-asks"),
             Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}. θ1 also takes away the angle the "
-                      f"elbow adds: atan2(L2 sin θ2, L1 + L2 cos θ2) = {fmt(share)}°."),
+                      f"elbow adds: atan2(L2 sin θ2, L1 + L2 cos θ2) = {fmt(share)}°.",
+                          name="direction-target-theta1-also"),
         ]
-        if apart(key, *(s.value for s in slips), t2, turn=360):
-            slips.append(Slip(t2, "That is θ2, the elbow angle. This asks for θ1, the shoulder angle."))
+        if apart(key, *(slip.value for slip in slips), t2, turn=360):
+            slips.append(Slip(t2, "That is θ2, the elbow angle. This asks for θ1, the shoulder angle.",
+                name="theta2-elbow-angle-asks"))
     return {
         "key": key,
         "label": f"{asked} ({branch}, θ2 {rel} 0)",
         "periodic": asked == "θ1",  # a shoulder angle give or take a whole turn is the same pose
         "slips": tuple(slips),
-        "steps": {
-            "c2": {"key": c2, "slips": (
-                Slip((r * r) / 2, "You left out L1² + L2²: the law of cosines takes them away from x² + y² "
-                                  "before dividing by 2·L1·L2."),
-                Slip((r * r - 4) / 2, "You took away (L1 + L2)², not L1² + L2²: square each link on its own."),
-                Slip((r - 2) / 2, "You used the distance r = √(x² + y²) itself. The law of cosines takes its "
-                                  "square, x² + y²."),
-            )},
-            "t2": {"key": t2, "label": f"θ2 ({branch}, θ2 {rel} 0)", "slips": (
-                Slip(-t2, f"That is θ2 of the {other} solution. This exercise asks for the {branch} one, "
-                          f"θ2 {rel} 0."),
-                Slip(phi, f"{fmt(phi)}° is the direction of the target, {target}; it goes into θ1, not θ2."),
-            )},
-        },
+        "steps": steps,
         "values": {
             "px": paren(x), "py": paren(y), "phi": fmt(phi), "pm": "" if down else "-",
             "t1": fmt(math.degrees(mine[0])), "s2": fmt(math.sin(mine[1])), "minus_share": signed(-share),
@@ -221,11 +239,12 @@ def _fk_formula(p):
         "slips": (
             Slip(lambda theta1, theta2, L1, L2: forward_kinematics_2link(L1, L2, theta1, theta2 - theta1)[i],
                  "Link 2 points at θ1 + θ2, not θ2: θ2 is measured from link 1, so the angles add up along "
-                 "the chain."),
+                 "the chain.", name="link-2-points-theta1"),
             Slip(lambda theta1, theta2, L1, L2: forward_kinematics_2link(L1, L2, theta1, theta2)[1 - i],
-                 f"That is {'yx'[i]}(θ1, θ2), with {words[other]}. The {coord}-coordinate uses {words[fn]}."),
+                 f"That is {'yx'[i]}(θ1, θ2), with {words[other]}. The {coord}-coordinate uses {words[fn]}.",
+                     name="theta1-theta2-coordinate-uses"),
             Slip(lambda theta1, theta2, L1, L2: forward_kinematics_2link(L1, L2, theta1 + theta2, 0)[i],
-                 "That puts both links at θ1 + θ2. Link 1 points at θ1 alone."),
+                 "That puts both links at θ1 + θ2. Link 1 points at θ1 alone.", name="puts-both-links-theta1"),
         ),
         "values": {"fn": "\\" + fn, "identity": identity,
                    "at62": fmt(forward_kinematics_2link(1, 1, _T1, _T2)[i]),
@@ -243,7 +262,7 @@ EXERCISES = (
         id="6.1",
         title="FK of the straight arm",
         spec=number(label="x-coordinate of the end effector", unit="m"),
-        vary=Vary(_straight_reach, Param("L", 1, 0.5, 2.5, 0.1, unit=" m")),
+        vary=Vary(_straight_reach, Param("L", 1, 0.25, 2.5, 0.01, unit=" m")),
     ),
     Derive(
         id="6.2",
@@ -257,6 +276,8 @@ EXERCISES = (
     Derive(
         id="6.3",
         title="IK: the elbow angle",
+        same_answer=("The target is one of the four diagonal points (±1, ±1) with unit links, so the angles come from "
+                     "a short list."),
         spec=number(label="θ2 (elbow-down, θ2 ≥ 0)", unit="°", angle="deg"),
         vary=Vary(_diagonal_ik, Param("x", 1, -1, 1, 2), Param("y", 1, -1, 1, 2),
                   Choice("asked", "θ2", ("θ2", "θ1")), Choice("branch", "elbow-down", ("elbow-down", "elbow-up")),
@@ -316,6 +337,7 @@ EXERCISES = (
     Derive(
         id="6.6",
         title="FK as a formula",
+        same_answer="A formula in θ1, θ2, L1 and L2: students differ only in whether x or y is asked.",
         spec=formula(
             variables=("theta1", "theta2", "L1", "L2"),
             domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},

@@ -55,7 +55,8 @@ EXERCISES = (
         },
         function="ik_2link",
         reference=_elbow_down,
-        cases=((1, 1, 1, 1), (1, 1, -1.2, 0.8), (2, 1, -1.5, -2), (1.5, 1, 2, 0.5)),
+        # the last: L2 > L1 puts the elbow term's k1 below 0, where atan(k2/k1) is off by a half turn
+        cases=((1, 1, 1, 1), (1, 1, -1.2, 0.8), (2, 1, -1.5, -2), (1.5, 1, 2, 0.5), (1, 2, 1.2, 0)),
         symptom="ik-quadrant",
     ),
 )

@@ -27,6 +27,7 @@ from . import column, grid
 from .ch6_arm_kinematics import LINK2_DIRECTION, link2_direction_slips  # as chapter 6 asks them
 from .ch7_bugs import JACOBIAN_SIGN_BUG
 from .checks import apart, kept_slips
+from .jacobian_formulas import FORMULAS, entry_of
 
 
 def _angle(deg: float, tex: bool = False) -> str:
@@ -54,20 +55,23 @@ def _jacobian_entry(p, given=None):
     link2 = chains.given(given, "link2", jacobian_2link(0, L, 0, math.radians(t12))[0][1])  # −L2 sin(θ1 + θ2)
     link1 = jacobian_2link(L, 0, math.radians(t1), 0)[0][0]  # −L1 sin θ1
     slips = [Slip(-J[0][0], "Check the sign, and the entry: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), "
-                  f"negative here (the derivative of cos is −sin). +{fmt(J[1][0])} is J(2,1), the derivative of y.")]
+                  f"negative here (the derivative of cos is −sin). +{fmt(J[1][0])} is J(2,1), the derivative of y.",
+                      name="check-sign-entry-j")]
     if t1 != 0:  # −J(1,1) and J(2,1) part ways: each slip gets its own message
         slips = [
             Slip(-J[0][0], "Check the sign: J(1,1) = ∂x/∂θ1 = −L1 sin θ1 − L2 sin(θ1+θ2), negative here "
-                 "(the derivative of cos is −sin)."),
-            Slip(J[1][0], "That is J(2,1) = ∂y/∂θ1, the derivative of y. J(1,1) differentiates x."),
+                 "(the derivative of cos is −sin).", name="check-sign-j-1"),
+            Slip(J[1][0], "That is J(2,1) = ∂y/∂θ1, the derivative of y. J(1,1) differentiates x.", name="j-2-1-y"),
             Slip(J[0][1], "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, "
-                 "which moves both links."),
+                 "which moves both links.", name="j-1-2-theta2"),
         ]
     link2_slips = kept_slips(J[0][1], (
-        (-J[0][1], "Check the sign: the derivative of L2 cos(θ1 + θ2) is −L2 sin(θ1 + θ2)."),
-        (J[1][1], "That is L2 cos(θ1 + θ2), link 2's own x. Its derivative by θ1 is −L2 sin(θ1 + θ2)."),
+        (-J[0][1], "Check the sign: the derivative of L2 cos(θ1 + θ2) is −L2 sin(θ1 + θ2).",
+            "check-sign-derivative-l2"),
+        (J[1][1], "That is L2 cos(θ1 + θ2), link 2's own x. Its derivative by θ1 is −L2 sin(θ1 + θ2).",
+            "l2-cos-theta1-theta2"),
         (jacobian_2link(0, L, 0, math.radians(t2))[0][1],
-         f"That is −L2 sin θ2, link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = 90°."),
+         f"That is −L2 sin θ2, link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = 90°.", "l2-sin-theta2-link"),
     ))
     return {
         "key": link1 + link2,
@@ -106,8 +110,9 @@ def _tip_velocity(p, given=None):
     return {
         "key": v[0],
         "slips": (
-            Slip(v[1], "That is ẏ, from the second row of J. ẋ comes from the first row."),
-            Slip(end_effector_velocity(J, [w, w])[0], "θ̇2 is 0, so the second column of J contributes nothing."),
+            Slip(v[1], "That is ẏ, from the second row of J. ẋ comes from the first row.", name="second-row-j-comes"),
+            Slip(end_effector_velocity(J, [w, w])[0], "θ̇2 is 0, so the second column of J contributes nothing.",
+                name="theta-2-0-so"),
         ),
         "values": {"J": bmatrix(J), "pw": paren(w), "xd": fmt(v[0]), "yd": fmt(v[1]),
                    "j11": fmt(J[0][0]), "pj12": paren(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
@@ -122,8 +127,9 @@ def _straight_arm_det(p):
         "key": jacobian_det(L, L, 0, 0),
         "slips": (
             Slip(jacobian_det(L, L, 0, math.pi / 2),
-                 "That is det J at θ2 = 90°. det J = L1 L2 sin θ2, and sin 0 = 0."),
-            Slip(float(L + L), "det J = L1 L2 sin θ2, a product with sin θ2, not a sum of lengths."),
+                 "That is det J at θ2 = 90°. det J = L1 L2 sin θ2, and sin 0 = 0.", name="det-j-theta2-90"),
+            Slip(float(L + L), "det J = L1 L2 sin θ2, a product with sin θ2, not a sum of lengths.",
+                name="det-j-l1-l2"),
         ),
     }
 
@@ -136,9 +142,12 @@ def _best_elbow(p):
     return {
         "key": math.degrees(most_manipulable_theta2(L, L, samples=181)),
         "slips": (
-            Slip(0.0, "At θ2 = 0 the arm is straight and w = 0: that is the worst angle, a singularity."),
-            Slip(180.0, "At θ2 = 180° the arm is folded back and w = 0: another singularity."),
-            Slip(wmax, "That is the largest value of w. The question asks for the angle where it happens."),
+            Slip(0.0, "At θ2 = 0 the arm is straight and w = 0: that is the worst angle, a singularity.",
+                name="theta2-0-arm-straight"),
+            Slip(180.0, "At θ2 = 180° the arm is folded back and w = 0: another singularity.",
+                name="theta2-180-arm-folded"),
+            Slip(wmax, "That is the largest value of w. The question asks for the angle where it happens.",
+                name="largest-value-w-question"),
         ),
         "values": {"w2": "" if L == 1 else fmt(L * L), "wmax": fmt(wmax),
                    "j11": fmt(J[0][0]), "j12": fmt(J[0][1]), "j21": fmt(J[1][0]), "j22": fmt(J[1][1]),
@@ -183,23 +192,24 @@ def _unit_jacobian(p, given=None):
     at_t2 = jacobian_2link(0, 1, 0, r2)
     col2_slips = kept_slips(col2, (
         (column((s12, c12)), "Check the sign of the first entry: the derivative of L2 cos(θ1 + θ2) is "
-                             "−L2 sin(θ1 + θ2)."),
+                             "−L2 sin(θ1 + θ2).", "check-sign-first-entry"),
         (column((c12, s12)), "That is link 2 itself, (L2 cos(θ1 + θ2), L2 sin(θ1 + θ2)): where it reaches, "
-                             "not how fast the tip moves. Differentiate each by θ2."),
+                             "not how fast the tip moves. Differentiate each by θ2.", "link-2-itself-l2"),
         (column((at_t2[0][1], at_t2[1][1])), f"That puts link 2 at θ2 = {_angle(t2)}. It points at θ1 + θ2 = "
-                                             f"{_angle(t1 + t2)}."),
+                                             f"{_angle(t1 + t2)}.", "puts-link-2-theta2"),
     ))
     return {
         "key": grid(add(link1, [[col2[0][0]] * 2, [col2[1][0]] * 2])),
         "slips": (
             Slip(grid([J[0], [J[1][0], 1 * s12]]),
                  "J(2,2) uses sin(θ1 + θ2): that is the bug of exercise 7.5. ∂/∂θ2 of L2 sin(θ1 + θ2) is "
-                 f"L2 cos(θ1 + θ2) = cos {prose(t1 + t2)}° = {prose(c12)}."),
+                 f"L2 cos(θ1 + θ2) = cos {prose(t1 + t2)}° = {prose(c12)}.", name="j-2-2-uses"),
             Slip(grid(jacobian_2link(1, 1, r2, r1)),
                  f"That is J at θ = ({_angle(t2)}, {_angle(t1)}): the two joint angles are swapped. "
-                 f"Here θ1 = {_angle(t1)} and θ2 = {_angle(t2)}."),
+                 f"Here θ1 = {_angle(t1)} and θ2 = {_angle(t2)}.", name="j-theta-two-joint"),
             Slip(grid(jacobian_2link(1, 1, r1, 0)),
-                 f"That is J of the straight arm, θ2 = 0. Put θ2 = {_angle(t2)} into sin(θ1 + θ2) and cos(θ1 + θ2)."),
+                 f"That is J of the straight arm, θ2 = 0. Put θ2 = {_angle(t2)} into sin(θ1 + θ2) and cos(θ1 + θ2).",
+                     name="j-straight-arm-theta2"),
         ),
         "steps": {
             "t12": {"key": t12, "slips": link2_direction_slips(t1, t2)},
@@ -247,64 +257,18 @@ _X_OF = "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1 + \\theta_2)"
 _Y_OF = "L_1\\sin\\theta_1 + L_2\\sin(\\theta_1 + \\theta_2)"
 
 
-def _entry(r: int, c: int):
-    """J(r+1, c+1) as a function of the formula's variables."""
-    return lambda theta1, theta2, L1, L2: jacobian_2link(L1, L2, theta1, theta2)[r][c]
-
-
-# Each entry of J as a formula: its answer, its TeX, the slips a learner makes on it.
-_FORMULAS = {
-    (1, 1): ("-L1*sin(theta1) - L2*sin(theta1 + "
-             "theta2)", "-L_1\\sin\\theta_1 - L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-y", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][0],
-         "The sign is flipped: the derivative of cos is −sin."),
-        (lambda theta1, theta2, L1, L2: -L1 * math.sin(theta1),
-         "Link 2 moves with θ1 too: its term L2 cos(θ1 + θ2) also depends on θ1, and contributes "
-         "−L2 sin(θ1 + θ2)."),
-        (_entry(0, 1), "That is J(1,2) = ∂x/∂θ2: only link 2 depends on θ2. J(1,1) differentiates by θ1, which "
-         "moves both links."),
-        (_entry(1, 0), "That is J(2,1) = ∂y/∂θ1, from the sines of y. J(1,1) differentiates x, the cosines."),
-    )),
-    (1, 2): ("-L2*sin(theta1 + theta2)", "-L_2\\sin(\\theta_1{s}+{s}\\theta_2)", "-(y - L_1\\sin\\theta_1)", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[0][1],
-         "The sign is flipped: the derivative of cos is −sin."),
-        (_entry(0, 0), "That is J(1,1) = ∂x/∂θ1: joint 1 moves both links. J(1,2) differentiates by θ2, which "
-         "moves link 2 only."),
-        (_entry(1, 1), "That is J(2,2) = ∂y/∂θ2, from the sines of y. J(1,2) differentiates x, the cosines."),
-    )),
-    (2, 1): ("L1*cos(theta1) + L2*cos(theta1 + "
-             "theta2)", "L_1\\cos\\theta_1 + L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[1][0],
-         "The sign is flipped: the derivative of sin is +cos."),
-        (lambda theta1, theta2, L1, L2: L1 * math.cos(theta1),
-         "Link 2 moves with θ1 too: its term L2 sin(θ1 + θ2) also depends on θ1, and contributes "
-         "L2 cos(θ1 + θ2)."),
-        (_entry(1, 1), "That is J(2,2) = ∂y/∂θ2: only link 2 depends on θ2. J(2,1) differentiates by θ1, which "
-         "moves both links."),
-        (_entry(0, 0), "That is J(1,1) = ∂x/∂θ1, from the cosines of x. J(2,1) differentiates y, the sines."),
-    )),
-    (2, 2): ("L2*cos(theta1 + theta2)", "L_2\\cos(\\theta_1{s}+{s}\\theta_2)", "x - L_1\\cos\\theta_1", (
-        (lambda theta1, theta2, L1, L2: -jacobian_2link(L1, L2, theta1, theta2)[1][1],
-         "The sign is flipped: the derivative of sin is +cos."),
-        (_entry(1, 0), "That is J(2,1) = ∂y/∂θ1: joint 1 moves both links. J(2,2) differentiates by θ2, which "
-         "moves link 2 only."),
-        (_entry(0, 1), "That is J(1,2) = ∂x/∂θ2, from the cosines of x. J(2,2) differentiates y, the sines."),
-    )),
-}
-
-
 def _jacobian_formula(p):
     """7.7: one entry of J as a formula in θ1, θ2, L1, L2 (which one is drawn)."""
     entry = p["entry"]
     r, c = (int(k) for k in entry.strip("()").split(","))
-    answer, tex, equals, slips = _FORMULAS[r, c]
+    answer, tex, equals, slips = FORMULAS[r, c]
     coord, joint = "xy"[r - 1], c
     at71 = jacobian_2link(1, 1, 0, math.pi / 2)[r - 1][c - 1]  # exercise 7.1's own numbers: unit links at (0, 90°)
     return {
-        "key": _entry(r - 1, c - 1),
+        "key": entry_of(r - 1, c - 1),
         "answer_text": answer,
         "label": f"J{entry} = ∂{coord}/∂θ{joint}",
-        "slips": tuple(Slip(f, m) for f, m in slips),
+        "slips": tuple(Slip(f, m, name=name) for f, m, name in slips),
         "values": {
             "ij": f"{r}{c}", "coord": coord, "j": str(joint),
             "fk": _X_OF if r == 1 else _Y_OF, "fk2": (_X_OF if r == 1 else _Y_OF).replace(" + \\theta", "+\\theta"),
@@ -332,19 +296,21 @@ EXERCISES = (
         title="End-effector velocity",
         spec=number(label="ẋ", unit="m/s"),
         vary=Vary(
-            _tip_velocity, Param("L", 1, 0.5, 2, 0.1, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))
+            _tip_velocity, Param("L", 1, 0.5, 2, 0.01, unit=" m"), Param("w1", 1, -2, 2, 0.5, unit=" rad/s", avoid=(0,))
         ),
         uses=(Uses("7.1", "j11", "J(1,1)", variant=lambda p: 0 if p["L"] == 1 else None),),
     ),
     Derive(
         id="7.3",
         title="Spot the singularity",
+        same_answer="det J of the straight arm is 0 for every link length: that is the point of the exercise.",
         spec=number(label="det J at θ2 = 0"),
         vary=Vary(_straight_arm_det, Param("L", 1, 0.5, 2.5, 0.1, unit=" m", avoid=(2,))),
     ),
     Derive(
         id="7.4",
         title="Best elbow angle",
+        same_answer="The best elbow angle is 90° for every link length: that is the point of the exercise.",
         spec=number(label="θ2 that maximises w = |det J|", unit="°", angle="deg"),
         vary=Vary(_best_elbow, Param("L", 1, 0.5, 2, 0.1, unit=" m")),
     ),
@@ -387,6 +353,7 @@ EXERCISES = (
     Derive(
         id="7.7",
         title="J(1,1) as a formula",
+        same_answer="A formula in θ1, θ2, L1 and L2: students differ only in which of four entries they are asked.",
         spec=formula(
             variables=("theta1", "theta2", "L1", "L2"),
             domain={"theta1": (-3.0, 3.0), "theta2": (-3.0, 3.0), "L1": (0.2, 2.0), "L2": (0.2, 2.0)},

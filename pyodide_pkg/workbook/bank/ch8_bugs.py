@@ -55,7 +55,9 @@ EXERCISES = (
         function="pid_step_limited",
         reference=_reference,
         cases=((1.0, 1.0, 0.0, 6.0, 4.0, 1.0, 0.01, 2.5), (0.8, 0.82, 0.5, 6.0, 4.0, 1.0, 0.01, 2.5),
-               (0.1, 0.12, 0.4, 2.0, 1.0, 0.5, 0.1, 5.0), (-2.0, -1.9, -0.3, 3.0, 2.0, 0.2, 0.05, 1.0)),
+               (0.1, 0.12, 0.4, 2.0, 1.0, 0.5, 0.1, 5.0), (-2.0, -1.9, -0.3, 3.0, 2.0, 0.2, 0.05, 1.0),
+               # saturated high while the error pulls back: integrate; then winding, the output from the kept integral
+               (-0.5, -0.5, 2.0, 1.0, 4.0, 0.0, 0.01, 2.5), (1.0, 1.0, 0.0, 2.0, 10.0, 0.0, 0.1, 2.5)),
         symptom="windup",
     ),
 )

@@ -42,6 +42,7 @@ EXERCISES = (
             (0, 0, 2, 1, 1, 1, 0.2, -1, 1),  # no error, the old integral alone saturates
             (1, 1, 4, 0, 1, 0, 2, -5, 5),  # the old integral inside the limits, the new one past u_max: hold it
             (-1, -1, -4, 0, 1, 0, 2, -5, 5),  # and past u_min
+            (1, 1, 0, 1, 1, 0, 0.5, -1.5, 1.5),  # u exactly at u_max is not above it: integrate (exact in binary)
         ),
         random_args=lambda rng: (rng.uniform(-10, 10), rng.uniform(-10, 10), rng.uniform(-20, 20),
                                  rng.uniform(0, 5), rng.uniform(0, 2), rng.uniform(0, 2), rng.uniform(0.01, 1),

@@ -12,6 +12,7 @@ from ..number_format import fmt, paren, prose, signed
 from ..reference.pid import d_term, i_term, p_term, pid_sequence, pid_step, pid_terms
 from ..variants import Choice, Param, Vary
 from . import column
+from .checks import apart
 
 
 def _p_step(p):
@@ -23,15 +24,15 @@ def _p_step(p):
         "slips": (
             Slip(p_term(p["actual"] - p["target"], p["Kp"]),
                  f"Sign: the error is target − actual = {'+' if e > 0 else '−'}{fmt(abs(e))}, so the push is "
-                 f"{'positive' if e > 0 else 'negative'}, toward the target."),
-            Slip(e, "That is the error e. The output multiplies it by Kp."),
+                 f"{'positive' if e > 0 else 'negative'}, toward the target.", name="sign-error-target-actual"),
+            Slip(e, "That is the error e. The output multiplies it by Kp.", name="error-e-output-multiplies"),
         ),
         "values": {"e": fmt(e), "pe": paren(e), "u": fmt(u)},
     }
 
 
 # 8.2 and 8.7: three PID steps with a shrinking error e[0] > e[1] > e[2] > 0, from e[−1] = 0.
-_THREE_STEPS = (Param("Kp", 1, 0.5, 3, 0.5), Param("Ki", 0.1, 0.05, 0.3, 0.05), Param("Kd", 0.5, 0.2, 1, 0.1),
+_THREE_STEPS = (Param("Kp", 1, 0.5, 3, 0.1), Param("Ki", 0.1, 0.05, 0.3, 0.01), Param("Kd", 0.5, 0.2, 1, 0.05),
                 Choice("dt", 1, (0.5, 1, 2)),
                 Param("e0", 5, 3, 9, 1), Param("e1", 3, 2, 6, 1), Param("e2", 1, 1, 4, 1))
 _GAINS = ("Kp", "Ki", "Kd", "dt")
@@ -87,11 +88,13 @@ def _falling_fast(p):
 
 def _converging(p):
     """8.2's story: the error shrinks, and the push is gentle: positive, weaker than the step before, and
-    no more than P alone (D eases off at least as much as I adds)."""
+    no more than P alone (D eases off at least as much as I adds), yet told apart from P (the
+    derivation prints P, which must not pass for the answer)."""
     if not _shrinking(p):
         return False
     u = pid_sequence([p["e0"], p["e1"], p["e2"]], *(p[g] for g in _GAINS))
-    return 0 < u[2] < u[1] and u[2] <= p_term(p["e2"], p["Kp"]) + 1e-9
+    P = p_term(p["e2"], p["Kp"])
+    return 0 < u[2] < u[1] and u[2] <= P + 1e-9 and (apart(u[2], P) or math.isclose(u[2], P))
 
 
 def _pid_output(p):
@@ -105,12 +108,14 @@ def _pid_output(p):
         "key": u,
         "slips": (
             Slip(P + I, f"You left out the D term. The error fell from {fmt(e1)} to {fmt(e2)}, so "
-                        f"Kd·(e[2] − e[1])/dt = {prose(D)}."),
-            Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times),
-            Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking."),
+                        f"Kd·(e[2] − e[1])/dt = {prose(D)}.", name="left-out-d-term"),
+            Slip(P + D, "You left out the I term: Ki times the sum of all errors so far" + times,
+                name="left-out-i-term"),
+            Slip(P + I - D, "D sign: it is Kd·(e[2] − e[1]), new minus old, and the error is shrinking.",
+                name="d-sign-kd-e"),
             Slip(P + Ki * e2 * dt + D,
                  f"The I term integrates every error so far ({fmt(e0)} + {fmt(e1)} + {fmt(e2)}), not only the current "
-                 "one."),
+                 "one.", name="i-term-integrates-every"),
         ),
         "values": {**t["values"], "Ds": signed(D), "u": fmt(u), "pile": fmt((e0 + e1 + e2) * dt),
                    "more": _ADDS[_i_share(I, P)]},
@@ -127,10 +132,11 @@ def _falling_error_d_term(p):
             Slip(
                 -D,
                 f"Sign flipped: the D term uses e[k] − e[k−1] = {fmt(ek)} − {fmt(ep)} = {prose(ek - ep)}. "
-                "A falling error gives a negative D.",
+                "A falling error gives a negative D.", name="sign-flipped-d-term"
             ),
-            Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}."),
-            Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second."),
+            Slip(Kd * (ek - ep), f"You forgot to divide by dt = {fmt(dt)}.", name="forgot-divide-dt"),
+            Slip(Kd * (ek - ep) * dt, "Divide by dt, don't multiply: the derivative is a change per second.",
+                name="divide-dt-don-t"),
         ),
         "values": {
             "de": fmt(ek - ep),
@@ -162,12 +168,13 @@ def _pid_terms(p):
         "slips": (
             Slip(column((P, p["Ki"] * e2 * p["dt"], D)),
                  f"The I term integrates every error so far, {fmt(e0)} + {fmt(e1)} + {fmt(e2)}, not only the current "
-                 "one."),
+                 "one.", name="i-term-integrates-every"),
             Slip(column((P, I, -D)),
                  "The D term has the wrong sign: it is Kd·(e[2] − e[1])/dt, new minus old, and the error is "
-                 "shrinking."),
+                 "shrinking.", name="d-term-has-wrong"),
             Slip(column((P, i_term(t["errors"][:2], p["Ki"], p["dt"]), D)),
-                 f"The I term stops one step short: the integral includes the current error e[2] = {fmt(e2)}."),
+                 f"The I term stops one step short: the integral includes the current error e[2] = {fmt(e2)}.",
+                     name="i-term-stops-step"),
         ),
         "values": {**t["values"], "u": fmt(pid_sequence(t["errors"], **t["gains"])[2]), "push": _PUSHES[_i_share(I, P)],
                    "lead": "Take exercise 8.2 again" if at_default else "Take three PID steps",
@@ -181,7 +188,7 @@ EXERCISES = (
         title="One step of P control",
         spec=number(label="control output u"),
         vary=Vary(_p_step, Param("target", 10, 0, 20, 1), Param("actual", 7, 0, 20, 1),
-                  Param("Kp", 2, 0.5, 5, 0.5, avoid=(1,)),
+                  Param("Kp", 2, 0.5, 5, 0.1, avoid=(1,)),
                   valid=lambda p: p["target"] != p["actual"]),
     ),
     Derive(
@@ -265,7 +272,8 @@ EXERCISES = (
         id="8.6",
         title="The sign of the D term",
         spec=number(label="D term"),
-        vary=Vary(_falling_error_d_term, Param("ek", 2, 0, 8, 1), Param("ep", 5, 1, 10, 1), Param("Kd", 1, 0.5, 3, 0.5),
+        vary=Vary(_falling_error_d_term, Param("ek", 2, 0, 8, 0.5), Param("ep", 5, 1, 10, 0.5),
+                  Param("Kd", 1, 0.5, 3, 0.05),
                   Choice("dt", 0.1, tuple(_SPANS)), valid=_d_is_a_brake),
     ),
     Derive(

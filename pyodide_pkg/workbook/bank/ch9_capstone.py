@@ -85,20 +85,23 @@ def _predicted_range(p, given=None):
     return {
         "key": r,
         "slips": (
-            Slip(true_r ** 2, "That is r², the sum of squares. Take its square root."),
+            Slip(true_r ** 2, "That is r², the sum of squares. Take its square root.", name="r2-sum-squares-take"),
             Slip(math.hypot(*landmark),
-                 "That is the landmark's distance from the origin. Measure from the robot's predicted position."),
+                 "That is the landmark's distance from the origin. Measure from the robot's predicted position.",
+                     name="landmark-s-distance-origin"),
         ),
         "steps": {
             "d": {"key": offset, "slips": kept_slips(offset, (
                 (column((-ddx, -ddy)), "That is the robot's position minus the landmark's. The offset runs from "
-                                       "the robot to the landmark: landmark minus robot."),
+                                       "the robot to the landmark: landmark minus robot.", "robot-s-position-minus"),
                 (column(landmark), "That is where the landmark is, seen from the origin. Take away the robot's "
-                                   "predicted position."),
+                                   "predicted position.", "where-landmark-seen-origin"),
             ))},
             "q": {"key": q, "slips": kept_slips(q, (
-                ((dx + dy) ** 2, "That squares the sum, (Δx + Δy)². Square each offset first, then add."),
-                (abs(dx) + abs(dy), "That adds the offsets themselves. Pythagoras adds their squares."),
+                ((dx + dy) ** 2, "That squares the sum, (Δx + Δy)². Square each offset first, then add.",
+                    "squares-sum-dx-dy"),
+                (abs(dx) + abs(dy), "That adds the offsets themselves. Pythagoras adds their squares.",
+                    "adds-offsets-themselves-pythagoras"),
             ))},
         },
         "values": {
@@ -139,18 +142,20 @@ def _fused(p, given=None):
         "slips": (
             Slip(ekf_update(x, R, z, P)[0],
                  f"You swapped P and R: K = P/(P + R) = {fmt(P)}/{fmt(P + R)}, "
-                 "the share of trust given to the measurement."),
-            Slip(correction, "That is the correction K(z − x). Add it to the prediction."),
+                 "the share of trust given to the measurement.", name="swapped-p-r-k"),
+            Slip(correction, "That is the correction K(z − x). Add it to the prediction.", name="correction-k-z-add"),
         ),
         "steps": {
             "K": {"key": K, "slips": kept_slips(K, (
                 (1 - gain, f"That is R/(P + R), the prediction's share. K puts the prediction's variance "
-                           f"P = {fmt(P)} on top."),
-                (P / R, "That is P/R. The gain divides by P + R, the variance of the innovation."),
+                           f"P = {fmt(P)} on top.", "r-p-r-prediction"),
+                (P / R, "That is P/R. The gain divides by P + R, the variance of the innovation.", "p-r-gain-divides"),
             ))},
             "corr": {"key": correction, "slips": kept_slips(correction, (
-                (K * (x - z), "Check the sign: the innovation is z − x, the measurement minus the prediction."),
-                (z - x, f"That is the innovation z − x alone. The correction scales it by K = {fmt(K)}."),
+                (K * (x - z), "Check the sign: the innovation is z − x, the measurement minus the prediction.",
+                    "check-sign-innovation-z"),
+                (z - x, f"That is the innovation z − x alone. The correction scales it by K = {fmt(K)}.",
+                    "innovation-z-alone-correction"),
             ))},
         },
         "values": {
@@ -185,8 +190,8 @@ def _updated_variance(p):
     return {
         "key": P_upd,
         "slips": (
-            Slip(K * P, "That is K·P, the variance removed. What is left is (1 − K)·P."),
-            Slip(1 - K, f"That is 1 − K. Multiply it by P = {fmt(P)}."),
+            Slip(K * P, "That is K·P, the variance removed. What is left is (1 − K)·P.", name="k-p-variance-removed"),
+            Slip(1 - K, f"That is 1 − K. Multiply it by P = {fmt(P)}.", name="1-k-multiply-p"),
         ),
         "values": {
             "from94": "from exercise 9.4" if own else "from a scalar Kalman update",
@@ -205,8 +210,10 @@ def _command(p, given=None):
     return {
         "key": u,
         "slips": (
-            Slip(e, f"That is the position error. The command multiplies it by Kp = {fmt(Kp)}."),
-            Slip(-u, "Sign: the error is target − position, positive here, so the robot drives forward."),
+            Slip(e, f"That is the position error. The command multiplies it by Kp = {fmt(Kp)}.",
+                name="position-error-command-multiplies"),
+            Slip(-u, "Sign: the error is target − position, positive here, so the robot drives forward.",
+                name="sign-error-target-position"),
         ),
         "values": {"xu": fmt(_X_UPD), "e": fmt(e), "u": fmt(u), "ru": relation(u, Kp * shown(e))},
     }
@@ -229,7 +236,7 @@ EXERCISES = (
         id="9.3",
         title="Predicted range to a landmark",
         spec=number(label="predicted range r", unit="m"),
-        vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 1), Param("ly", _LANDMARK[1], 0, 12, 1),
+        vary=Vary(_predicted_range, Param("lx", _LANDMARK[0], 0, 15, 0.5), Param("ly", _LANDMARK[1], 0, 12, 0.5),
                   valid=_range_well_posed),
         uses=(Uses("9.2", "x", "x′"),),
         steps=(WorkStep("d", "(Δx, Δy)", matrix(label="(Δx, Δy), from the robot to the landmark", unit="m")),
@@ -239,7 +246,7 @@ EXERCISES = (
         id="9.4",
         title="Fuse the measurement",
         spec=number(label="updated x⁺", unit="m"),
-        vary=Vary(_fused, Param("P", _P, 0.2, 1, 0.1), Param("z", _Z, 4.8, 6.9, 0.1, unit=" m"),
+        vary=Vary(_fused, Param("P", _P, 0.2, 1, 0.1), Param("z", _Z, 3.5, 8, 0.01, unit=" m"),
                   Param("R", _R, 0.1, 0.9, 0.1), valid=_fused_well_posed),
         uses=(Uses("9.2", "x", "x′"),),
         steps=(WorkStep("K", "K", number(label="the gain K = P/(P + R)")),
@@ -249,14 +256,15 @@ EXERCISES = (
         id="9.5",
         title="Updated covariance",
         spec=number(label="P⁺ = (1 − K)·P"),
-        vary=Vary(_updated_variance, Param("P", _P, 0.1, 0.9, 0.1), Param("K", _K, 0.1, 0.9, 0.05, avoid=(0.5,)),
+        vary=Vary(_updated_variance, Param("P", _P, 0.1, 0.9, 0.01), Param("K", _K, 0.1, 0.9, 0.05, avoid=(0.5,)),
                   valid=lambda p: slips_apart(_updated_variance(p))),
     ),
     Derive(
         id="9.6",
         title="Velocity command",
         spec=number(label="commanded speed u", unit="m/s"),
-        vary=Vary(_command, Param("target", _TARGET, 6, 15, 1, unit=" m"), Param("Kp", _KP, 0.1, 1.5, 0.1, avoid=(1,)),
+        vary=Vary(_command, Param("target", _TARGET, 6, 15, 0.5, unit=" m"),
+                  Param("Kp", _KP, 0.1, 1.5, 0.05, avoid=(1,)),
                   valid=lambda p: slips_apart(_command(p))),
         uses=(Uses("9.4", "xu", "x⁺"),),
     ),

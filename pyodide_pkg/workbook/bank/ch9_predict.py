@@ -78,9 +78,10 @@ def _driven(p, given=None):
     v, omega, dt = p["v"], p["omega"], p["dt"]
     vdt = chains.given(given, "vdt", motion_model((0.0, 0.0, 0.0), v, 0.0, dt)[0])  # along the x-axis: v·dt
     slips = kept_slips(v * dt, (
-        (omega * dt, f"That is ω·dt, the turn in radians. The distance driven is v·dt, with v = {fmt(v)} m/s."),
-        (v, f"That is v alone: it is a speed. Driving for dt = {fmt(dt)} s covers v·dt."),
-        (v / dt, "That is v/dt. Distance is speed times time: v·dt."),
+        (omega * dt, f"That is ω·dt, the turn in radians. The distance driven is v·dt, with v = {fmt(v)} m/s.",
+            "omega-dt-turn-radians"),
+        (v, f"That is v alone: it is a speed. Driving for dt = {fmt(dt)} s covers v·dt.", "v-alone-speed-driving"),
+        (v / dt, "That is v/dt. Distance is speed times time: v·dt.", "v-dt-distance-speed"),
     ))
     return vdt, {"key": vdt, "slips": slips}
 
@@ -93,14 +94,16 @@ def _move_slips(p, vdt: float, key, entries):
     ahead = motion_model((0.0, 0.0, th + turn), vdt, 0.0, 1.0)  # driven along the new heading
     along = motion_model((0.0, 0.0, th), vdt, 0.0, 1.0)
     return kept_slips(key, (
-        (entries(along[1], along[0], turn), "sin and cos are swapped: the move in x is v·dt·cos θ, in y v·dt·sin θ."),
-        (entries(ahead[0], ahead[1], turn), _turned_first(p)),
+        (entries(along[1], along[0], turn), "sin and cos are swapped: the move in x is v·dt·cos θ, in y v·dt·sin θ.",
+            "sin-cos-swapped-move"),
+        (entries(ahead[0], ahead[1], turn), _turned_first(p), "turned-first-then-drove"),
         (entries(vdt * math.cos(deg), vdt * math.sin(deg), turn),
          f"Your calculator took θ = {fmt(deg)} as radians. Work in radians throughout "
-         f"(θ = {pi_frac(deg, tex=False)}), or take cos {fmt(deg)}°."),
+         f"(θ = {pi_frac(deg, tex=False)}), or take cos {fmt(deg)}°.", "calculator-took-theta-radians"),
         (entries(vdt, 0.0, turn), "That leaves out cos θ: the robot drives along its heading, and only "
-                                  "v·dt·cos θ of that is in x."),
-        (entries(along[0], along[1], 0.0), f"The heading did not change: Δθ = ω·dt, and ω = {fmt(p['omega'])} rad/s."),
+                                  "v·dt·cos θ of that is in x.", "leaves-out-cos-theta"),
+        (entries(along[0], along[1], 0.0), f"The heading did not change: Δθ = ω·dt, and ω = {fmt(p['omega'])} rad/s.",
+            "heading-did-change-dtheta"),
     ))
 
 
@@ -113,9 +116,9 @@ def _new_x(p, given=None):
     return {
         "key": p["x"] + dx,
         "slips": (
-            Slip(turned[0], _turned_first(p)),
-            Slip(swapped[0], "You used sin θ. The x-displacement is v·cos θ·dt."),
-            Slip(pred[1], "That is y′. The question asks for x′."),
+            Slip(turned[0], _turned_first(p), name="turned-first-then-drove"),
+            Slip(swapped[0], "You used sin θ. The x-displacement is v·cos θ·dt.", name="used-sin-theta-displacement"),
+            Slip(pred[1], "That is y′. The question asks for x′.", name="yp-question-asks-xp"),
         ),
         "steps": {
             "vdt": driven,
@@ -137,10 +140,12 @@ def _new_state(p, given=None):
     return {
         "key": column(tuple(a + m for a, (m,) in zip((p["x"], p["y"], th), move))),
         "slips": (
-            Slip(column(turned[:2] + (pred[2],)), _turned_first(p)),
-            Slip(column(swapped + (pred[2],)), "sin and cos are swapped: x moves by v cos θ dt and y by v sin θ dt."),
+            Slip(column(turned[:2] + (pred[2],)), _turned_first(p), name="turned-first-then-drove"),
+            Slip(column(swapped + (pred[2],)), "sin and cos are swapped: x moves by v cos θ dt and y by v sin θ dt.",
+                name="sin-cos-swapped-moves"),
             Slip(column(pred[:2] + (th,)),
-                 f"The heading did not change: θ′ = θ + ω dt, and ω = {fmt(p['omega'])} rad/s."),
+                 f"The heading did not change: θ′ = θ + ω dt, and ω = {fmt(p['omega'])} rad/s.",
+                     name="heading-did-change-thetap"),
         ),
         "steps": {
             "vdt": driven,
@@ -159,8 +164,8 @@ def _jacobian_entry(p):
     return {
         "key": F[1][2],
         "slips": (
-            Slip(F[0][2], "That is F(1,3) = −v sin θ dt, in row 1. Row 2 is the derivative of y′."),
-            Slip(-F[0][2], "∂(v sin θ dt)/∂θ = v cos θ dt, not v sin θ dt."),
+            Slip(F[0][2], "That is F(1,3) = −v sin θ dt, in row 1. Row 2 is the derivative of y′.", name="f-1-3-v"),
+            Slip(-F[0][2], "∂(v sin θ dt)/∂θ = v cos θ dt, not v sin θ dt.", name="v-sin-theta-dt"),
         ),
         "values": {
             "of92": " of exercise 9.2" if (p["theta"], p["v"], p["dt"]) == (pi_frac(30), V, DT) else "",

@@ -55,22 +55,23 @@ _KEPT_APART = 6e-3  # relatively: beyond half a unit of the last digit of any va
 
 
 def kept_slips(key, candidates, turn=None) -> tuple[Slip, ...]:
-    """The slips among ``candidates`` (value, message) that differ from ``key`` and from the ones
+    """The slips among ``candidates`` (value, message, name) that differ from ``key`` and from the ones
     kept before them (with ``turn``, angles a whole turn apart are the same): a step's slips for
     this draw, so that no draw is refused for a slip that happens to be right here. A slip such as
     1.05 is read to its 3 figures, so it must lie further from the key than half a unit of its last
     digit.
 
-    >>> [s.value for s in kept_slips(1.0, ((2.0, "a"), (1.0, "b"), (2.0, "c"), (3.0, "d")))]
-    [2.0, 3.0]
+    >>> [(s.value, s.name) for s in kept_slips(1.0, ((2.0, "a", "two"), (1.0, "b", "one"), (2.0, "c", "twice"),
+    ...                                                (3.0, "d", "three")))]
+    [(2.0, 'two'), (3.0, 'three')]
     """
     slips: list[Slip] = []
     kept = [_cleaned(key)]  # the key and the slips kept so far, cleaned: already apart from each other,
-    for value, message in candidates:  # so a candidate is compared with each of them (as apart() would)
+    for value, message, name in candidates:  # so a candidate is compared with each of them (as apart() would)
         if value is None:
             continue
         here = _cleaned(value)
         if not _same(kept[0], here, _KEPT_APART, turn) and not any(_same(here, k, _KEPT_APART, turn) for k in kept[1:]):
-            slips.append(Slip(value, message))
+            slips.append(Slip(value, message, name=name))
             kept.append(here)
     return tuple(slips)

@@ -12,6 +12,8 @@ alone has lost (``0.1430`` and ``0.143`` are the same float).
 (5, 5e-05)
 >>> typed_precision(parse_tree("1200"), "1200"), typed_precision(parse_tree("1.20e3"), "1.20e3")
 ((2, 0.5), (3, 5.0))
+>>> typed_precision(parse_tree("7 500"), "7 500")  # ISO digit groups: one number
+(2, 0.5)
 >>> typed_precision(parse_tree("sqrt(2)/2"), "sqrt(2)/2")
 (None, None)
 """
@@ -21,7 +23,7 @@ from __future__ import annotations
 import re
 
 from .parsing import PREFIX
-from .tokens import normalise
+from .tokens import normalise, ungroup
 
 _NUMBER = re.compile(r"(?<![\w.])([0-9]+\.?[0-9]*|\.[0-9]+)(?:[eE]([+-]?[0-9]+))?")
 
@@ -39,7 +41,7 @@ def typed_precision(tree: tuple, text: str) -> tuple[int | None, float | None]:
     The half unit is in the units typed (the caller converts it)."""
     if not _single_literal(tree):
         return None, None
-    s = normalise(text)
+    s = ungroup(normalise(text))
     m = PREFIX.match(s)
     if m:
         s = s[m.end():]

@@ -35,6 +35,9 @@ _TOKEN = re.compile(r"""\s*(?:
   | (?P<op>\*\*|[-+*/^(),°√\[\]{}=])
   | (?P<str>'[^']*'?|"[^"]*"?)
 )""", re.X)
+# ISO 80000-1 groups an integer's digits in threes with a space (7 500, 12 345 678): a first group of 1 to 3
+# digits, then groups of exactly 3; a decimal part may follow the last group. Any other spacing stays two numbers.
+_ISO_GROUPS = re.compile(r"(?<![\w.])([1-9][0-9]{0,2})((?: [0-9]{3})+)(?![0-9])")
 _COMMA_NUMBER = re.compile(r"([+-]?\d+),(\d+)((?:,\d+)*)\s*(?:[^\d\s,.(][^,]*)?")
 
 
@@ -122,6 +125,17 @@ def check_commas(s: str) -> None:
         raise InvalidAnswer(f"Use a dot for decimals: write {a}.{b}, not {a},{b}.")
 
 
+def ungroup(text: str) -> str:
+    """``text`` (normalised: a thin space is a space by now) with ISO digit groups joined: ``7 500`` -> ``7500``.
+
+    >>> ungroup("7 500"), ungroup("12 345 678.5 m"), ungroup("7 50"), ungroup("1234 567"), ungroup("2e3 000")
+    ('7500', '12345678.5 m', '7 50', '1234 567', '2e3 000')
+    """
+    if " " not in text:
+        return text
+    return _ISO_GROUPS.sub(lambda m: m.group(1) + m.group(2).replace(" ", ""), text)
+
+
 def tokenize(text: str, grammar: Grammar) -> list[tuple]:
     """Tokens ``(kind, value, space_before)``; names are classified by ``grammar``.
 
@@ -129,6 +143,7 @@ def tokenize(text: str, grammar: Grammar) -> list[tuple]:
     split into known names when that can be done in exactly one way
     (``L1cos`` -> L1, cos); otherwise it is an error naming what is allowed.
     """
+    text = ungroup(text)
     raw: list[tuple] = []
     pos, n = 0, len(text)
     while pos < n:

@@ -89,6 +89,8 @@ class Figure:
             c = controls[name]
             try:
                 value = float(raw)
+            except OverflowError:  # an integer beyond any float (10**400): a number, far outside the range
+                raise FigureError(f"{c.label}: the number given is outside [{c.min:g}, {c.max:g}].") from None
             except (TypeError, ValueError):
                 raise FigureError(f"{c.label}: {raw!r} is not a number.") from None
             if isinstance(raw, bool) or not math.isfinite(value):

@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from html import escape
 from typing import Any, ClassVar, Protocol
 
@@ -35,6 +35,9 @@ class Exercise:
 
     id: str
     title: str
+    # Why every student has the same right answer whatever their numbers (the teach page says so);
+    # "" where variants give each student their own answer (workbook.copying measures it).
+    same_answer: str = field(default="", kw_only=True, compare=False)
     kind: ClassVar[str] = ""
     op: ClassVar[str] = "grade"
     reveal_label: ClassVar[str] = "Show explanation"

@@ -34,7 +34,7 @@ from workbook_sandbox import harness, runner
 from workbook_sandbox.restore import STDLIB_HOMES, Restore
 from workbook_sandbox.values import show
 
-from .. import build_judge
+from .. import build_judge, run_caches
 from ..build_judge import Case, read_report
 from ..contract import ROLE
 from ..figures import runs
@@ -162,10 +162,8 @@ class Build(Exercise):
 
     def check(self, code: object) -> Verdict:
         """The whole run in this process: job, the learner's code, judgement."""
-        from .. import bank
-
         report = runner.run_json(self.job(), str(code), Restore(STDLIB_HOMES + ("workbook",), _grader_objects()))
-        bank.variant.cache_clear()  # a run may have reached a cached variant through gc
+        run_caches.empty_all()  # a run may have reached a cached variant through gc (the bank registers it)
         return self.judge(report)
 
     def widget(self, base: str, page: Page) -> str:

@@ -15,6 +15,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field, replace
+from functools import cached_property
+from types import MappingProxyType
 from typing import Any, ClassVar
 
 from .. import carried
@@ -23,23 +25,33 @@ from ..answer_kinds.base import AnswerKind, AnswerSpec
 from ..chains import Uses
 from ..contract import ATTR
 from ..number_format import fmt
+from ..reference.domain import Undefined
 from ..variants import VariantError, Vary, check_seed
 from ..verdict import GradingError, Verdict, quote
 from .base import Exercise
 
 WORKED = "worked"  # the placeholder the answer kind fills: the Answer line's value, in TeX
+# what make(p, given=...) returns in place of the key when the learner's values leave the answer undefined (a
+# θ2 of ±180° reaches no θ1): why, in their words, beside the steps that those values still define
+UNDEFINED = "undefined"
 
 
 @dataclass(frozen=True)
 class _Draw:
-    """One draw's exercise: what ``make(p)`` gave, built (frozen: variants that drew the same
-    numbers share it, each with its own copies of the mappings)."""
+    """One draw's exercise: what ``make(p)`` gave, built (frozen, and read through read-only views:
+    variants that drew the same numbers share it)."""
 
     title: str | None
     steps: Mapping[str, AnswerKind]
     answer: AnswerKind
     values: Mapping[str, str]
     problem: str | None  # why the draw is not a fair question, or None
+    params: Mapping[str, Any]  # the draw's parameters
+
+
+def _view(mapping: Mapping[str, Any]) -> Mapping[str, Any]:
+    """A read-only copy: a draw is shared by the variants that drew it, so none may change it."""
+    return MappingProxyType(dict(mapping))
 
 
 def _degenerate_step(kinds: Mapping[str, AnswerKind]) -> str | None:
@@ -56,48 +68,64 @@ _DRAWS_KEPT = 4096  # per generator; a full memory starts again
 
 @dataclass(frozen=True)
 class Derive(Exercise):
-    """A Derive exercise: its answer kind, its generator and the variant on screen."""
+    """A Derive exercise: its answer kind, its generator and the variant on screen.
+
+    The fields are what the bank writes, and they never change: what the variant's draw gives (its
+    answer, its steps' answer kinds, the template's values, the parameters) is computed once, when the
+    exercise is made, kept in :attr:`drawn` (read-only) and handed out as copies. :meth:`variant` makes
+    another exercise, with the other draw's title, by :func:`dataclasses.replace`.
+    """
 
     spec: AnswerSpec | None = None  # what the bank writes: spec=number(...), matrix(...) or formula(...)
     vary: Vary | None = field(default=None, compare=False, repr=False)
     seed: int = 0  # the variant: 0 is the workbook's numbers
-    values: Mapping[str, str] = field(default_factory=dict, compare=False, repr=False)  # the template's fill
-    params: Mapping[str, Any] = field(default_factory=dict, compare=False, repr=False)  # this variant's draw
     uses: tuple[Uses, ...] = field(default=(), compare=False, repr=False)  # the earlier results it builds on
     steps: tuple[stepwise.Step, ...] = field(default=(), compare=False, repr=False)  # its checked steps, in order
-    step_answers: Mapping[str, AnswerKind] = field(default_factory=dict, compare=False, repr=False)
-    answer: AnswerKind = field(init=False, compare=False, repr=False)  # this variant's answer, built from spec
     kind: ClassVar[str] = "derive"
     reveal_label: ClassVar[str] = "Show derivation"
 
     def __post_init__(self) -> None:
-        spec = self.spec
-        if spec is None:
+        if self.spec is None:
             raise ValueError(f"exercise {self.id}: a Derive exercise needs spec=number(...), matrix(...) "
                              "or formula(...)")
+        if self.vary is None and self.steps:
+            raise ValueError(f"exercise {self.id}: steps need a generator (vary=Vary(make, ...))")
+        self.drawn  # noqa: B018  (the draw is made now: a variant with no fair draw fails here, with its id)
+
+    @cached_property
+    def drawn(self) -> _Draw:
+        """This variant's draw: the first well-posed one of the generator's candidates for the seed."""
+        spec = self.spec
+        assert spec is not None  # __post_init__
         if self.vary is None:
-            if self.steps:
-                raise ValueError(f"exercise {self.id}: steps need a generator (vary=Vary(make, ...))")
-            self._set(spec.build(self.id), {})
-            return
+            answer = spec.build(self.id)
+            return _Draw(None, _view({}), answer, _view({WORKED: answer.worked_tex()}), None, _view({}))
         for p in self.vary.candidates(self.id, self.seed):
             draw = self._draw(spec, p)
-            if draw.title is not None:
-                object.__setattr__(self, "title", draw.title)
-            object.__setattr__(self, "step_answers", dict(draw.steps))
-            object.__setattr__(self, "answer", draw.answer)
-            object.__setattr__(self, "values", dict(draw.values))
-            object.__setattr__(self, "params", dict(p))
             if draw.problem is None:
-                return
+                return draw
             if self.seed == 0:
                 raise VariantError(f"exercise {self.id}: the workbook's own numbers are degenerate: {draw.problem}")
         raise VariantError(f"exercise {self.id}: no well-posed draw for variant {self.seed}")
 
-    def _set(self, answer: AnswerKind, values: dict[str, str]) -> None:
-        object.__setattr__(self, "answer", answer)
-        object.__setattr__(self, "values", {**values, WORKED: answer.worked_tex()})
-        object.__setattr__(self, "params", {})
+    @property
+    def answer(self) -> AnswerKind:
+        """This variant's answer kind, built from ``spec`` with the draw's options."""
+        return self.drawn.answer
+
+    @property
+    def step_answers(self) -> Mapping[str, AnswerKind]:
+        return dict(self.drawn.steps)  # a copy of its own: the draw is shared, and the copy is plain data
+
+    @property
+    def values(self) -> Mapping[str, str]:
+        """The template's fill: the draw's values and the worked answers."""
+        return dict(self.drawn.values)  # a copy of its own: the draw is shared, and the copy is plain data
+
+    @property
+    def params(self) -> Mapping[str, Any]:
+        """This variant's parameters (empty without a generator)."""
+        return dict(self.drawn.params)  # a copy of its own: the draw is shared, and the copy is plain data
 
     def _draw(self, spec: AnswerSpec, p: Mapping[str, Any]) -> _Draw:
         """What the draw ``p`` makes: the same parameters always make the same exercise, so a
@@ -123,11 +151,13 @@ class Derive(Exercise):
         values.update(made.pop("values", {}))
         if WORKED in values:
             raise VariantError(f"exercise {self.id}: {{{{{WORKED}}}}} is filled by the answer kind, not by make()")
+        if UNDEFINED in made:
+            raise VariantError(f"exercise {self.id}: the draw {dict(p)} leaves the answer undefined: {made[UNDEFINED]}")
         title = made.pop("title", None)
         steps = self._step_kinds(made.pop("steps", None), values)
         answer = spec.build(self.id, **made)
         problem = answer.degenerate() or _degenerate_step(steps)
-        return _Draw(title, steps, answer, {**values, WORKED: answer.worked_tex()}, problem)
+        return _Draw(title, _view(steps), answer, _view({**values, WORKED: answer.worked_tex()}), problem, _view(p))
 
     def _step_kinds(self, made: Mapping[str, Any] | None, values: dict[str, str]) -> dict[str, AnswerKind]:
         """Build the steps' answer kinds; ``{{step_NAME}}`` prints each one's worked answer."""
@@ -147,7 +177,9 @@ class Derive(Exercise):
         seed = check_seed(seed)
         if self.vary is None or seed == self.seed:
             return self
-        return replace(self, seed=seed)
+        other = replace(self, seed=seed)
+        title = other.drawn.title
+        return other if title is None or title == other.title else replace(other, title=title)
 
     def carried_answer(self, given: Mapping[str, Any]) -> AnswerKind:
         """This variant's answer with ``given`` (the learner's earlier values, by the names
@@ -156,6 +188,8 @@ class Derive(Exercise):
         made = dict(vary.make(self.params, given=given))
         for name in ("values", "title", "steps"):
             made.pop(name, None)
+        if UNDEFINED in made:  # the learner's values leave the answer undefined, though their steps stand
+            raise Undefined(made[UNDEFINED])
         return spec.build(self.id, **made)
 
     def carried_steps(self, given: Mapping[str, Any]) -> dict[str, AnswerKind]:

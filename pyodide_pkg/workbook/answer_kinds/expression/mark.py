@@ -14,8 +14,10 @@ from typing import TYPE_CHECKING, cast
 
 from ...contract import TAG
 from ...expr import Formula, parse_formula
+from ...number_format import compact, prose
 from ...tolerance import agrees, clean
 from ...verdict import Verdict
+from ..base import slip_data
 
 if TYPE_CHECKING:
     from . import FormulaAnswer
@@ -72,14 +74,18 @@ def counterexample(ans: FormulaAnswer, formula: Formula) -> str:
     """Where the formula and the key differ, in words."""
     rng = random.Random(1)
     for _ in range(40):
-        env = {name: rng.uniform(lo, hi) for name, (lo, hi) in ans.domain.items()}
+        # a point with two decimals, which the workbook's printer shows as it is: the message names the
+        # point the two values were computed at, not a rounding of it
+        env = {name: round(rng.uniform(lo, hi), 2) for name, (lo, hi) in ans.domain.items()}
+        if any(not lo <= env[name] <= hi for name, (lo, hi) in ans.domain.items()):
+            continue
         try:
             want, got = float(cast("Callable[..., float]", ans.key)(**env)), formula.evaluate(env)
         except (ValueError, ArithmeticError, TypeError):
             continue
         if math.isfinite(want) and math.isfinite(got) and not agrees(got, clean(want)):
-            where = ", ".join(f"{n} = {env[n]:.3g}" for n in ans.variables)
-            return f"Not the same formula: at {where} yours gives {got:.4g}, the answer {want:.4g}."
+            where = ", ".join(f"{n} = {prose(env[n])}" for n in ans.variables)
+            return f"Not the same formula: at {where} yours gives {compact(got)}, the answer {compact(want)}."
     return "Not the same formula. Check each term against the derivation."
 
 
@@ -93,7 +99,7 @@ def mark(ans: FormulaAnswer, formula: Formula) -> Verdict:
         return Verdict("correct", "Correct: your formula agrees with the answer everywhere it was tried.", data=data)
     for slip in ans.slips:
         if equivalent(formula, slip.value, ans.domain):
-            return Verdict("incorrect", slip.message, tag=TAG.slip, data=data)
+            return Verdict("incorrect", slip.message, tag=TAG.slip, data={**data, **slip_data(slip)})
     in_degrees = formula.with_degree_arguments()
     if in_degrees is not None and equivalent(in_degrees, cast("Callable[..., float]", ans.key), ans.domain):
         return Verdict("incorrect", DEGREES, tag=TAG.degrees, data=data)

@@ -15,7 +15,8 @@ from ...contract import TAG
 from ...expr import Reading
 from ...tolerance import FIGURES, agrees, clean, is_close_miss
 from ...verdict import Verdict
-from ..number.mark import TRIG_DEGREES
+from ..base import slip_data
+from ..number.mark import TRIG_DEGREES, too_coarse
 from .slips import whole_matrix_slips
 
 if TYPE_CHECKING:
@@ -68,7 +69,7 @@ def mark(ans: MatrixAnswer, readings: list[list[Reading]]) -> Verdict:
     data: dict = {"wrong": wrong}
     for slip in ans.slips:
         if not differs(ans, readings, slip.value):
-            return Verdict("incorrect", slip.message, tag=TAG.slip, data=data)
+            return Verdict("incorrect", slip.message, tag=TAG.slip, data={**data, **slip_data(slip)})
     said = _trig_degrees(ans, readings, wrong)
     if said:
         return said
@@ -76,12 +77,13 @@ def mark(ans: MatrixAnswer, readings: list[list[Reading]]) -> Verdict:
     for tag, message in whole_matrix_slips(values, key, rotation_angle=ans.rotation_angle, names=names):
         return Verdict("incorrect", message, tag=tag, data=data)
     close = [[i, j] for i, j in wrong if is_close_miss(values[i - 1][j - 1], key[i - 1][j - 1], rel=ans.rel_tol,
-                                                         half_unit=readings[i - 1][j - 1].half_unit)]
+                                                         figures=readings[i - 1][j - 1].figures)]
     n = ans.shape[0] * ans.shape[1]
     right = n - len(wrong)
     if close:
         data["close"] = close
-        few = [p for p in close if (readings[p[0] - 1][p[1] - 1].figures or FIGURES) < FIGURES]
+        # "more figures" only when every close entry is the key rounded to its own few figures
+        few = all(too_coarse(readings[p[0] - 1][p[1] - 1], key[p[0] - 1][p[1] - 1]) for p in close)
         advice = (f"type at least {FIGURES} significant figures" if few
                   else f"round correctly to at least {FIGURES} significant figures and carry more digits")
         others = len(wrong) - len(close)

@@ -15,8 +15,9 @@ from typing import TYPE_CHECKING
 from ...contract import TAG
 from ...expr import Reading
 from ...number_format import fmt, is_exact
-from ...tolerance import FIGURES, agrees, clean, is_close_miss, is_sign_slip
+from ...tolerance import FIGURES, agrees, clean, is_close_miss, is_rounding, is_sign_slip
 from ...verdict import Verdict
+from ..base import slip_data
 
 if TYPE_CHECKING:
     from . import NumberAnswer
@@ -38,10 +39,21 @@ def agrees_with(ans: NumberAnswer, value: float, target: float, half_unit: float
     return agrees(value, target, rel=ans.rel_tol, exact=ans.exact, half_unit=half_unit)
 
 
-def close_message(reading: Reading) -> str:
-    """What "close" says: how many figures are wanted."""
-    if reading.figures is not None and reading.figures < FIGURES:
-        return (f"Close, but give at least {FIGURES} significant figures: you typed {reading.figures}. "
+def figures_word(figures: int) -> str:
+    """``1 significant figure``, ``2 significant figures``."""
+    return f"{figures} significant figure{'' if figures == 1 else 's'}"
+
+
+def too_coarse(reading: Reading, key: float) -> bool:
+    """The answer is the key rounded to its own significant figures, and those are fewer than wanted."""
+    return reading.figures is not None and reading.figures < FIGURES and is_rounding(reading.value, key,
+                                                                                      reading.figures)
+
+
+def close_message(reading: Reading, key: float) -> str:
+    """What "close" says: more figures only when the answer is the key rounded to the few it has."""
+    if reading.figures is not None and too_coarse(reading, key):
+        return (f"Close, but give at least {FIGURES} significant figures: you gave {figures_word(reading.figures)}. "
                 "Carry more digits through the intermediate steps.")
     return (f"Close, but not within tolerance. Round correctly to at least {FIGURES} significant figures "
             "(4 is safer), and carry more digits through the intermediate steps.")
@@ -67,7 +79,7 @@ def mark(ans: NumberAnswer, reading: Reading) -> Verdict:
         return Verdict("correct", f"Correct: {ans.either_sign}")
     for slip in ans.slips:
         if agrees_with(ans, value, slip.value, half):
-            return Verdict("incorrect", slip.message, tag=TAG.slip)
+            return Verdict("incorrect", slip.message, tag=TAG.slip, data=slip_data(slip))
     as_degrees = reading.with_degree_arguments()
     if as_degrees is not None and agrees_with(ans, as_degrees, key):
         how = ("your angle was taken as radians while this exercise works in degrees" if ans.angle != "rad"
@@ -84,6 +96,6 @@ def mark(ans: NumberAnswer, reading: Reading) -> Verdict:
     if is_sign_slip(value, key, rel=ans.rel_tol) or (half and key and agrees(-value, key, half_unit=half)):
         return Verdict("incorrect", "The size is right but the sign is wrong. Check which way the quantity points.",
                        tag=TAG.sign)
-    if not ans.exact and is_close_miss(value, key, rel=ans.rel_tol, half_unit=reading.half_unit):
-        return Verdict("incorrect", close_message(reading), tag=TAG.close)
+    if not ans.exact and is_close_miss(value, key, rel=ans.rel_tol, figures=reading.figures):
+        return Verdict("incorrect", close_message(reading, key), tag=TAG.close)
     return Verdict("incorrect", "Not quite. Try the hint, or work the derivation one line at a time.")
