@@ -92,7 +92,7 @@ function slipOf(verdict) {
   if (verdict.status !== "incorrect") return null;
   const id = verdict.data?.slipId ?? verdict.data?.slip;
   if (typeof id !== "string" || !id) return null;
-  return { key: id, text: verdict.data?.slipId ? verdict.message : verdict.data.slip };
+  return { key: id, text: verdict.data?.slipId ? verdict.message : verdict.data.slip, name: verdict.data?.slip };
 }
 
 async function gradeAttempts(cell, runtime, id, v, attempts) {
@@ -117,6 +117,7 @@ async function gradeAttempts(cell, runtime, id, v, attempts) {
     if (slip) {
       cell.slips[slip.key] = (cell.slips[slip.key] ?? 0) + 1;
       cell.slipText[slip.key] ??= slip.text;
+      if (typeof slip.name === "string") cell.slipNames[slip.name] = slip.key; // the name the student's page recorded it by
     }
     const first = verdict.status === "incorrect" ? verdict.data?.steps?.first : null;
     if (typeof first === "string") cell.firstWrongStep[first] = (cell.firstWrongStep[first] ?? 0) + 1;
@@ -144,7 +145,7 @@ export async function gradeLearner(learner, drawing, runtime, onRun = () => {}) 
 
 async function gradeCell(learner, id, drawing, runtime, onRun) {
   const r = learner.records[id] ?? {};
-  const cell = { attempts: 0, claimed: false, verified: false, changed: false, changes: [], toSolve: null, hinted: Boolean(r.hinted), slips: {}, slipText: {},
+  const cell = { attempts: 0, claimed: false, verified: false, changed: false, changes: [], toSolve: null, hinted: Boolean(r.hinted), slips: {}, slipText: {}, slipNames: {},
     recordedSlips: isSlips(r.slips) ? r.slips : {}, firstWrongStep: {}, withSteps: 0, note: "" };
   if (learner.kind === "hand-in") {
     const v = drawing.has(id) ? await assignedVariant(learner.code, learner.student, id) : 0;

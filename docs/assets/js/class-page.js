@@ -26,6 +26,7 @@ function renderMistakes(rows, ids) {
   for (const id of ids) {
     const counts = new Map(); // key -> {text, answers, learners, recorded}
     const count = (key, text) => counts.get(key) ?? counts.set(key, { text, answers: 0, learners: 0, recorded: 0 }).get(key);
+    const byName = new Map(rows.flatMap(({ learner: l }) => Object.entries(l.cells[id]?.slipNames ?? {}))); // recorded name -> slip id
     for (const { learner: l } of rows) {
       const c = l.cells[id];
       if (!c) continue;
@@ -34,7 +35,7 @@ function renderMistakes(rows, ids) {
         m.answers += n;
         m.learners += 1;
       }
-      for (const [key, n] of Object.entries(c.recordedSlips)) count(key, key).recorded += n;
+      for (const [name, n] of Object.entries(c.recordedSlips)) count(byName.get(name) ?? name, name).recorded += n;
     }
     if (!counts.size) continue;
     any = true;
