@@ -56,6 +56,7 @@ for kind, ex in sorted(kinds.items()):
         request = {"op": ex.op, "exercise": ex.id, "answer": "1"}
     reply = json.loads(api.handle(json.dumps(request)))
     assert reply["ok"], reply
+assert json.loads(api.handle(json.dumps({"op": "version"})))["ok"]  # the sources' hash, worked out once (workbook/version.py)
 # Leave no trace of this machine or this script: loadPyodide puts "" back on
 # sys.path after a restore, and Node's "_" names the build script.
 import gc, os, sys

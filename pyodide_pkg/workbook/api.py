@@ -20,7 +20,9 @@ Requests (``contract.json`` → ``ops``):
   read (a formula's typeset form), before it is checked (Derive);
 * ``{"op": "draw", "exercise": "0.1", "variant": 17, "texts": {...}}``: variant
   17's statement, hint, derivation and label, filled into the exercise's
-  templates (Derive).
+  templates (Derive);
+* ``{"op": "version"}``: the grader's version and a hash of its bank
+  (:mod:`workbook.version`).
 
 ``grade``, ``split``, ``read``, ``cases`` and ``judge`` take an optional
 ``"variant"`` (default 0); ``grade`` of a Derive exercise an optional ``"given"``:
@@ -47,7 +49,7 @@ import json
 import sys
 from typing import Any
 
-from . import bank, chains, steps
+from . import bank, chains, steps, version
 from .assignment import slip_name
 from .build_plain import plain
 from .contract import LIMIT, OPS
@@ -167,7 +169,7 @@ def _draw(request: dict[str, Any]) -> dict[str, Any]:
 
 TEXTS = ("title", "prompt", "hint", "solution")
 HANDLERS = {"grade": _grade, "run": _run, "figure": _figure, "split": _split, "read": _read, "draw": _draw,
-            "cases": _cases, "judge": _judge, "run-figure": _run_figure}
+            "cases": _cases, "judge": _judge, "run-figure": _run_figure, "version": lambda _request: version.describe()}
 assert set(HANDLERS) == set(OPS), "every op in contract.json has one handler"
 
 

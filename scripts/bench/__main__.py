@@ -55,11 +55,13 @@ def parse_args(argv=None) -> argparse.Namespace:
     ap.add_argument("--phases", default="startup,first_feedback,baseline,class_page,waiting",
                     help="comma-separated subset of startup,first_feedback,baseline,class_page,waiting (default: all); "
                          "'ready' alone measures the cold and warm start-up only (for A/B comparisons)")
+    ap.add_argument("--class-files", type=int, default=1000,
+                    help="hand-in files the class page re-grades (default 1000)")
     ap.add_argument("--site", type=Path, default=SITE, help="the built site to serve (default site/)")
     ap.add_argument("--out", type=Path, default=ROOT / "bench-results", help="output folder (default bench-results/)")
     args = ap.parse_args(argv)
-    if args.runs < 1 or args.checks < 1 or args.build_repeats < 1:
-        ap.error("--runs, --checks and --build-repeats must be at least 1")
+    if args.runs < 1 or args.checks < 1 or args.build_repeats < 1 or args.class_files < 1:
+        ap.error("--runs, --checks, --build-repeats and --class-files must be at least 1")
     args.phases = [p.strip() for p in args.phases.split(",") if p.strip()]
     unknown = set(args.phases) - set(LOCAL_PHASES)
     if unknown:

@@ -227,9 +227,9 @@ class Phases:
         finally:
             ctx.close()
 
-    # -- the class page: 200 hand-ins read and re-graded (class_page.py) -----------
+    # -- the class page: 1,000 hand-ins read and re-graded (class_page.py) ---------
     def class_page(self, run: dict) -> None:
-        run["class_page"] = class_page.measure(self.b)
+        run["class_page"] = class_page.measure(self.b, self.args.class_files)
 
     # -- a first visit through Chromium's throttling: what the learner waits for (waiting.py)
     def waiting(self, run: dict) -> None:

@@ -1,143 +1,55 @@
 // The class page (docs/class.md): a teacher drops hand-in files (or progress exports);
 // everything stays in this browser. Each is read (class-grade.js; a malformed or hostile
 // file is named and skipped), every recorded answer re-graded by the grader (a Build
-// solve's code run again in the sandbox, as on a chapter page), and the page
-// shows students × exercises, each exercise's rates, the class's most common mistakes and
-// a CSV of the table.
+// solve's code run again in the sandbox, as on a chapter page), the files grouped into one
+// row per student (class-rows.js), and the page shows the table (class-table.js), which
+// exercises worked (class-stats.js), the class's most common mistakes and two CSVs
+// (class-csv.js): the long table and the gradebook.
 
+import { fold } from "./assignment-hash.js";
 import { gradeLearner, problemOf, readLearner } from "./class-grade.js";
+import { groupRows } from "./class-rows.js";
+import { legend, rowElement, sortRows, tableRegion } from "./class-table.js";
+import { classStats, statsTable } from "./class-stats.js";
+import { toCSV, toGradebook } from "./class-csv.js";
 import { el, listPage } from "./progress-view.js";
 import { download } from "./notice.js";
 import { withSandbox } from "./sandbox-client.js";
 
-const COLUMNS = ["student", "file", "class", "exercise", "variant", "solved (claimed)", "verified", "attempts", "hint", "derivation", "steps", "carried", "note"];
+const LEARNERS_AT_ONCE = 4; // files graded side by side: the grader answers one while the sandbox runs another's code
+const PAGE_ROWS = 100; // students shown at once: a bigger class is paged (a table of 1,000 rows lays out in one long task)
+const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield() : new Promise((r) => setTimeout(r, 0)));
 
-/** The table's cell text and its state, for a learner's exercise. */
-export function cellState(c) {
-  if (!c) return { state: "not-set", text: "not set" };
-  if (c.verified) return { state: "verified", text: "solved, verified" };
-  if (c.claimed) return { state: "not-verified", text: "not verified" };
-  return { state: "unsolved", text: "not solved" };
-}
-
-const yes = (b) => (b ? "yes" : "no");
-const csvQuote = (v) => {
-  const text = String(v ?? "");
-  const safe = /^[=+\-@\t\r]/.test(text) ? `'${text}` : text; // a spreadsheet must not run a cell as a formula
-  return /[",\n\r]/.test(safe) ? `"${safe.replace(/"/g, '""')}"` : safe;
-};
-
-export function toCSV(learners, ids) {
-  const lines = [COLUMNS.join(",")];
-  for (const l of learners) {
-    for (const id of ids) {
-      const c = l.cells[id];
-      if (!c) continue;
-      lines.push([l.student, l.file, l.code ?? "", id, c.variant, yes(c.claimed), yes(c.verified), c.attempts, yes(c.hinted), yes(c.revealed),
-        yes(c.stepped), yes(c.carried), c.note].map(csvQuote).join(","));
-    }
-  }
-  return `${lines.join("\r\n")}\r\n`;
-}
-
-function detail(c) {
-  const bits = [`${c.attempts} attempt${c.attempts === 1 ? "" : "s"}`];
-  if (c.hinted) bits.push("hint");
-  if (c.revealed) bits.push("derivation");
-  if (c.stepped) bits.push("steps");
-  if (c.carried) bits.push("carried");
-  return bits.join(", ");
-}
-
-function sortButton(label, key, sorter) {
-  const button = el("button", { type: "button", className: "wb-sort", textContent: label });
-  button.dataset.wbSort = key;
-  button.addEventListener("click", () => sorter(key));
-  return button;
-}
-
-function renderTable(state) {
-  const { learners, ids, sort } = state;
-  const score = (l) => ids.filter((id) => l.cells[id]?.verified).length;
-  const value = (l, key) => (key === "student" ? l.student.toLowerCase() : key === "verified" ? score(l)
-    : ["verified", "not-verified", "unsolved", "not-set"].indexOf(cellState(l.cells[key]).state));
-  const rows = [...learners].sort((a, b) => {
-    const [x, y] = [value(a, sort.key), value(b, sort.key)];
-    return (x < y ? -1 : x > y ? 1 : a.student.localeCompare(b.student)) * sort.dir;
-  });
-  const aria = (key) => (sort.key === key ? (sort.dir > 0 ? "ascending" : "descending") : "none");
-  const th = (label, key, scope = "col") => {
-    const cell = el("th", { scope }, sortButton(label, key, state.resort));
-    cell.setAttribute("aria-sort", aria(key));
-    return cell;
-  };
-  const head = el("tr", {}, th("Student", "student"), th("Verified", "verified"), ...ids.map((id) => th(id, id)));
-  const body = rows.map((l) => {
-    const tr = el("tr", {}, el("th", { scope: "row", textContent: l.student }), el("td", { textContent: `${score(l)} of ${ids.filter((id) => l.cells[id]).length}` }),
-      ...ids.map((id) => {
-        const c = l.cells[id];
-        const { state: s, text } = cellState(c);
-        const td = el("td", {}, el("span", { className: "wb-class-mark", textContent: text }));
-        td.dataset.wbCell = s;
-        td.dataset.wbExercise = id;
-        if (c) td.append(el("span", { className: "wb-class-detail", textContent: detail(c) }));
-        if (c?.note) td.append(el("span", { className: "wb-class-detail", textContent: c.note }));
-        return td;
-      }));
-    tr.dataset.wbStudent = l.student;
-    return tr;
-  });
-  const rate = (id) => {
-    const set = learners.filter((l) => l.cells[id]);
-    const n = set.filter((l) => l.cells[id].verified).length;
-    return set.length ? `${n} of ${set.length} (${Math.round((100 * n) / set.length)}%)` : "—";
-  };
-  const foot = el("tr", {}, el("th", { scope: "row", textContent: "Solved, verified" }), el("td", {}), ...ids.map((id) => {
-    const td = el("td", { textContent: rate(id) });
-    td.dataset.wbRate = id;
-    return td;
-  }));
-  const table = el("table", { className: "wb-class-table" },
-    el("caption", { textContent: `${learners.length} learner${learners.length === 1 ? "" : "s"} × ${ids.length} exercise${ids.length === 1 ? "" : "s"}; press a column's heading to sort by it.` }),
-    el("thead", {}, head), el("tbody", {}, ...body), el("tfoot", {}, foot));
-  const region = el("div", { className: "wb-class-scroll", tabIndex: 0, role: "region" }, table);
-  region.setAttribute("aria-label", "The class's results");
-  return region;
-}
-
-function renderMistakes(learners, ids) {
+function renderMistakes(rows, ids) {
   const section = el("div", { className: "wb-class-mistakes" });
   let any = false;
   for (const id of ids) {
-    const counts = new Map(); // name -> {answers, learners, recorded}
-    for (const l of learners) {
+    const counts = new Map(); // key -> {text, answers, learners, recorded}
+    const count = (key, text) => counts.get(key) ?? counts.set(key, { text, answers: 0, learners: 0, recorded: 0 }).get(key);
+    const byName = new Map(rows.flatMap(({ learner: l }) => Object.entries(l.cells[id]?.slipNames ?? {}))); // recorded name -> slip id
+    for (const { learner: l } of rows) {
       const c = l.cells[id];
       if (!c) continue;
-      for (const [name, n] of Object.entries(c.slips)) {
-        const m = counts.get(name) ?? { answers: 0, learners: 0, recorded: 0 };
+      for (const [key, n] of Object.entries(c.slips)) {
+        const m = count(key, c.slipText[key] ?? key);
         m.answers += n;
         m.learners += 1;
-        counts.set(name, m);
       }
-      for (const [name, n] of Object.entries(c.recordedSlips)) {
-        const m = counts.get(name) ?? { answers: 0, learners: 0, recorded: 0 };
-        m.recorded += n;
-        counts.set(name, m);
-      }
+      for (const [name, n] of Object.entries(c.recordedSlips)) count(byName.get(name) ?? name, name).recorded += n;
     }
     if (!counts.size) continue;
     any = true;
-    const rows = [...counts].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || y.recorded - x.recorded || (a < b ? -1 : 1))
-      .map(([name, m]) => {
-        const tr = el("tr", {}, el("th", { scope: "row", textContent: name }), el("td", { textContent: String(m.learners) }),
+    const body = [...counts].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || y.recorded - x.recorded || (a < b ? -1 : 1))
+      .map(([key, m]) => {
+        const tr = el("tr", {}, el("th", { scope: "row", textContent: m.text }), el("td", { textContent: String(m.learners) }),
           el("td", { textContent: String(m.answers) }), el("td", { textContent: String(m.recorded) }));
-        tr.dataset.wbSlip = name;
+        tr.dataset.wbSlip = key;
         return tr;
       });
     const table = el("table", { className: "wb-class-slips" },
       el("caption", { textContent: `Exercise ${id}` }),
-      el("thead", {}, el("tr", {}, ...["Slip", "Learners (re-graded)", "Answers (re-graded)", "All recorded wrong answers"].map((t) => el("th", { scope: "col", textContent: t })))),
-      el("tbody", {}, ...rows));
+      el("thead", {}, el("tr", {}, ...["Slip", "Students (re-graded)", "Answers (re-graded)", "All recorded wrong answers"].map((t) => el("th", { scope: "col", textContent: t })))),
+      el("tbody", {}, ...body));
     table.dataset.wbMistakes = id;
     const wrap = el("div", { className: "wb-class-scroll", tabIndex: 0, role: "region" }, table);
     wrap.setAttribute("aria-label", `Mistakes in exercise ${id}`);
@@ -145,6 +57,15 @@ function renderMistakes(learners, ids) {
   }
   if (!any) section.append(el("p", { textContent: "No named slips among the answers handed in." }));
   return section;
+}
+
+/** The grader's own words for which grader it is ({"op": "version"}), for the page to name; and {version, bank} or null. */
+async function graderVersion(runtime) {
+  const reply = await runtime.request({ op: "version" });
+  if (!reply.ok) return { text: "Re-graded here by the workbook's grader (its version could not be read).", grader: null };
+  const { version, bank } = reply.value;
+  return { text: `Re-graded here by the workbook's grader version ${version}, ${bank ? `bank ${bank}` : "its bank's hash not known in this start (compiled files only)"}.`,
+    grader: bank ? { version, bank } : null };
 }
 
 export async function initClassPage(shared, siteRoot) {
@@ -158,50 +79,116 @@ export async function initClassPage(shared, siteRoot) {
   const zone = el("div", { className: "wb-class-drop" },
     el("label", { htmlFor: input.id, textContent: "Hand-in files or progress exports (choose several, or drop them here)" }), input);
   const status = el("p", { role: "status", className: "wb-course-status" });
+  const version = el("p", { className: "wb-class-version" });
+  version.dataset.wbGrader = "";
   const problems = el("ul", { className: "wb-class-problems" });
   problems.dataset.wbProblems = "";
-  const csv = el("button", { type: "button", className: "md-button", textContent: "Download the table (CSV)", hidden: true });
-  csv.dataset.wbAction = "csv";
+  const button = (text, action) => {
+    const b = el("button", { type: "button", className: "md-button", textContent: text, hidden: true });
+    b.dataset.wbAction = action;
+    return b;
+  };
+  const csv = button("Download the table (CSV)", "csv");
+  const gradebook = button("Download the gradebook (CSV, one row per student)", "gradebook");
   const results = el("div", { className: "wb-class-results" });
-  root.replaceChildren(zone, status, problems, el("div", { className: "wb-course-actions" }, csv), results);
-  const state = { learners: [], ids: [], sort: { key: "student", dir: 1 } };
-  const draw = () => {
+  root.replaceChildren(zone, status, version, problems, el("div", { className: "wb-course-actions" }, csv, gradebook), results);
+  const state = { learners: [], rows: [], ids: [], sort: { key: "student", dir: 1 }, trs: new Map(), seq: 0, page: 0 };
+  const pager = el("nav", { className: "wb-class-pager", hidden: true });
+  pager.setAttribute("aria-label", "Pages of students");
+  const shown = el("span", { role: "status" });
+  const previous = el("button", { type: "button", className: "md-button", textContent: `Previous ${PAGE_ROWS}` });
+  const next = el("button", { type: "button", className: "md-button", textContent: `Next ${PAGE_ROWS}` });
+  previous.dataset.wbAction = "previous-students";
+  next.dataset.wbAction = "next-students";
+  pager.append(previous, shown, next);
+  let drawn = Promise.resolve();
+  const pageOf = () => {
+    const pages = Math.max(1, Math.ceil(state.rows.length / PAGE_ROWS));
+    state.page = Math.min(Math.max(0, state.page), pages - 1);
+    const from = state.page * PAGE_ROWS;
+    const to = Math.min(state.rows.length, from + PAGE_ROWS);
+    pager.hidden = pages === 1;
+    shown.textContent = `Students ${from + 1}–${to} of ${state.rows.length}`;
+    previous.disabled = state.page === 0;
+    next.disabled = state.page === pages - 1;
+    // A row's <tr> is built when its page is first shown (a class of 1,000 builds 100 at a time).
+    return sortRows(state.rows, state.ids, state.sort).slice(from, to).map((r) => state.trs.get(r.key) ?? state.trs.set(r.key, rowElement(r, state.ids)).get(r.key));
+  };
+  const placeRows = () => results.querySelector(".wb-class-table tbody")?.replaceChildren(...pageOf());
+  const turn = (by) => {
+    state.page += by;
+    placeRows();
+  };
+  previous.addEventListener("click", () => turn(-1));
+  next.addEventListener("click", () => turn(1));
+  const draw = async () => {
+    state.rows = groupRows(state.learners, await named);
     state.ids = order.filter((id) => state.learners.some((l) => l.cells[id]));
-    if (!state.learners.length) return results.replaceChildren();
-    results.replaceChildren(el("h2", { textContent: "Students and exercises" }), renderTable(state),
-      el("h2", { textContent: "Most common mistakes" }), renderMistakes(state.learners, state.ids));
-    csv.hidden = false;
+    if (!state.rows.length) return results.replaceChildren();
+    state.trs = new Map();
+    await giveWay();
+    const stats = el("div", { className: "wb-class-worked" }, el("p", { textContent: "Working out which exercises worked…" }));
+    const mistakes = el("div", {}, el("p", { textContent: "Counting the mistakes…" }));
+    results.replaceChildren(el("h2", { textContent: "Students and exercises" }), legend(), tableRegion(state, pageOf()), pager,
+      el("h2", { textContent: "Which exercises worked" }), stats, el("h2", { textContent: "Most common mistakes" }), mistakes);
+    csv.hidden = gradebook.hidden = false;
+    await giveWay(); // the table is laid out in a task of its own
+    mistakes.replaceWith(renderMistakes(state.rows, state.ids));
+    await giveWay();
+    const started = performance.now();
+    stats.replaceChildren(statsTable(await classStats(state.rows, state.ids)));
+    root.dataset.wbStatsMs = String(Math.round(performance.now() - started));
   };
   state.resort = (key) => {
     state.sort = { key, dir: state.sort.key === key ? -state.sort.dir : 1 };
-    draw();
-    results.querySelector(`[data-wb-sort="${CSS.escape(key)}"]`)?.focus();
+    for (const th of results.querySelectorAll(".wb-class-table thead th")) {
+      const k = th.querySelector("[data-wb-sort]")?.dataset.wbSort;
+      th.setAttribute("aria-sort", k === key ? (state.sort.dir > 0 ? "ascending" : "descending") : "none");
+    }
+    placeRows();
   };
   const runtime = withSandbox(shared.runtime); // Build code runs in the sandbox worker, one learner's at a time
-  async function take(files) {
-    const started = performance.now();
-    let done = 0;
-    for (const file of files) {
-      const reading = `Reading and re-grading ${file.name} (${++done} of ${files.length})…`;
-      status.textContent = reading;
-      try {
-        const learner = readLearner(file.name, await file.text(), known);
-        learner.file = file.name;
-        const onRun = (id, text) => {
-          status.textContent = `${reading} Running ${learner.student}’s code for exercise ${id}${text ? `: ${text}` : "…"}`;
-        };
-        learner.cells = await gradeLearner(learner, drawing, runtime, onRun);
-        state.learners = state.learners.filter((l) => l.file !== file.name);
-        state.learners.push(learner);
-      } catch (err) {
-        problems.append(el("li", { textContent: `${file.name} ${problemOf(err)}: skipped.` }));
-      }
+  const named = graderVersion(shared.runtime).then(({ text, grader }) => {
+    version.textContent = text;
+    return grader;
+  });
+  async function takeOne(file, progress) {
+    try {
+      const learner = readLearner(file.name, await file.text(), known);
+      Object.assign(learner, { file: file.name, seq: state.seq++, idKey: learner.kind === "hand-in" ? await fold(learner.student) : null });
+      const onRun = (id, text) => {
+        status.textContent = `${progress()} Running ${learner.student}’s code for exercise ${id}${text ? `: ${text}` : "…"}`;
+      };
+      learner.cells = await gradeLearner(learner, drawing, runtime, onRun);
+      state.learners.push(learner);
+    } catch (err) {
+      problems.append(el("li", { textContent: `${file.name} ${problemOf(err)}: skipped.` }));
     }
-    draw();
+  }
+  async function take(files) {
+    delete root.dataset.wbStatsMs;
+    const started = performance.now();
+    let next = 0;
+    let done = 0;
+    const progress = () => `Reading and re-grading ${files.length} file${files.length === 1 ? "" : "s"} (${done} done)…`;
+    const lane = async () => {
+      while (next < files.length) {
+        const file = files[next++];
+        status.textContent = progress();
+        await takeOne(file, progress);
+        done++;
+      }
+    };
+    await Promise.all(Array.from({ length: Math.min(LEARNERS_AT_ONCE, files.length) }, lane));
     const seconds = ((performance.now() - started) / 1000).toFixed(1);
-    status.textContent = `${state.learners.length} learner${state.learners.length === 1 ? "" : "s"} read and re-graded (${files.length} file${files.length === 1 ? "" : "s"} in ${seconds} s).`;
-    root.dataset.wbGraded = String(state.learners.length);
+    status.textContent = `${state.learners.length} file${state.learners.length === 1 ? "" : "s"} read and re-graded (${files.length} handed to the page in ${seconds} s); drawing the table…`;
+    drawn = drawn.then(draw);
+    await drawn;
+    status.textContent = `${state.learners.length} file${state.learners.length === 1 ? "" : "s"} read and re-graded, ${state.rows.length} student${state.rows.length === 1 ? "" : "s"} (${files.length} file${files.length === 1 ? "" : "s"} handed to the page in ${seconds} s).`;
     root.dataset.wbSeconds = seconds;
+    root.dataset.wbRows = String(state.rows.length);
+    root.dataset.wbVerified = String(state.rows.reduce((n, r) => n + Object.values(r.learner.cells).filter((c) => c.verified).length, 0));
+    root.dataset.wbGraded = String(state.learners.length);
   }
   root.wbTake = take; // the bench hands files in this way
   input.addEventListener("change", () => take([...input.files]));
@@ -211,4 +198,5 @@ export async function initClassPage(shared, siteRoot) {
     take([...event.dataTransfer.files]);
   });
   csv.addEventListener("click", () => download("class-results.csv", toCSV(state.learners, state.ids), "text/csv"));
+  gradebook.addEventListener("click", () => download("class-gradebook.csv", toGradebook(state.rows, state.ids), "text/csv"));
 }
