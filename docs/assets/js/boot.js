@@ -62,6 +62,7 @@ function progressMeter(indexURL, files, onProgress) {
   const loaded = new Map(); // file name -> bytes so far
   const expected = new Map(files.map((name) => [name, SIZES[name] || 0]));
   let phase = "download";
+  /** @type {string} */
   let step = BOOT_STEP.download;
   let last = 0;
   const report = (force) => {
@@ -140,7 +141,7 @@ const SNAPSHOT_BYTES = 4.9e6; // what the rule was tuned with (the file has sinc
 
 /** Bytes per ms the link brought pyodide.asm.js's body at (Resource Timing), or null. */
 function linkSpeed(indexURL) {
-  const entry = performance.getEntriesByName?.(indexURL + "pyodide.asm.js")?.[0];
+  const entry = /** @type {PerformanceResourceTiming | undefined} */ (performance.getEntriesByName?.(indexURL + "pyodide.asm.js")?.[0]);
   const size = entry?.encodedBodySize;
   const ms = entry ? entry.responseEnd - entry.responseStart : 0;
   if (!(size > 100_000)) return null;

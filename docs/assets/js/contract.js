@@ -26,8 +26,11 @@ export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;
 /** The first (or every) element with `role` inside `el`. */
 export const findRole = (el, role, extra) => el.querySelector(byRole(role, extra));
 export const findRoles = (el, role, extra) => [...el.querySelectorAll(byRole(role, extra))];
-/** Set <html data-workbook-runtime|offline>. */
-export const setRootState = (which, value) => document.documentElement.setAttribute(ATTR[which], value);
+/** @typedef {{ documentElement: { setAttribute(name: string, value: string): void } }} RootDocument */
+/** Set <html data-workbook-runtime|offline>: the page's (workers import this module for its names alone). */
+export const setRootState = (which, value) =>
+  /** @type {{ document: RootDocument }} */ (/** @type {unknown} */ (globalThis)).document.documentElement
+    .setAttribute(ATTR[which], value);
 // An exercise's checked steps (role work-steps) hold answer widgets of their own, which reuse the
 // answer roles (answer, entry, ...). The exercise's OWN answer, check, feedback and other parts
 // are those outside any steps panel inside `el`; for a step's element, its own parts.

@@ -15,6 +15,7 @@ import { Decoration, EditorView, keymap } from "@codemirror/view";
 import { tags as t } from "@lezer/highlight";
 import { basicSetup } from "codemirror";
 
+/** @type {import("@codemirror/state").StateEffectType<number | null>} */
 const setErrorLine = StateEffect.define();
 const errorLine = StateField.define({
   create: () => Decoration.none,
@@ -22,8 +23,9 @@ const errorLine = StateField.define({
     deco = deco.map(tr.changes);
     for (const effect of tr.effects) {
       if (effect.is(setErrorLine)) {
-        if (effect.value == null || effect.value > tr.state.doc.lines) return Decoration.none;
-        const line = tr.state.doc.line(effect.value);
+        const number = effect.value;
+        if (number == null || number > tr.state.doc.lines) return Decoration.none;
+        const line = tr.state.doc.line(number);
         deco = Decoration.set([Decoration.line({ class: "wb-error-line" }).range(line.from)]);
       }
     }

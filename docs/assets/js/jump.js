@@ -62,7 +62,7 @@ function moveTo(url) {
     return false;
   }
   if (!target) return false;
-  const drawer = document.querySelector('input[data-md-toggle="drawer"]');
+  const drawer = /** @type {HTMLInputElement | null} */ (document.querySelector('input[data-md-toggle="drawer"]'));
   if (drawer?.checked) drawer.click(); // a link in the phone's menu: close it, as a page change would
   if (target.hasAttribute(ATTR.exercise)) return jumpTo(target.getAttribute(ATTR.exercise), url);
   history.pushState(null, "", url.href);
@@ -75,7 +75,7 @@ function onClick(event) {
   const link = event.target.closest?.("a[href]");
   if (!link) return;
   if (link.hasAttribute("data-wb-skip")) {
-    const first = document.querySelector("#wb-exercises a");
+    const first = /** @type {HTMLAnchorElement | null} */ (document.querySelector("#wb-exercises a"));
     if (!first) return;
     first.focus();
   } else if (link.hasAttribute("data-wb-jump")) {

@@ -20,7 +20,7 @@ import { ATTR, BOOT_PHASE, OFFLINE, ROLE, RUNTIME, STATE, byRole, findRole } fro
 import { BOOT_STEP } from "./boot-steps.js";
 import { feedbackOf } from "./feedback.js";
 import { formatSize } from "./offline-ui.js";
-import { el } from "./progress-view.js";
+import { el } from "./dom.js";
 
 const STEPS = [
   [BOOT_PHASE.download, "Download"],
@@ -153,7 +153,7 @@ function draw(box, now = performance.now()) {
 function redrawAll() {
   const now = performance.now();
   let waiting = false;
-  for (const box of document.querySelectorAll(byRole(ROLE.runtimeStatus))) {
+  for (const box of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll(byRole(ROLE.runtimeStatus)))) {
     draw(box, now);
     waiting ||= starts[box.dataset.wbWaitsFor].phase !== BOOT_PHASE.ready;
   }
@@ -183,13 +183,14 @@ export function showSandboxStart(exercise) {
 export function initLoading() {
   new MutationObserver((records) => {
     if (!loading()) return;
-    for (const { target } of records) {
+    for (const record of records) {
+      const target = /** @type {Element} */ (record.target); // attribute changes: always an element
       const waits = target.hasAttribute(ATTR.exercise) || target.getAttribute(ATTR.role) === ROLE.workStep;
       if (target.getAttribute(ATTR.state) === STATE.pending && waits) showIn(target, "grader");
     }
   }).observe(document.body, { attributes: true, subtree: true, attributeFilter: [ATTR.state] });
   for (const [who, name] of [["grader", "workbook:boot"], ["sandbox", "workbook:sandbox-boot"]]) {
-    document.addEventListener(name, (event) => {
+    document.addEventListener(name, (/** @type {CustomEvent} */ event) => {
       update(who, event.detail);
       redrawAll();
     });

@@ -16,7 +16,7 @@ import { initJumps } from "./jump.js";
 import { initDrawer } from "./drawer.js";
 import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
 import { strayVariantLinks, strayVariantTargets } from "./variants.js";
-import { loadManifest } from "./progress-view.js";
+import { loadManifest } from "./exercise-list.js";
 import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
 import { findApi, findLaunch } from "./lms/api.js";
 import { learnerProgress } from "./lms/learner.js";
@@ -110,7 +110,7 @@ function initPage() {
   initCourse(shared, siteRoot);
 }
 
-document.addEventListener("workbook:runtime", (event) => {
+document.addEventListener("workbook:runtime", (/** @type {CustomEvent} */ event) => {
   if (event.detail === RUNTIME.failed) showRuntimeProblem(runtime.failure);
 });
 document.addEventListener("workbook:progress-problem", () => showProgressProblems(progress));

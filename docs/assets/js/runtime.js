@@ -240,7 +240,11 @@ export class Runtime {
     this.spawn(null);
   }
 
-  /** Send `request` ({op, ...}); resolves with an envelope, never rejects. */
+  /**
+   * Send `request` ({op, ...}); resolves with an envelope, never rejects.
+   * @param {{ op: string, [key: string]: any }} request
+   * @param {{ limitMs?: number, onProgress?: (text: string) => void, onWait?: () => void }} [options]
+   */
   request(request, { limitMs = DEFAULT_LIMIT_MS, onProgress } = {}) {
     if (this.failure) return Promise.resolve(failure(ERROR.runtime, this.failure));
     return new Promise((resolve) => {

@@ -31,6 +31,7 @@ import { BOOT_STEP } from "./boot-steps.js";
 
 const post = self.postMessage.bind(self);
 const networkFetch = self.fetch.bind(self);
+/** @type {SandboxSettings} */
 const settings = self.WB_SANDBOX || { indexURL: new URL("../vendor/pyodide/", self.location.href).href };
 delete self.WB_SANDBOX;
 const { indexURL } = settings;
@@ -51,7 +52,7 @@ const given = settings.module ? new Promise((resolve) => (takeModule = resolve))
 // Registered first, before anything else can listen: later listeners (an
 // `onmessage` set by learner code) never see a message.
 // Only the page's own messages count: not an event the sandbox's code dispatched.
-self.addEventListener("message", (event) => {
+self.addEventListener("message", (/** @type {MessageEvent} */ event) => {
   event.stopImmediatePropagation();
   if (!event.isTrusted) return;
   const msg = event.data;

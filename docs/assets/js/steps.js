@@ -30,7 +30,15 @@ function stepLink(steps, name, text) {
 
 class Steps {
   constructor(ctx, button, panel) {
-    Object.assign(this, { ctx, button, panel, fields: new Map(), built: null });
+    this.ctx = ctx;
+    /** @type {HTMLButtonElement} */
+    this.button = button;
+    /** @type {HTMLElement} */
+    this.panel = panel;
+    /** @type {Map<string, any>} a step's name -> its widget */
+    this.fields = new Map();
+    /** @type {Promise<void> | null} */
+    this.built = null;
     button.addEventListener("click", () => (this.isOpen() ? this.close() : this.open()));
   }
 
@@ -49,7 +57,7 @@ class Steps {
   /** Put the list on the page (once) and wire each step's widget. */
   build() {
     this.built ??= (async () => {
-      const template = this.panel.querySelector(":scope > template");
+      const template = /** @type {HTMLTemplateElement} */ (this.panel.querySelector(":scope > template"));
       this.panel.append(template.content.cloneNode(true));
       for (const li of findRoles(this.panel, ROLE.workStep)) await this.wire(li);
     })();

@@ -33,7 +33,9 @@
 const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
 
-const SCOPE = self.registration.scope;
+// The global scope, as what it is: a service worker's (the type checker's lib names it a worker's).
+const sw = /** @type {ServiceWorkerGlobalScope} */ (/** @type {unknown} */ (self));
+const SCOPE = sw.registration.scope;
 const PREFIX = `robotics-workbook:${new URL(SCOPE).pathname}:`;
 const CACHE = PREFIX + VERSION;
 const STATE = PREFIX + "state"; // not versioned: whether the learner wants the copy
@@ -116,7 +118,7 @@ async function status() {
 }
 
 async function broadcast(message) {
-  for (const client of await self.clients.matchAll({ includeUncontrolled: true })) client.postMessage(message);
+  for (const client of await sw.clients.matchAll({ includeUncontrolled: true })) client.postMessage(message);
 }
 
 // The memory snapshot travels gzip-compressed and is stored inflated, so later
@@ -196,7 +198,7 @@ function copy() {
   stopped = false;
   copying ||= copyAll()
     .then(async () => {
-      await self.clients.claim();
+      await sw.clients.claim();
       broadcast(await status());
     })
     .catch(async (err) => {
@@ -224,31 +226,31 @@ async function decline() {
 }
 
 // ---- Life cycle ---------------------------------------------------------------------
-self.addEventListener("install", (event) => {
+sw.addEventListener("install", (event) => {
   event.waitUntil(
     (async () => {
       // An update of a stored site: whole before it takes over. Otherwise nothing yet.
-      if (self.registration.active && (await wanted())) await copyAll();
-      else await self.skipWaiting();
+      if (sw.registration.active && (await wanted())) await copyAll();
+      else await sw.skipWaiting();
     })(),
   );
 });
 
-self.addEventListener("activate", (event) => {
+sw.addEventListener("activate", (event) => {
   event.waitUntil(
     (async () => {
       for (const name of await caches.keys()) {
         if (name.startsWith(PREFIX) && name !== CACHE && name !== STATE) await caches.delete(name);
       }
-      if (await sealed()) await self.clients.claim();
+      if (await sealed()) await sw.clients.claim();
     })(),
   );
 });
 
-self.addEventListener("message", (event) => {
+sw.addEventListener("message", (event) => {
   const reply = async (message) => event.source?.postMessage(await message);
   const type = event.data?.type;
-  if (type === "activate-update") self.skipWaiting();
+  if (type === "activate-update") sw.skipWaiting();
   else if (type === "status") event.waitUntil(reply(status()).then(resume));
   else if (type === "store") {
     event.waitUntil(
@@ -358,7 +360,7 @@ function sitemap() {
   return new Response(body, { headers: { "Content-Type": "application/xml" } });
 }
 
-self.addEventListener("fetch", (event) => {
+sw.addEventListener("fetch", (event) => {
   const { request } = event;
   if (request.method !== "GET" || !request.url.startsWith(SCOPE)) return;
   if (request.cache === "only-if-cached" && request.mode !== "same-origin") return;
