@@ -27,7 +27,8 @@ export async function listPage(attr, siteRoot) {
   root.dataset.wbBuilt = "true";
   const manifest = await loadManifest(siteRoot);
   if (manifest) return { root, manifest };
-  root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
+  const text = "The list of exercises could not be loaded. Reload the page to try again.";
+  root.replaceChildren(el("p", { textContent: text }));
   return null;
 }
 

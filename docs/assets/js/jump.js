@@ -17,7 +17,8 @@ import { ATTR, ROLE, ownRole } from "./contract.js";
 
 // Where an answer starts, by kind: the first of these roles an exercise has.
 const ANSWER_ROLES = [ROLE.entry, ROLE.answer, ROLE.choice, ROLE.line, ROLE.editor, ROLE.steps, ROLE.check];
-const FOCUSABLE = 'input:not([type="hidden"]):not([disabled]), button:not([disabled]), textarea, select, [tabindex="0"], [contenteditable="true"]';
+const FOCUSABLE = 'input:not([type="hidden"]):not([disabled]), button:not([disabled]), textarea, select, '
+  + '[tabindex="0"], [contenteditable="true"]';
 
 const visible = (el) => el.getClientRects().length > 0 && !el.closest("[hidden]");
 
@@ -71,7 +72,8 @@ function moveTo(url) {
 }
 
 function onClick(event) {
-  if (event.defaultPrevented || event.button !== 0 || event.metaKey || event.ctrlKey || event.shiftKey || event.altKey) return;
+  const modified = event.metaKey || event.ctrlKey || event.shiftKey || event.altKey;
+  if (event.defaultPrevented || event.button !== 0 || modified) return;
   const link = event.target.closest?.("a[href]");
   if (!link) return;
   if (link.hasAttribute("data-wb-skip")) {

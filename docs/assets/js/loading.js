@@ -64,7 +64,8 @@ const STEP_TEXT = {
 };
 
 /** Per worker: its last report, when what it reports last changed, and where the bar is. */
-const fresh = () => ({ phase: BOOT_PHASE.download, step: BOOT_STEP.download, loaded: 0, total: 0, changed: performance.now(), value: 0 });
+const fresh = () => ({
+  phase: BOOT_PHASE.download, step: BOOT_STEP.download, loaded: 0, total: 0, changed: performance.now(), value: 0 });
 const starts = { grader: fresh(), sandbox: fresh() };
 let ticker = null;
 
@@ -100,7 +101,9 @@ function describe(who, start, now) {
   const { phase, step, loaded, total } = start;
   if (phase === BOOT_PHASE.ready) return [WHO[who].ready, ""];
   if (phase === BOOT_PHASE.download && !SPAN[step]) {
-    const text = total ? `Downloading the Python runtime · ${formatSize(loaded)} of ${formatSize(total)}` : "Downloading the Python runtime…";
+    const text = total
+      ? `Downloading the Python runtime · ${formatSize(loaded)} of ${formatSize(total)}`
+      : "Downloading the Python runtime…";
     return [text, ""];
   }
   const text = step === BOOT_STEP.import ? WHO[who].import : STEP_TEXT[step] || "Starting Python…";

@@ -58,9 +58,11 @@ if (typeof Worker === "undefined") {
 }
 window.workbook = { runtime, progress, checkScrollRegionsNow, lms: null };
 lmsSession?.then((session) => { window.workbook.lms = session; }, (err) => {
-  showNotice("lms", "Course platform", `The connection to the course's platform could not start (${err?.message || err}). Your work is kept in this browser.`);
+  showNotice("lms", "Course platform", `The connection to the course's platform could not start `
+    + `(${err?.message || err}). Your work is kept in this browser.`);
 });
-if (!inLms) registerOffline(siteRoot, progress); // no service worker in an LMS frame: the LMS serves the package from its own paths
+// No service worker in an LMS frame: the LMS serves the package from its own paths.
+if (!inLms) registerOffline(siteRoot, progress);
 initLoading();
 initSearchStart();
 initScrollRegions();
@@ -96,7 +98,8 @@ function initPage() {
     } catch (err) {
       // One exercise that cannot start must not stop the others.
       el.setAttribute(ATTR.state, STATE.error);
-      ownRole(el, ROLE.feedback)?.replaceChildren(Object.assign(document.createElement("p"), { textContent: `This exercise could not start: ${err.message}` }));
+      const textContent = `This exercise could not start: ${err.message}`;
+      ownRole(el, ROLE.feedback)?.replaceChildren(Object.assign(document.createElement("p"), { textContent }));
     }
   }
   initFigures(document, shared.runtime);
@@ -114,7 +117,8 @@ document.addEventListener("workbook:runtime", (/** @type {CustomEvent} */ event)
   if (event.detail === RUNTIME.failed) showRuntimeProblem(runtime.failure);
 });
 document.addEventListener("workbook:progress-problem", () => showProgressProblems(progress));
-document.addEventListener("workbook:progress-saved", () => ["full", "blocked"].forEach((kind) => clearNotice(`progress-${kind}`)));
+document.addEventListener("workbook:progress-saved",
+  () => ["full", "blocked"].forEach((kind) => clearNotice(`progress-${kind}`)));
 
 // mkdocs-material emits every page (the first and each instant navigation) on document$, from
 // inside its own DOMContentLoaded handler: the page starts in a task of its own after it, so that

@@ -114,7 +114,10 @@ async function status() {
     }
   }
   const state = complete ? "complete" : copying ? "copying" : "partial";
-  return { type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes, totalBytes: TOTAL_BYTES };
+  return {
+    type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes,
+    totalBytes: TOTAL_BYTES,
+  };
 }
 
 async function broadcast(message) {
@@ -131,7 +134,8 @@ function inflated(response) {
 }
 
 async function fetchChecked(url, entry, mode) {
-  const response = await fetch(new Request(url, { cache: mode, integrity: entry.integrity, credentials: "same-origin" }));
+  const request = new Request(url, { cache: mode, integrity: entry.integrity, credentials: "same-origin" });
+  const response = await fetch(request);
   if (!response.ok) throw new Error(`${entry.path}: HTTP ${response.status}`);
   return response;
 }
@@ -150,7 +154,8 @@ async function fromOlder(url, entry) {
 /** Store one file and verify what was stored. */
 async function storeOne(cache, url, entry) {
   const older = await fromOlder(url, entry);
-  const response = older || (await fetchChecked(url, entry, "default").catch(() => fetchChecked(url, entry, "no-cache")));
+  const response = older
+    || (await fetchChecked(url, entry, "default").catch(() => fetchChecked(url, entry, "no-cache")));
   await cache.put(url, !older && INFLATE.test(entry.path) ? inflated(response) : response);
   const stored = await cache.match(url);
   if (!stored || !(await genuine(stored, entry))) {
@@ -264,7 +269,8 @@ sw.addEventListener("message", (event) => {
 
 // ---- Serving --------------------------------------------------------------------------
 function isolate(response) {
-  if (!response || response.type === "opaque" || response.type === "opaqueredirect" || response.status === 0) return response;
+  const unreadable = response?.type === "opaque" || response?.type === "opaqueredirect" || response?.status === 0;
+  if (!response || unreadable) return response;
   const headers = new Headers(response.headers);
   for (const [name, value] of Object.entries(ISOLATION)) headers.set(name, value);
   return new Response(response.body, { status: response.status, statusText: response.statusText, headers });
@@ -297,10 +303,12 @@ function refused(path) {
 <p>This page (<code>${path.replace(/[<&]/g, "")}</code>) is not stored in this browser, or its stored copy was
 damaged and was not used, and the network cannot be reached. Connect to the network and reload: the workbook
 then stores it again.</p>`;
-  return new Response(text, { status: 503, statusText: "Service Unavailable", headers: { "Content-Type": "text/html; charset=utf-8" } });
+  return new Response(text,
+    { status: 503, statusText: "Service Unavailable", headers: { "Content-Type": "text/html; charset=utf-8" } });
 }
 
-const forDocument = (request) => request.destination === "document" || request.destination === "worker" || request.mode === "navigate";
+const forDocument = (request) =>
+  request.destination === "document" || request.destination === "worker" || request.mode === "navigate";
 
 async function respond(request, event) {
   const key = cacheKey(request.url);

@@ -31,4 +31,6 @@ export const delay = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 /** The browser's next idle moment, or `timeoutMs` at the latest (at once where it cannot say). */
 /** @returns {Promise<void>} */
 export const idle = (timeoutMs) =>
-  new Promise((resolve) => (window.requestIdleCallback ? requestIdleCallback(() => resolve(), { timeout: timeoutMs }) : setTimeout(resolve, 0)));
+  new Promise((resolve) => (window.requestIdleCallback
+    ? requestIdleCallback(() => resolve(), { timeout: timeoutMs })
+    : setTimeout(resolve, 0)));

@@ -117,7 +117,10 @@ export function init(ctx) {
     const ed = await editor.latest();
     ed.markLine(null);
     const reply = await ctx.submit("run", { code: ed.getCode() }, {
-      via: sandboxed, limitMs, onProgress: (text) => showMessage(ctx.el, text), onWait: () => showSandboxStart(ctx.el) });
+      via: sandboxed, limitMs,
+      onProgress: (text) => showMessage(ctx.el, text),
+      onWait: () => showSandboxStart(ctx.el),
+    });
     runButton.disabled = false;
     renderTests(ctx.el, reply);
     const line = reply.ok && reply.value.data?.error?.line;
