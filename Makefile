@@ -114,25 +114,32 @@ build/snapshot.stamp: build/stdlib.stamp scripts/build_snapshot.mjs
 	node scripts/build_snapshot.mjs --sandbox
 	touch $@
 
+# A student id's Unicode case folding, from the Python the grader runs (its unicodedata), so
+# that the page (assignment-hash.js) folds ids as workbook/assignment.py does.
+build/casefold.json: scripts/casefold_table.py $(BIN)/.serve
+	$(BIN)/python scripts/casefold_table.py $@
+
 # The page's JavaScript (esbuild); contract.js imports contract.json, the worker's boot
 # module reads the sizes of the runtime files it loads (a real progress bar).
-build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) pyodide_pkg/workbook/contract.json node_modules/.installed build/snapshot.stamp build/wheel.stamp
+build/bundle.stamp: scripts/bundle.mjs $(JS_SOURCES) pyodide_pkg/workbook/contract.json build/casefold.json node_modules/.installed build/snapshot.stamp build/wheel.stamp
 	node scripts/bundle.mjs
 	mkdir -p build && touch $@
 
 RUNTIME_STAMPS := build/vendor.stamp build/wheel.stamp build/stdlib.stamp build/snapshot.stamp build/bundle.stamp
 
-# The hooks import the grading package (bank, contract); offline.py fills in the SW template.
-site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TEMPLATE) $(PKG_SOURCES)
+# The hooks import the grading package (bank, contract); offline.py fills in the SW template;
+# notices.py writes the licences and third-party notices page with scripts/notices.py.
+NOTICES := scripts/notices.py LICENSE LICENSE-text.md
+site/.stamp: $(RUNTIME_STAMPS) mkdocs.yml $(PAGES) $(HOOKS) $(OVERRIDES) $(SW_TEMPLATE) $(PKG_SOURCES) $(NOTICES)
 	$(BIN)/mkdocs build --strict --quiet
 	touch $@
 
 site: site/.stamp
 
-# scripts/serve.py ends cleanly on Ctrl-C or SIGTERM (no "make: *** ... Terminated").
+# scripts/serve.py says where it serves once it holds the port, says so when the port is taken
+# (PORT=8001 make serve chooses another), and ends cleanly on Ctrl-C or SIGTERM (no "make: *** ... Terminated").
 serve: site
-	@echo "Serving the workbook at http://$(HOST):$(PORT)/  (Ctrl-C stops)"
-	$(BIN)/python scripts/serve.py $(HOST) $(PORT) site
+	@$(BIN)/python scripts/serve.py $(HOST) $(PORT) site
 
 # Live-reloading server for authors (rebuilds pages on save).
 dev: $(RUNTIME_STAMPS)

@@ -9,14 +9,18 @@ page (``class/``) recomputes it from a hand-in file to re-grade the answers; a
 test checks the two agree over many inputs.
 
 The text is tidied first, the same way in both (:func:`tidy`): Unicode NFC,
-whitespace runs as one space, trimmed; a student id also with ASCII capitals as
-small letters ("Ada Lovelace" and "ada  lovelace" are one student), never other
-letters (their case rules differ between languages).
+whitespace runs as one space, trimmed. A student id is also folded (:func:`fold`):
+Unicode NFKC and full case folding (``str.casefold``), so that "Ada Lovelace",
+"ada  lovelace", "Émile" and "ÉMILE" each name one student whatever the keyboard
+typed. The page folds with a table written from this Python's own case folding
+(``scripts/casefold_table.py``), so the two agree on every code point.
 
 >>> assigned_variant("ROB101", "s1234567", "0.1")
 300744
 >>> assigned_variant("ROB101", " S1234567 ", "0.1") == assigned_variant("ROB101", "s1234567", "0.1")
 True
+>>> fold(" ÉMILE  Straße "), fold("ﬁ")
+('émile strasse', 'fi')
 >>> 1 <= assigned_variant("x", "y", "9.7") <= MAX_SEED
 True
 
@@ -40,13 +44,14 @@ import hashlib
 import re
 import unicodedata
 
+from .contract import LIMIT
 from .variants import MAX_SEED
 
 SALT = "robotics-math-workbook/assignment/1"
 # The tags that name a mistake (contract.json "tags"): the exercise's own slips, and those every answer kind knows.
 NAMED = ("slip", "close", "radians", "degrees", "sign", "transpose", "inverse", "sine-sign", "rows-swapped",
          "columns-swapped", "negated")
-NAME_CAP = 80  # characters of a slip's name
+NAME_CAP = LIMIT.slipName  # characters of a slip's name (contract.json, the page's limit too)
 # A number the variant chose; not a digit that is part of a name (θ1, atan2, e[k−1]) or an
 # entry's place (J(1,2), "the (2,2) entry"), which every variant shares.
 _NUMBER = re.compile(r"(?<![\w\[−\-])[−\-+]?\d+(?:[.,]\d+)*(?:e[−\-+]?\d+)?(?!\w)")
@@ -54,20 +59,22 @@ _PLACE = re.compile(r"\((\d(?:,\d)*)\)")
 _SPACE = re.compile(r"\s+")
 
 
-def tidy(text: str, *, fold: bool = False) -> str:
-    """``text`` as the hash reads it: NFC, runs of whitespace as one space, trimmed (``fold``: A-Z as a-z)."""
-    out = _SPACE.sub(" ", unicodedata.normalize("NFC", text)).strip(" ")
-    return out.translate(_FOLD) if fold else out
+def tidy(text: str) -> str:
+    """``text`` as the hash reads it: NFC, runs of whitespace as one space, trimmed."""
+    return _SPACE.sub(" ", unicodedata.normalize("NFC", text)).strip(" ")
 
 
-_FOLD = str.maketrans("ABCDEFGHIJKLMNOPQRSTUVWXYZ", "abcdefghijklmnopqrstuvwxyz")
+def fold(text: str) -> str:
+    """A student id as the hash reads it: NFKC, full case folding, NFKC again (folding can undo
+    it), then tidied. For ASCII, capitals as small letters and the spaces tidied."""
+    return tidy(unicodedata.normalize("NFKC", unicodedata.normalize("NFKC", text).casefold()))
 
 
 def assigned_variant(class_code: str, student: str, exercise_id: str) -> int:
     """The variant (1 to MAX_SEED) a student's assignment shows for an exercise: SHA-256 of the
     salt, the tidied class code, student id and exercise id, one per line; its first 8 bytes
     as a whole number, modulo MAX_SEED, plus 1."""
-    text = "\n".join((SALT, tidy(class_code), tidy(student, fold=True), exercise_id))
+    text = "\n".join((SALT, tidy(class_code), fold(student), exercise_id))
     digest = hashlib.sha256(text.encode("utf-8")).digest()
     return 1 + int.from_bytes(digest[:8], "big") % MAX_SEED
 

@@ -33,7 +33,13 @@ AXE = ROOT / "node_modules" / "axe-core" / "axe.min.js"
 PAGES = ["", *CHAPTERS.values(), "related/", "progress/"]
 TEACHING = ["teaching/", "teaching/hosting/", "teaching/assignments/", "teaching/class-page/", "teaching/scorm/",
             "teaching/privacy/"]  # the teacher's guide (its two tools, teach/ and class/, are test_course's)
-EVERY_PAGE = [*PAGES, "practise/", *TEACHING, "performance/"]  # the last is the developers' page, out of the menu
+EVERY_PAGE = [*PAGES, "practise/", *TEACHING, "notices/", "performance/"]  # the last two: out of the menu
+# The decision records (docs/decisions/, out of the menu, linked from the performance page): Markdown
+# of one shape with no HTML of its own (tests/unit/test_decisions.py), so one template: the index,
+# the first and the last record, and the two whose Decision is a list are audited for all of them
+# (every page here starts the grader's worker, and 42 of them took 200 s).
+DECISIONS = ["decisions/", *(f"decisions/{p.stem}/" for p in sorted((ROOT / "docs" / "decisions").glob("[0-9]*.md")))]
+DECISIONS_AUDITED = [DECISIONS[0], DECISIONS[1], DECISIONS[17], DECISIONS[28], DECISIONS[-1]]
 ROTATE_OK = "import math\n\ndef rotate_2d(x, y, theta):\n    c, s = math.cos(theta), math.sin(theta)\n    return (c * x - s * y, s * x + c * y)\n"
 
 
@@ -381,3 +387,21 @@ def test_every_page_fits_360_px(page, site_url, path):
         assert formulas["cued"] >= 3, formulas
     if path == PAGES[-1]:  # as the walk did once: a page's runtime starts at 360 px too
         wait_runtime(page, timeout=120_000)
+
+
+def test_the_decision_records_pass_the_audit(page, site_url):
+    """The decision records' index and records of each shape: axe (every rule, in the palette each is
+    loaded in, in turns) at 1280 px, then nothing poking out sideways and every touch target large
+    enough at 360 px."""
+    found = {}
+    for n, path in enumerate(DECISIONS_AUDITED):
+        page.set_viewport_size({"width": 1280, "height": 800})
+        page.emulate_media(color_scheme="dark" if n % 2 else "light")
+        page.goto(site_url + path)
+        problems = audit(page)
+        page.set_viewport_size({"width": 360, "height": 740})
+        problems += page.evaluate(OVERFLOW) + page.evaluate(TARGETS)
+        if problems:
+            found[path] = problems
+    assert found == {}, "\n".join(f"{s}:\n  " + "\n  ".join(v) for s, v in found.items())
+

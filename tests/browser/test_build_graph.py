@@ -31,7 +31,7 @@ CASES = {
     "pyodide_pkg/workbook/bank/ch0_rotations_2d.py": PACKAGE,
     "pyodide_pkg/workbook/contract.json": PACKAGE,
     "pyodide_pkg/workbook_sandbox/restore.py": PACKAGE,  # the sandbox's own package, in its files and snapshot
-    "pyodide_pkg/pyproject.toml": [".venv/bin/.serve", VENV_TEST, *RUNTIME],
+    "pyodide_pkg/pyproject.toml": [".venv/bin/.serve", VENV_TEST, "build/casefold.json", *RUNTIME],
     "docs/assets/js/main.js": BUNDLE,
     "docs/assets/js/kinds/derive.js": BUNDLE,
     "docs/assets/js/answer-kinds/matrix.js": BUNDLE,
@@ -39,11 +39,18 @@ CASES = {
     "docs/assets/workbook.css": SITE,
     "docs/chapters/00-rotations-2d.md": SITE,
     "docs/index.md": SITE,
+    "docs/teaching/index.md": SITE,  # the teacher's guide
+    "docs/decisions/index.md": SITE,  # the decision records
+    "docs/images/workbook.png": SITE,  # the README's picture (left out of the site, but one of its sources)
     "docs/hooks/exercises.py": SITE,
     "docs/hooks/offline.py": SITE,
     "docs/overrides/main.html": SITE,
+    "docs/overrides/partials/copyright.html": SITE,
+    "scripts/notices.py": SITE,  # the licences and third-party notices page
+    "LICENSE-text.md": SITE,
     "mkdocs.yml": SITE,
     "scripts/bundle.mjs": BUNDLE,
+    "scripts/casefold_table.py": ["build/casefold.json", *BUNDLE],  # a student id's folding, from the grader's Python
     "scripts/build_snapshot.mjs": ["build/snapshot.stamp", *BUNDLE],
     "scripts/split_stdlib.py": ["build/stdlib.stamp", "build/snapshot.stamp", *BUNDLE],
     "scripts/stdlib_probe.mjs": ["build/stdlib.stamp", "build/snapshot.stamp", *BUNDLE],
@@ -52,9 +59,9 @@ CASES = {
     "scripts/vendor.py": RUNTIME,
     "scripts/pyodide-0.27.7.sha256": RUNTIME,
     "package-lock.json": ["node_modules/.installed", *RUNTIME],
-    "requirements/serve.lock": [".venv/bin/.serve", VENV_TEST, *RUNTIME],
+    "requirements/serve.lock": [".venv/bin/.serve", VENV_TEST, "build/casefold.json", *RUNTIME],
     "requirements/test.lock": [VENV_TEST],
-    "requirements/tools.lock": [".venv/bin/.serve", VENV_TEST, *RUNTIME],  # uv, which installs the other two
+    "requirements/tools.lock": [".venv/bin/.serve", VENV_TEST, "build/casefold.json", *RUNTIME],  # uv, which installs the other two
 }
 
 

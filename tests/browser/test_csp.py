@@ -15,7 +15,7 @@ import re
 
 from conftest import SITE
 from helpers import CHAPTERS
-from test_a11y import EVERY_PAGE
+from test_a11y import DECISIONS, EVERY_PAGE
 from test_course import COURSE_PAGES
 
 CSP_META = re.compile(r'<meta http-equiv="Content-Security-Policy" content="([^"]+)">')
@@ -73,7 +73,8 @@ def test_every_page_of_the_site_is_loaded_under_the_watcher():
     online and offline: all under the watcher. The service worker's registration and the whole
     offline copy are watched in the offline tests. A page added to the site without an audit
     fails here."""
-    audited = {path.split("#")[0] for path in (*EVERY_PAGE, *COURSE_PAGES)}
+    # The decision records are one template of plain Markdown: test_a11y audits a sample (DECISIONS_AUDITED).
+    audited = {path.split("#")[0] for path in (*EVERY_PAGE, *COURSE_PAGES, *DECISIONS)}
     missing = [path for path in site_pages() if path not in audited and path != "404.html"]
     assert missing == [], f"pages no browser test opens: {missing}"
     assert CHAPTERS[0] in audited and "progress/" in audited and "" in audited and "teach/" in audited

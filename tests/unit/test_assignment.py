@@ -1,5 +1,6 @@
 """Assignments: the assigned variant (one function in Python and in the page's JavaScript,
-checked equal over many inputs), and the name of the slip a wrong answer hit (``data.slip``)."""
+checked equal over many inputs), the student id's folding (NFKC and full case folding, equal
+in both over every code point), and the name of the slip a wrong answer hit (``data.slip``)."""
 
 from __future__ import annotations
 
@@ -7,20 +8,25 @@ import json
 import random
 import shutil
 import subprocess
+import sys
 from pathlib import Path
 
 import pytest
 
 from workbook import api, bank
-from workbook.assignment import MAX_SEED, NAMED, assigned_variant, slip_name, tidy
+from workbook.assignment import MAX_SEED, NAMED, assigned_variant, fold, slip_name, tidy
 from workbook.variants import check_seed
 
 ROOT = Path(__file__).resolve().parents[2]
 HASH_JS = ROOT / "docs" / "assets" / "js" / "assignment-hash.js"
-# Characters that test the tidying: spaces of every kind, capitals inside and outside ASCII, composed
-# and decomposed accents, emoji, a quote, a newline and a backslash.
+TABLE = ROOT / "build" / "casefold.json"  # make writes it (scripts/casefold_table.py); the JS loads it
+# Characters that test the tidying and the folding: spaces of every kind, capitals inside and outside
+# ASCII, composed and decomposed accents, a combining mark that folds to a letter (U+0345), ligatures
+# and compatibility forms, Cherokee (which folds to capitals), emoji, a quote, a newline and a backslash,
+# and characters newer than the grader's Unicode (outlined digits, U+A7F1).
 ALPHABET = list("aZ09 -_.,'\"\\\n\t") + ["\u00a0", "\u2003", "\u3000", "\u0085", "\u001f", "\ufeff", "É", "é", "e\u0301",
-                                         "İ", "ß", "Σ", "ς", "😀", "\u200b", "Ω", "\u212b", "Å"]
+                                         "İ", "ß", "Σ", "ς", "😀", "\u200b", "Ω", "\u212b", "Å", "\u0345", "\u0301", "\u0323",
+                                         "ﬁ", "Ⅻ", "①", "ｱ", "\u13a0", "ꭰ", "ǅ", "\u1e9e", "\U0001ccd6", "\ua7f1", "李", "ᾳ"]
 
 
 def random_text(rng: random.Random, n: int) -> str:
@@ -51,14 +57,48 @@ def test_stable_for_a_student_different_between_students():
     assert assigned_variant("ROB101", "s1", "0.1") != assigned_variant("ROB102", "s1", "0.1")
 
 
-def test_tidy_folds_only_ascii_capitals():
-    assert tidy("  Ada \n Lovelace ", fold=True) == "ada lovelace"
-    assert tidy("ÉB", fold=True) == "Éb"
+def test_ids_fold_as_the_page_promises():
+    assert fold("  Ada \n Lovelace ") == "ada lovelace"
+    assert fold("ÉMILE") == fold("Émile") == fold("émile") == fold("E\u0301mile") == "émile"
+    assert fold("Straße") == fold("STRASSE") == "strasse" and fold("ﬁsh") == "fish" and fold("\uff21\uff22\uff23") == "abc"
     assert tidy("e\u0301") == "é"  # NFC
+    assert assigned_variant("ROB101", "Émile", "0.1") == assigned_variant("ROB101", "émile", "0.1")
+
+
+def test_plain_ascii_ids_keep_their_numbers():
+    """Folding beyond A-Z changes nothing for ASCII ids: the numbers main gave them (computed there)."""
+    cases = [("Ada Lovelace", "0.1"), ("  ada   LOVELACE ", "0.4"), ("S1234567", "1.1"), ("x-Y_z.9", "3.2")]
+    assert [assigned_variant("ROB101 week 3", s, e) for s, e in cases] == [339841, 615046, 193142, 984224]
+
+
+def _table() -> None:
+    if not TABLE.exists():  # make writes it; a unit run on a fresh clone writes it the same way
+        subprocess.run([sys.executable, str(ROOT / "scripts" / "casefold_table.py"), str(TABLE)], check=True)
+
+
+@pytest.mark.skipif(shutil.which("node") is None, reason="needs Node")
+def test_javascript_folds_every_code_point_as_python(tmp_path):
+    """The page's fold() against Python's, one code point at a time over all 1,112,064 (surrogates aside):
+    the case folding comes from Python's own table, and NFKC leaves alone what Python's Unicode has not
+    assigned, whatever Node's newer Unicode knows."""
+    _table()
+    script = tmp_path / "all.mjs"
+    script.write_text(
+        f"import {{ fold }} from {json.dumps(HASH_JS.as_uri())};\n"
+        "const out = [];\n"
+        "for (let c = 0; c <= 0x10ffff; c++) { if (c < 0xd800 || c > 0xdfff) out.push(await fold(String.fromCodePoint(c))); }\n"
+        "process.stdout.write(JSON.stringify(out));\n")
+    run = subprocess.run(["node", str(script)], capture_output=True, text=True, check=True)
+    theirs = json.loads(run.stdout)
+    points = [c for c in range(sys.maxunicode + 1) if not 0xD800 <= c <= 0xDFFF]
+    assert len(theirs) == len(points) == 1_112_064
+    differ = [hex(c) for c, js in zip(points, theirs) if fold(chr(c)) != js]
+    assert differ == []
 
 
 @pytest.mark.skipif(shutil.which("node") is None, reason="needs Node")
 def test_javascript_computes_the_same_variants(tmp_path):
+    _table()
     cases = inputs()
     script = tmp_path / "run.mjs"
     script.write_text(

@@ -18,6 +18,7 @@ pytestmark = pytest.mark.skipif(shutil.which("node") is None, reason="needs Node
 SCRIPT = """
 import { countSlip, mergeSlips, mergeAssigned, addAttempt, isSlips, isAssigned, MAX_SLIPS, MAX_ATTEMPTS } from "%(a)s";
 import { mergeRecord, parseImport, SCHEMA_VERSION, canonical } from "%(p)s";
+import { LIMIT } from "%(c)s";
 const out = {};
 let s = {};
 for (let i = 0; i < 40; i++) s = countSlip(s, `slip: ${i %% 30}`);
@@ -46,6 +47,17 @@ out.bad = [
   { assigned: { ROB: { variant: 1e7, attempts: [] } } },
   { assigned: { ROB: { variant: 5, attempts: [{ answer: "1", status: "maybe", at: 1 }] } } },
 ].map((r) => parseImport(file(r), new Set(["0.1"])).ok);
+// One schema: an attempt carries what a request may (contract.json limits: given 8, steps 12), no more.
+const given = (n) => Object.fromEntries(Array.from({ length: n }, (_, i) => [`0.${i + 1}`, { answer: "1", variant: 0 }]));
+const steps = (n) => Object.fromEntries(Array.from({ length: n }, (_, i) => [`s${i}`, "1"]));
+const one = (extra) => isAssigned({ ROB: { variant: 5, attempts: [{ answer: "1", status: "incorrect", at: 1, ...extra }] } });
+out.limits = { given: LIMIT.given, steps: LIMIT.steps };
+out.given = [5, 8, 9].map((n) => one({ given: given(n) }));
+out.steps = [12, 13].map((n) => one({ steps: steps(n) }));
+out.run = [isAssigned({ ROB: { variant: 0, attempts: [{ code: "x = 1", status: "correct", at: 1 }] } }),
+  isAssigned({ ROB: { variant: 0, attempts: [{ status: "incorrect", at: 1 }] } }),
+  one({ code: "x = 1" }), isAssigned({ ROB: { variant: 0, attempts: [{ code: "x".repeat(LIMIT.code + 1), status: "correct", at: 1 }] } })];
+out.lastInImport = parseImport(file({ last: [["1", "2"], ["3", "4"]], assigned: { ROB: { variant: 5, attempts: [{ answer: "1", status: "incorrect", at: 1, given: given(8) }] } } }), new Set(["0.1"])).ok;
 out.v4 = parseImport(JSON.stringify({ format: "robotics-math-workbook-progress", version: 4, exercises: { "0.1": { solved: true } } }), new Set(["0.1"])).ok;
 process.stdout.write(JSON.stringify(out));
 """
@@ -53,7 +65,8 @@ process.stdout.write(JSON.stringify(out));
 
 def test_slips_and_assigned_merge_and_check(tmp_path):
     script = tmp_path / "run.mjs"
-    script.write_text(SCRIPT % {"a": (JS / "assignment-schema.js").as_uri(), "p": (JS / "progress-schema.js").as_uri()})
+    script.write_text(SCRIPT % {"a": (JS / "assignment-schema.js").as_uri(), "p": (JS / "progress-schema.js").as_uri(),
+                                "c": (JS / "contract.js").as_uri()})
     out = json.loads(subprocess.run(["node", str(script)], capture_output=True, text=True, check=True).stdout)
     assert out["bounded"] and out["newKept"] and out["slipsOrderFree"] and out["assignedOrderFree"] and out["attemptsBounded"]
     assert out["mergeSlips"] == {"sign": 3, "transpose": 2, "slip: x": 1}
@@ -62,3 +75,10 @@ def test_slips_and_assigned_merge_and_check(tmp_path):
     assert [q["at"] for q in out["record"]["assigned"]["ROB"]["attempts"]] == [1, 2, 3]
     assert out["version"] == 5 and out["goodImport"] and out["v4"]
     assert out["bad"] == [False] * 6
+    # One schema with the grader's limits: an attempt with 5 to 8 earlier answers is kept (assignment-schema.js
+    # allowed 4, so such an attempt set aside every class's attempts on the next load), 9 are not.
+    assert out["limits"] == {"given": 8, "steps": 12}
+    assert out["given"] == [True, True, False] and out["steps"] == [True, False]
+    assert out["lastInImport"]
+    # A Build run's attempt holds the code it ran (or none, when too long), never both code and answer.
+    assert out["run"] == [True, True, False, False]

@@ -1,6 +1,7 @@
 """AUTHORING.md's "Adding a chapter" and "Adding a Build exercise", followed in a copy of the repository.
 
-Each test copies what the build reads (mkdocs.yml, docs/, the two packages, the page contract) into
+Each test copies what the build reads (mkdocs.yml, docs/, the two packages, the page contract, the
+licences and scripts/notices.py) into
 a temporary directory and applies every step of the recipe that has code, exactly as AUTHORING.md
 writes it: "Create `PATH`:", "In `PATH`, after the line starting `TEXT`, add:" and "At the end
 of `PATH`, add:", each followed by its code block. Then it builds: every registered part loads
@@ -87,6 +88,12 @@ def copy_repo(root: Path) -> None:
     shutil.copy2(ROOT / "CONTRACT.md", root / "CONTRACT.md")
     shutil.copytree(ROOT / "contract", root / "contract")  # its parts, one per audience
     shutil.copytree(ROOT / "docs", root / "docs", ignore=junk)
+    # The notices page's hook (docs/hooks/notices_page.py) runs scripts/notices.py over the licences
+    # and what the build used (node_modules: linked, not copied).
+    (root / "scripts").mkdir()
+    for name in ("scripts/notices.py", "LICENSE", "LICENSE-text.md"):
+        shutil.copy2(ROOT / name, root / name)
+    (root / "node_modules").symlink_to(ROOT / "node_modules", target_is_directory=True)
     for package in ("workbook", "workbook_sandbox"):
         shutil.copytree(ROOT / "pyodide_pkg" / package, root / "pyodide_pkg" / package, ignore=junk)
 

@@ -90,3 +90,19 @@ def test_the_kinds_each_op_applies_to_are_what_the_worker_answers(op):
             if reply["ok"] or reply["error"]["kind"] != "wrong-op":
                 applies.add(ex.kind)
     assert applies == said
+
+
+def test_the_course_pages_names_are_in_the_contract():
+    """Every course-page name CONTRACT.md promises as stable (data-wb-… attributes, actions, fields,
+    cell states, ids) is in contract.json's ``course``, which the page code reads, and each is explained."""
+    course = DATA["course"]
+    promised = set(re.findall(r"data-wb-[a-z-]+", CONTRACT_MD))
+    assert promised <= set(course["attributes"].values()), sorted(promised - set(course["attributes"].values()))
+    for value in course["attributes"].values():
+        assert value in CONTRACT_MD, f"CONTRACT.md does not explain {value}"
+    for section in ("actions", "fields", "cells"):
+        missing = [name for name in course[section] if f'"{name}"' not in CONTRACT_MD and f"`{name}`" not in CONTRACT_MD]
+        assert not missing, f"CONTRACT.md does not explain course {section} {missing}"
+    for name in course["ids"]:
+        assert f"#{name}" in CONTRACT_MD, f"CONTRACT.md does not explain #{name}"
+    assert all(type(DATA["limits"][k]) is int for k in ("classCode", "student", "slipName", "code"))

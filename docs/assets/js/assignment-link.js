@@ -4,10 +4,20 @@
 // number is kept on their device (studentKey), never in the link.
 
 import { tidy } from "./assignment-hash.js";
+import { LIMIT } from "./contract.js";
 
-export const CLASS_CAP = 200; // characters of a class code (assignment-schema.js CLASS_CAP)
-export const STUDENT_CAP = 100;
-const DATE = /^\d{4}-\d{2}-\d{2}$/;
+export const CLASS_CAP = LIMIT.classCode; // characters of a class code
+export const STUDENT_CAP = LIMIT.student; // characters of a name or student number
+const DATE = /^(\d{4})-(\d{2})-(\d{2})$/;
+
+/** Whether `text` is a day of the calendar written YYYY-MM-DD (2026-02-30 is not). */
+export function isDate(text) {
+  const m = DATE.exec(String(text));
+  if (!m) return false;
+  const [year, month, day] = m.slice(1).map(Number);
+  const date = new Date(Date.UTC(year, month - 1, day));
+  return date.getUTCFullYear() === year && date.getUTCMonth() === month - 1 && date.getUTCDate() === day;
+}
 
 /** The class code as records and hand-ins key it (the hash's tidying). */
 export const classKey = (code) => tidy(code);
@@ -36,8 +46,8 @@ export function readAssignment(hash, known) {
   if (!asked.length) return { ok: false, reason: "This link sets no exercises." };
   const ids = known.filter((id) => asked.includes(id));
   const due = params.get("due") || null;
-  if (due !== null && (!DATE.test(due) || Number.isNaN(Date.parse(`${due}T00:00:00Z`)))) {
-    return { ok: false, reason: `This link's due date “${due.slice(0, 20)}” is not a date (it reads like 2026-12-01).` };
+  if (due !== null && !isDate(due)) {
+    return { ok: false, reason: `This link's due date “${due.slice(0, 20)}” is not a day of the calendar (a date reads like 2026-12-01): ask your teacher for the link again.` };
   }
   return { ok: true, code, ids, due };
 }
@@ -51,6 +61,22 @@ export function savedStudent(siteRoot) {
     return value && tidy(value) ? tidy(value).slice(0, STUDENT_CAP) : null;
   } catch {
     return null;
+  }
+}
+
+/**
+ * True the first time it is asked in this browser (then never again): before records were kept
+ * per learner, the assignment page kept its answers in the browser's one record, for the
+ * student it last knew. That student takes them into their own record, once.
+ */
+export function adoptOnce(siteRoot) {
+  const key = studentKey(siteRoot).replace(/:student$/, ":records-per-learner");
+  try {
+    if (localStorage.getItem(key)) return false;
+    localStorage.setItem(key, "1");
+    return true;
+  } catch {
+    return false;
   }
 }
 

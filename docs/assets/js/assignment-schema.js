@@ -2,42 +2,35 @@
 //   slips     {NAME: count}: the named slips this learner's wrong answers hit (a verdict's
 //             data.slip), in any variant; two copies keep, per name, the larger count (a merge
 //             repeated or in another order gives the same), the MAX_SLIPS most frequent kept
-//   assigned  {CLASS: {variant, attempts: [{answer, status, tag, slip, at, steps, given}]}}:
+//   assigned  {CLASS: {variant, attempts: [{answer | code, status, tag, slip, at, steps, given}]}}:
 //             the graded answers to the assignment's own numbers, per class code (the hand-in
 //             carries them, the class page re-grades them); two copies keep every attempt of
 //             either (the newest MAX_ATTEMPTS), the variant of the copy answered last
-// Only data checks and merge rules: progress-schema.js lists them among its FIELDS.
+// Only data checks and merge rules: progress-schema.js lists them among its FIELDS; the
+// values an attempt carries are checked as every record's are (record-checks.js).
+
+import { LIMIT } from "./contract.js";
+import { FORBIDDEN_KEYS, isAnswer, isGiven, isObject, isShort, isStepAnswers, isVariant, keysOk } from "./record-checks.js";
 
 export const MAX_SLIPS = 24;
-export const SLIP_NAME_CAP = 80; // workbook/assignment.py NAME_CAP
+export const SLIP_NAME_CAP = LIMIT.slipName; // workbook/assignment.py NAME_CAP
 export const MAX_ATTEMPTS = 20;
 export const MAX_CLASSES = 8;
-export const CLASS_CAP = 200;
-const MAX_VARIANT = 999_999;
-const FORBIDDEN = new Set(["__proto__", "constructor", "prototype"]);
-const isObject = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
-const isText = (v, n) => typeof v === "string" && v.length <= n;
-const isVariant = (v) => Number.isSafeInteger(v) && v >= 0 && v <= MAX_VARIANT;
-const isCell = (v) => isText(v, 10_000) || Number.isFinite(v);
-const isGrid = (v) => Array.isArray(v) && v.length <= 12 && v.every((row) => Array.isArray(row) && row.length <= 12 && row.every(isCell));
-const isAnswer = (v) => isCell(v) || (Array.isArray(v) && v.length <= 50 && v.every((k) => isText(k, 200))) || isGrid(v);
-const keysOk = (v, max, key) => isObject(v) && Object.keys(v).length <= max && Object.keys(v).every((k) => !FORBIDDEN.has(k) && key(k));
-const STEP_NAME = /^[A-Za-z_][A-Za-z0-9_]{0,39}$/;
-const EXERCISE_ID = /^\d{1,2}\.\d{1,2}$/;
 const TIME_OK = (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + 86_400_000;
 
 export const isSlips = (v) => keysOk(v, MAX_SLIPS, (k) => k.length >= 1 && k.length <= SLIP_NAME_CAP)
   && Object.values(v).every((n) => Number.isSafeInteger(n) && n >= 1 && n <= 1_000_000);
 
-const ATTEMPT_KEYS = ["answer", "status", "tag", "slip", "at", "steps", "given"];
+// An attempt is a graded final answer (`answer`, with the `steps` and `given` its request
+// carried) or a graded Build run (`code`: the code that ran, when it fits LIMIT.code): attempt.js.
+const ATTEMPT_KEYS = ["answer", "code", "status", "tag", "slip", "at", "steps", "given"];
 export const isAttempt = (a) => isObject(a) && Object.keys(a).every((k) => ATTEMPT_KEYS.includes(k))
-  && isAnswer(a.answer) && ["correct", "incorrect"].includes(a.status) && TIME_OK(a.at)
-  && (a.tag === undefined || isText(a.tag, 40)) && (a.slip === undefined || isText(a.slip, SLIP_NAME_CAP))
-  && (a.steps === undefined || (keysOk(a.steps, 12, (k) => STEP_NAME.test(k)) && Object.values(a.steps).every(isAnswer)))
-  && (a.given === undefined || (keysOk(a.given, 4, (k) => EXERCISE_ID.test(k))
-    && Object.values(a.given).every((g) => keysOk(g, 2, (k) => k === "answer" || k === "variant") && isAnswer(g.answer) && isVariant(g.variant))));
+  && (a.answer === undefined ? a.code === undefined || isShort(a.code, LIMIT.code) : a.code === undefined && isAnswer(a.answer))
+  && ["correct", "incorrect"].includes(a.status) && TIME_OK(a.at)
+  && (a.tag === undefined || isShort(a.tag, 40)) && (a.slip === undefined || isShort(a.slip, SLIP_NAME_CAP))
+  && (a.steps === undefined || isStepAnswers(a.steps)) && (a.given === undefined || isGiven(a.given));
 
-export const isAssigned = (v) => keysOk(v, MAX_CLASSES, (k) => k.length >= 1 && k.length <= CLASS_CAP)
+export const isAssigned = (v) => keysOk(v, MAX_CLASSES, (k) => k.length >= 1 && k.length <= LIMIT.classCode)
   && Object.values(v).every((a) => keysOk(a, 2, (k) => k === "variant" || k === "attempts") && isVariant(a.variant)
     && Array.isArray(a.attempts) && a.attempts.length <= MAX_ATTEMPTS && a.attempts.every(isAttempt));
 
@@ -52,7 +45,7 @@ export function mergeSlips(a = {}, b = {}) {
 
 /** `slips` with one more hit of `name` (when full, the least frequent other name is dropped). */
 export function countSlip(slips = {}, name) {
-  if (typeof name !== "string" || !name || name.length > SLIP_NAME_CAP || FORBIDDEN.has(name)) return slips;
+  if (typeof name !== "string" || !name || name.length > SLIP_NAME_CAP || FORBIDDEN_KEYS.has(name)) return slips;
   const n = Math.min(1_000_000, (slips[name] ?? 0) + 1);
   const others = Object.entries(slips).filter(([k]) => k !== name).sort(byCount).slice(0, MAX_SLIPS - 1);
   return Object.fromEntries([...others, [name, n]].sort(byCount));

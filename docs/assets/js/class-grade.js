@@ -1,5 +1,5 @@
 // The class page's reading and re-grading (docs/class.md, class-page.js): a file is a
-// hand-in (assignment-page.js) or a progress export; every recorded answer to the
+// hand-in (hand-in.js) or a progress export; every recorded answer to the
 // assignment's numbers is graded again by the same grader, at the variant recomputed from
 // the class code and the student id (never the file's word for it). A claimed Build solve's
 // recorded code is run again as a chapter page runs it (sandbox-client.js: the grader's
@@ -9,10 +9,9 @@
 
 import { assignedVariant } from "./assignment-hash.js";
 import { ERROR } from "./contract.js";
-import { classKey } from "./assignment-link.js";
 import { isAssigned, isSlips } from "./assignment-schema.js";
-import { EXPORT_FORMAT, cleanRecord, parseImport } from "./progress-schema.js";
-import { HAND_IN_FORMAT, HAND_IN_VERSION } from "./assignment-page.js";
+import { EXPORT_FORMAT, parseImport } from "./progress-schema.js";
+import { HAND_IN_FORMAT, readHandIn } from "./hand-in.js";
 import { groupDigits } from "./number-text.js";
 
 export const MAX_FILE_BYTES = 4_000_000; // a hand-in holds a few exercises' records
@@ -38,24 +37,9 @@ export function readLearner(name, text, known) {
     return { kind: "progress", student: name.replace(/\.json$/i, ""), code: null, ids, due: null, records: parsed.exercises };
   }
   if (data.format !== HAND_IN_FORMAT) throw new FileProblem("is not a hand-in or a progress export (its “format” is missing or different)");
-  if (data.version !== HAND_IN_VERSION) throw new FileProblem(`is a hand-in of version ${String(data.version).slice(0, 10)}, which this page does not read`);
-  const a = data.assignment;
-  if (!isObject(a) || typeof a.class !== "string" || !classKey(a.class) || a.class.length > 200) throw new FileProblem("names no class code");
-  if (typeof data.student !== "string" || !data.student.trim() || data.student.length > 100) throw new FileProblem("names no student");
-  if (!Array.isArray(a.exercises) || !a.exercises.length || a.exercises.length > 200 || !a.exercises.every((id) => typeof id === "string" && known.has(id))) {
-    throw new FileProblem("sets exercises this workbook does not have");
-  }
-  if (!isObject(data.records)) throw new FileProblem("holds no records");
-  const records = {};
-  for (const [id, raw] of Object.entries(data.records)) {
-    if (!a.exercises.includes(id)) throw new FileProblem(`holds a record of exercise “${id.slice(0, 12)}”, which the assignment does not set`);
-    try {
-      records[id] = cleanRecord(id, raw);
-    } catch (err) {
-      throw new FileProblem(`holds a record that is not valid: ${err.message}`);
-    }
-  }
-  return { kind: "hand-in", student: data.student.trim(), code: classKey(a.class), ids: [...new Set(a.exercises)], due: typeof a.due === "string" ? a.due.slice(0, 10) : null, records };
+  const read = readHandIn(data, known); // hand-in.js: the format's one home
+  if (!read.ok) throw new FileProblem(read.reason);
+  return read.learner;
 }
 
 export function problemOf(err) {
@@ -106,7 +90,8 @@ export async function gradeLearner(learner, drawing, runtime, onRun = () => {}) 
       Object.assign(cell, { variant: v, claimed: has(r.done, v) || attempts.some((t) => t.status === "correct"),
         revealed: has(r.revealedIn, v), stepped: has(r.stepped, v), carried: has(r.carried, v), attempts: attempts.length });
       if (entry && entry.variant !== v) cell.note = `the file's answers are for numbers ${entry.variant}, not this student's ${v}`;
-      for (const attempt of attempts) {
+      const answers = attempts.filter((t) => t.answer !== undefined); // a Build run's attempt holds its code instead (attempt.js)
+      for (const attempt of answers) {
         const verdict = await grade(runtime, { exercise: id, variant: v, answer: attempt.answer,
           ...(attempt.steps ? { steps: attempt.steps } : {}), ...(attempt.given ? { given: attempt.given } : {}) });
         if (verdict.error) {
@@ -118,10 +103,11 @@ export async function gradeLearner(learner, drawing, runtime, onRun = () => {}) 
         const slip = verdict.status === "incorrect" ? verdict.data?.slip : null;
         if (slip) cell.slips[slip] = (cell.slips[slip] ?? 0) + 1;
       }
-      if (cell.claimed && !attempts.length && has(r.done, v)) {
-        if (typeof r.code === "string") {
+      if (cell.claimed && !answers.length && has(r.done, v)) {
+        const code = attempts.findLast((t) => t.status === "correct" && typeof t.code === "string")?.code ?? r.code; // the code that passed
+        if (typeof code === "string") {
           onRun(id, null);
-          await rerun(cell, runtime, id, v, r.code, (text) => onRun(id, text));
+          await rerun(cell, runtime, id, v, code, (text) => onRun(id, text));
         } else cell.note ||= "the file holds no answer or code to check";
       }
     } else {

@@ -22,6 +22,15 @@ export const REVIEW_KINDS = Object.freeze([...contract.reviewKinds]); // the kin
 /** Numbers the grader enforces too: the largest variant, steps and earlier answers a request carries, an entry's
  *  characters. */
 export const LIMIT = Object.freeze({ ...contract.limits });
+/** The course pages' stable names (CONTRACT.md, "Assignments and the class page"): attributes, actions, fields,
+ *  cell states, ids. */
+export const COURSE = Object.freeze({
+  attr: Object.freeze({ ...contract.course.attributes }),
+  action: names(contract.course.actions),
+  field: names(contract.course.fields),
+  cell: names(contract.course.cells),
+  id: names(contract.course.ids),
+});
 
 /** `[data-role="NAME"]`, optionally with more attribute tests. */
 export const byRole = (role, extra = "") => `[${ATTR.role}="${role}"]${extra}`;

@@ -4,32 +4,13 @@
 
 import { ATTR, REVIEW_KINDS, ROLE, STATE, ownQuery, ownRole } from "./contract.js";
 import { setPending, showMessage, showReply } from "./feedback.js";
-import { afterGrade, afterReveal } from "./review.js";
-import { countSlip } from "./assignment-schema.js";
+import { afterReveal } from "./review.js";
+import { recordGraded } from "./attempt.js";
 
 /** Text from base64 of its UTF-8 bytes (the derivation, the variant templates). */
 export function decodeBase64(text) {
   const bytes = Uint8Array.from(atob(text), (c) => c.charCodeAt(0));
   return new TextDecoder().decode(bytes);
-}
-
-// A graded attempt (not an invalid input or an error) counts; the first correct
-// one marks the exercise solved, noting whether the solution was revealed first.
-// What it means per variant, and for the review queue, is review.js's rule.
-function recordAttempt(ctx, reply, extra = {}) {
-  const { id, progress } = ctx;
-  const status = reply.ok ? reply.value.status : null;
-  if (status !== STATE.correct && status !== STATE.incorrect) return;
-  const before = progress.get(id);
-  const { variant } = ctx;
-  const patch = { ...extra, attempts: (before.attempts || 0) + 1, ...afterGrade(before, variant, status, { schedule: ctx.reviewed, tag: reply.value.tag, guessable: ctx.guessable }) };
-  const slip = reply.value.data?.slip; // a named slip (CONTRACT.md): counted for the class page
-  if (status === STATE.incorrect && slip) patch.slips = countSlip(before.slips, slip);
-  if (status === STATE.correct && !before.solved) {
-    patch.solved = true;
-    patch.solvedAfterReveal = Boolean(before.revealedIn?.includes(variant) ?? before.revealed);
-  }
-  progress.update(id, patch);
 }
 
 /**
@@ -47,7 +28,7 @@ async function submit(ctx, op, payload,
   const step = on !== ctx.el;
   if (step && variant !== ctx.variant) return null;
   showReply(on, reply);
-  if (!step) recordAttempt(ctx, reply, saved);
+  if (!step) recordGraded(ctx, { op, ...payload }, reply, saved); // a graded attempt counts (attempt.js)
   return reply;
 }
 

@@ -1,38 +1,16 @@
 // The Practise page: the review queue (review.js), one exercise at a time, each
-// with fresh numbers. The exercise itself is taken from its chapter page (the
-// service worker has it offline), so it is the very element the chapter shows,
-// graded and recorded the same way.
+// with fresh numbers. The exercise itself is taken from its chapter page
+// (exercise-card.js), graded and recorded the same way as there.
 
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
-import { renderMath } from "./math.js";
+import { showExerciseCard } from "./exercise-card.js";
 import { dueLine, el, listPage, reviewedIds } from "./progress-view.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
 
-const pages = new Map();
 // What is new about a review, by kind (a Debug program is the same: find its bug again).
-const FRESH = { derive: ", with new numbers.", build: ", with new hidden tests." }; // chapter address -> Promise<Document>
-
-function chapterPage(href) {
-  if (!pages.has(href)) {
-    const loading = fetch(href)
-      .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`the page answered ${r.status}`))))
-      .then((text) => new DOMParser().parseFromString(text, "text/html"));
-    loading.catch(() => pages.delete(href));
-    pages.set(href, loading);
-  }
-  return pages.get(href);
-}
-
-async function exerciseFrom(manifest, id, siteRoot) {
-  const chapter = manifest.chapters.find((c) => c.ids.includes(id));
-  const href = new URL(chapter.url, siteRoot).href;
-  const doc = await chapterPage(href);
-  const found = doc.querySelector(`[${ATTR.exercise}="${CSS.escape(id)}"]`);
-  if (!found) throw new Error(`exercise ${id} is not on its chapter page`);
-  return { node: document.importNode(found, true), chapter, href };
-}
+const FRESH = { derive: ", with new numbers.", build: ", with new hidden tests." };
 
 /** The next exercise to serve: the longest overdue, else (`anyway`) the next to fall due or any. */
 function pick(manifest, progress, skip, anyway) {
@@ -72,12 +50,7 @@ export async function initPractise(shared, siteRoot) {
     }
     card.replaceChildren(el("p", { className: "wb-practise-loading", textContent: `Loading exercise ${id}…` }));
     try {
-      const { node, chapter, href } = await exerciseFrom(manifest, id, siteRoot);
-      const heading = el("h2", { id: `${node.id}-title` }, el("span", { id: `${node.id}-name`, textContent: `${id} · ${manifest.titles?.[id] ?? ""}` }));
-      const from = el("p", { className: "wb-practise-from" }, "From ",
-        el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }), FRESH[node.getAttribute(ATTR.kind)] ?? ".");
-      card.replaceChildren(heading, from, node);
-      renderMath(node); // the chapter page's formulas arrive as TeX: typeset them as the page does its own
+      const node = await showExerciseCard(card, manifest, id, siteRoot, { from: (n) => FRESH[n.getAttribute(ATTR.kind)] ?? "." });
       initExercise(node, { ...shared, start: freshVariant() });
     } catch (err) {
       card.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Try the next one, or reload when you are online.` }));

@@ -18,6 +18,7 @@ import { LIMIT } from "./contract.js";
 import { KEEP, TOP_BOX, migrateRecord } from "./review.js";
 import { isAssigned, isSlips, mergeAssigned, mergeSlips } from "./assignment-schema.js";
 import { groupDigits } from "./number-text.js";
+import { FORBIDDEN_KEYS, STEP_NAME, isAnswer, isKeyList, isObject, isShort, isVariant } from "./record-checks.js";
 
 export const SCHEMA_VERSION = 5;
 export const EXPORT_FORMAT = "robotics-math-workbook-progress";
@@ -29,16 +30,9 @@ const DAY_MS = 86_400_000;
 const MAX_VARIANT = LIMIT.variant;
 const isBool = (v) => typeof v === "boolean";
 const isText = (v) => typeof v === "string";
-const isKeyList = (v) => Array.isArray(v) && v.length <= 50 && v.every((k) => isText(k) && k.length <= 200);
-// A vector or matrix answer is saved as its grid of entry texts, row by row.
-const isGrid = (v) => Array.isArray(v) && v.length >= 1 && v.length <= 12 && v.every((row) => Array.isArray(row) && row.length <= 12 && row.every(isText));
-const isVariant = (v) => Number.isSafeInteger(v) && v >= 0 && v <= MAX_VARIANT;
 const isVariantList = (v) => Array.isArray(v) && v.length <= KEEP && v.every(isVariant);
 const notFuture = (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_MS;
-const STEP_NAME = /^[A-Za-z_][A-Za-z0-9_]{0,39}$/;
 const STATUSES = ["correct", "incorrect", "invalid"];
-const isAnswer = (v) => isText(v) || Number.isFinite(v) || isKeyList(v) || isGrid(v);
-const isShort = (v, n) => isText(v) && v.length <= n;
 // A carried step's link: back to the learner's own earlier step, or to an earlier exercise.
 const isCarriedLink = (v) => isObject(v) && Object.keys(v).every((k) => ["step", "from", "variant", "link"].includes(k))
   && isShort(v.link, 200) && (v.step === undefined || STEP_NAME.test(v.step)) && (v.from === undefined || isShort(v.from, 20))
@@ -61,7 +55,7 @@ export const FIELDS = {
   hinted: { check: isBool, says: "true or false", merge: "any" },
   attempts: { check: (v) => Number.isSafeInteger(v) && v >= 0, says: "a whole number, 0 or more", merge: "max" },
   // null: cleared on purpose (new numbers drawn), which a stale copy must not undo.
-  last: { check: (v) => v === null || isText(v) || Number.isFinite(v) || isKeyList(v) || isGrid(v),
+  last: { check: (v) => v === null || isAnswer(v),
     says: "an answer (text, number, list of step keys or grid of entries)", merge: "latest" },
   draftOrder: { check: isKeyList, says: "a list of step keys", merge: "latest" },
   code: { check: isText, says: "text", merge: "latest" },
@@ -84,8 +78,7 @@ export const FIELDS = {
   reviewed: { check: notFuture, says: TIME, merge: "review" },
 };
 
-const FORBIDDEN_KEYS = new Set(["__proto__", "constructor", "prototype"]);
-export const isObject = (v) => v !== null && typeof v === "object" && !Array.isArray(v);
+export { isObject };
 
 export class ImportError extends Error {}
 

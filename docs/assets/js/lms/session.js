@@ -19,6 +19,7 @@
 
 import { ATTR, LMS, STATE, setRootState } from "../contract.js";
 import { clearNotice, exportProgress, showNotice } from "../notice.js";
+import { onAttempt } from "../attempt.js";
 import { chapterValues, interactionValues, objectiveValues } from "./report.js";
 import { decodeSuspend, encodeSuspend } from "./suspend.js";
 import { VERSIONS } from "./versions.js";
@@ -47,6 +48,7 @@ class Session {
     this.state = null;
     // id -> {attempts, steps, since}: what the last change showed, and when the exercise was last checked
     this.seen = new Map();
+    this.graded = new Map(); // id -> the exercise's last graded attempt (attempt.js)
     this.resendAll = true;
     this.calls = { commits: 0 };
     this.resumed = { entry: "", records: 0, skipped: 0 };
@@ -77,6 +79,8 @@ class Session {
     this.setState(LMS.open);
     const onPage = [...document.querySelectorAll(`[${ATTR.exercise}]`)].map((el) => el.getAttribute(ATTR.exercise));
     for (const id of new Set([...this.ids, ...onPage])) this.seen.set(id, { ...this.look(id), since: this.started });
+    // A check's result is the graded attempt's (attempt.js), heard before the record changes.
+    onAttempt(({ id, progress, attempt }) => { if (progress === this.progress) this.graded.set(id, attempt); });
     this.progress.onChange((id) => this.changed(id));
     const detach = this.launch.attach(() => this.last());
     window.addEventListener("pagehide", () => {
@@ -112,8 +116,7 @@ class Session {
     const at = Date.now();
     let check = null;
     if (checked) {
-      const el = document.querySelector(`[${ATTR.exercise}="${CSS.escape(id)}"]`);
-      check = { correct: el?.getAttribute(ATTR.state) === STATE.correct, latencyMs: at - before.since, at };
+      check = { correct: this.graded.get(id)?.status === STATE.correct, latencyMs: at - before.since, at };
     }
     this.seen.set(id, { ...now, since: checked ? at : before.since });
     this.sync(id, check);
