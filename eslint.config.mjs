@@ -37,7 +37,9 @@ export default [
     files: [SERVICE_WORKER],
     languageOptions: {
       sourceType: "script",
-      globals: { ...globals.serviceworker, __WB_VERSION__: "readonly", __WB_FILES__: "readonly" },
+      globals: {
+        ...globals.serviceworker, __WB_VERSION__: "readonly", __WB_FILES__: "readonly", __WB_WIRE_BYTES__: "readonly",
+      },
     },
   },
   { files: WITHIN_120, rules: { "max-len": ["error", { code: 120, ignoreUrls: true }] } },

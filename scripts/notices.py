@@ -230,7 +230,8 @@ def components() -> list[Component]:
 # ---- The workbook's own files --------------------------------------------------------------
 GENERATED = ("sitemap.xml", "sitemap.xml.gz", "sw.js", "search/search_index.json", "assets/exercises.json",
              "404.html", "notices/index.html", "assets/vendor/pyodide/robotics_workbook-*.whl",
-             "assets/dist/*", "assets/dist/chunks/*")
+             "assets/dist/*", "assets/dist/chunks/*",
+             "manifest.webmanifest", "assets/icons/*")  # the app (docs/hooks/app.py: icons drawn in code)
 # Built by the workbook's scripts from the runtime's files (the notices of those are above): the
 # standard library split and compiled, the snapshots, the lock rewritten; the sandbox's zip also
 # holds the workbook's own sandbox package.

@@ -10,7 +10,10 @@ and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
   service worker stores inflated, adds the sha256 and size of its inflated bytes.
   The service worker serves a stored file only while it still has these bytes;
 * ``VERSION``: a hash over the template and every file, so any change to the
-  site gives a new version (and a new cache).
+  site gives a new version (and a new cache);
+* ``WIRE_BYTES``: what the whole copy downloads, each file gzipped as GitHub
+  Pages sends it (text types and wasm, level 6; archives as they are), for the
+  notice that announces the copy (the stored size counts the snapshot inflated).
 
 Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
 and so are the search's word splitters and stemmers for other languages when the
@@ -31,6 +34,7 @@ import gzip
 import hashlib
 import json
 import logging
+import mimetypes
 from pathlib import Path
 
 log = logging.getLogger("mkdocs.hooks.offline")
@@ -41,6 +45,10 @@ SKIP_SUFFIXES = (".map",)
 SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml", "assets/vendor/pyodide/python_stdlib.core.compiled.zip"}
 INFLATED = ".snapshot.gz"  # stored inflated by the service worker
 LUNR_LANGUAGES = "assets/javascripts/lunr/"
+# What GitHub Pages gzips on the way (by type), and what it never does (archives, images, fonts).
+GZIP_TYPES = ("text/", "application/javascript", "application/json", "application/xml", "image/svg+xml",
+              "application/wasm", "application/manifest+json")
+NO_GZIP_SUFFIXES = (".gz", ".whl", ".zip", ".png", ".jpg", ".jpeg", ".woff", ".woff2", ".ico")
 _serving = False
 
 UNREGISTER = """// mkdocs serve: no offline cache while authoring; remove any earlier worker and its caches.
@@ -69,9 +77,24 @@ def integrity(data: bytes) -> str:
     return "sha256-" + base64.b64encode(hashlib.sha256(data).digest()).decode("ascii")
 
 
-def precache_list(site: Path, english_only: bool = True) -> list[list]:
+def wire_size(name: str, data: bytes) -> int:
+    """The bytes of one file on the wire: gzipped (level 6) if the host compresses its type.
+
+    >>> wire_size("a.js", b"x" * 1000) < 100, wire_size("a.whl", b"x" * 1000)
+    (True, 1000)
+    """
+    if name.lower().endswith(NO_GZIP_SUFFIXES):
+        return len(data)
+    ctype = mimetypes.guess_type(name)[0] or ("application/wasm" if name.endswith(".wasm") else "")
+    if not ctype.startswith(GZIP_TYPES):
+        return len(data)
+    return min(len(data), len(gzip.compress(data, compresslevel=6, mtime=0)))
+
+
+def precache_list(site: Path, english_only: bool = True, wire: list[int] | None = None) -> list[list]:
     """The manifest: [url, integrity, size] for every file the site serves at runtime, sorted;
-    the snapshot adds [integrity, size] of its inflated bytes."""
+    the snapshot adds [integrity, size] of its inflated bytes. ``wire``, if given, gets each
+    file's size on the wire (:func:`wire_size`), in the same order."""
     out = []
     for path in sorted(site.rglob("*")):
         rel = path.relative_to(site).as_posix()
@@ -88,6 +111,8 @@ def precache_list(site: Path, english_only: bool = True) -> list[list]:
             inflated = gzip.decompress(data)
             entry += [integrity(inflated), len(inflated)]
         out.append(entry)
+        if wire is not None:
+            wire.append(wire_size(rel, data))
     return out
 
 
@@ -97,13 +122,16 @@ def on_post_build(config, **kwargs):
         (site / OUTPUT).write_text(UNREGISTER)
         return
     template = (Path(config.docs_dir) / TEMPLATE).read_text()
-    files = precache_list(site, _english_only(config))
+    wire: list[int] = []
+    files = precache_list(site, _english_only(config), wire)
     h = hashlib.sha256(template.encode())
     for url, digest, *_ in files:
         h.update(f"\n{url} {digest}".encode())
     version = h.hexdigest()[:16]
     listing = "[\n" + ",\n".join(json.dumps(entry) for entry in files) + "\n]"
     text = template.replace("__WB_VERSION__", json.dumps(version)).replace("__WB_FILES__", listing)
+    text = text.replace("__WB_WIRE_BYTES__", str(sum(wire)))
     (site / OUTPUT).write_text(text)
     total = sum(entry[-1] for entry in files)
-    log.info("offline: sw.js version %s: a manifest of %d files, %d bytes stored", version, len(files), total)
+    log.info("offline: sw.js version %s: a manifest of %d files, %d bytes stored, %d on the wire", version,
+             len(files), total, sum(wire))

@@ -65,10 +65,11 @@ def figure_html(name: str) -> str:
         for r in fig.readouts
     )
     controls = "".join(_control(fig, c) for c in fig.controls)
+    orbit = f' {ATTR.orbit}="{fig.orbit}"' if fig.orbit else ""
     return (
         f'<figure class="wb-figure" {role_attr(ROLE.figure)} {ATTR.figure}="{fig.name}" id="{base}" '
         f'{ATTR.flags}="{" ".join(frame["flags"])}" aria-labelledby="{base}-caption">'
-        f'<div class="wb-fig-canvas" {role_attr(ROLE.figure_canvas)}>{frame["svg"]}</div>'
+        f'<div class="wb-fig-canvas" {role_attr(ROLE.figure_canvas)}{orbit}>{frame["svg"]}</div>'
         f'<div class="wb-fig-panel"><div class="wb-fig-controls">{controls}</div>'
         f'<dl class="wb-fig-readouts">{readouts}</dl></div>'
         f'<p class="wb-fig-status" {role_attr(ROLE.figure_status)} role="status"></p>'

@@ -86,14 +86,24 @@ class FigureView {
 
   // Dragging a handle (data-drag-x / data-drag-y): the SVG's own transform maps
   // the pointer into the figure's coordinates; the sliders then clamp and snap it.
+  // Elsewhere on a figure with an orbit (data-orbit names a slider), a sideways drag turns
+  // that slider: the picture's width is one full turn, grabbed like the scene itself.
   startDrag(event) {
     const handle = event.target.closest?.("[data-drag-x]");
-    if (!handle) return;
+    const orbit = this.canvas.getAttribute(ATTR.orbit);
+    if (!handle && !orbit) return;
+    if (event.button > 0) return; // the main button, a touch or a pen only
     event.preventDefault();
     const pointerId = event.pointerId;
-    this.canvas.setPointerCapture?.(pointerId);
+    try {
+      this.canvas.setPointerCapture(pointerId);
+    } catch {
+      /* not an active pointer (a synthetic event): the moves still come to the canvas */
+    }
+    const from = { x: event.clientX, value: Number(this.slider(orbit)?.value) };
     const move = (e) => {
       if (e.pointerId !== pointerId) return;
+      if (!handle) return this.turn(orbit, from, e.clientX);
       const frame = this.canvas.querySelector("[data-drag-x]")?.parentNode;
       const ctm = frame?.getScreenCTM();
       if (!ctm) return;
@@ -113,8 +123,22 @@ class FigureView {
     move(event);
   }
 
+  slider(param) {
+    return this.controls.find((c) => c.getAttribute(ATTR.param) === param && c.type === "range");
+  }
+
+  turn(param, from, x) {
+    const input = this.slider(param);
+    const width = this.canvas.getBoundingClientRect().width;
+    if (!input || !width) return;
+    const [min, max] = [Number(input.min), Number(input.max)];
+    let value = from.value - ((x - from.x) / width) * 360;
+    if (max - min === 360) value = ((((value - min) % 360) + 360) % 360) + min; // round and round
+    this.setSlider(param, value);
+  }
+
   setSlider(param, value) {
-    const input = this.controls.find((c) => c.getAttribute(ATTR.param) === param && c.type === "range");
+    const input = this.slider(param);
     if (!input) return;
     const before = input.value;
     input.value = String(value); // the browser clamps to [min, max] and snaps to the step

@@ -22,6 +22,7 @@ import { findApi, findLaunch } from "./lms/api.js";
 import { learnerProgress } from "./lms/learner.js";
 import { renderMath } from "./math.js";
 import { initSearchStart } from "./search-start.js";
+import { initApp } from "./app.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 // In an LMS (the SCORM package, lms/): the page keeps the record of the learner the LMS names
@@ -32,6 +33,8 @@ const launch = findLaunch(window);
 const inLms = Boolean(launch || findApi(window));
 const progress = inLms ? learnerProgress(siteRoot, launch) : new Progress(siteRoot);
 const lmsSession = inLms ? import("./lms/session.js").then((m) => m.connectLms(progress, launch)) : null;
+// The installed app's start URL goes on to the last page read (never in an LMS: it opens its own pages).
+if (!inLms) initApp(siteRoot);
 
 const exercises = () => document.querySelectorAll(`[${ATTR.exercise}]`);
 
@@ -67,6 +70,10 @@ initLoading();
 initSearchStart();
 initScrollRegions();
 initJumps();
+// A touch screen gets the symbols row above its keyboard (keypad.js, loaded there only).
+if (window.matchMedia?.("(pointer: coarse)").matches || navigator.maxTouchPoints > 0) {
+  import("./keypad.js").then((m) => m.initKeypad());
+}
 
 const NO_WORKER = "This browser cannot run the Python grader (no Web Worker support).";
 const shared = {

@@ -41,21 +41,31 @@ function progressBar(role, done, total, label) {
 }
 
 // ---- The notice: announced before the copy starts, and declinable ---------------------
+/** How big the copy is: its download (gzip, as the host sends it) and, when larger, what it
+ * takes once stored (the memory snapshot is stored inflated). */
+export function sizeText({ wireBytes, totalBytes }) {
+  if (!wireBytes) return formatSize(totalBytes);
+  const wire = formatSize(wireBytes);
+  const stored = formatSize(totalBytes);
+  return stored === wire ? `a ${wire} download` : `a ${wire} download (${stored} once stored)`;
+}
+
 /**
- * `view`: {mode: "announce" | "ask", totalBytes}. "announce": the copy starts by
+ * `view`: {mode: "announce" | "ask", totalBytes, wireBytes}. "announce": the copy starts by
  * itself in a moment; "ask": it waits for the learner (a metered connection).
  */
 export function showNotice(view, { onStore, onDecline, onOK = () => {} }) {
   hideNotice();
-  const size = formatSize(view.totalBytes);
+  const size = sizeText(view);
+  const short = formatSize(view.wireBytes || view.totalBytes);
   const box = element("div", { role: ROLE.offlineNotice, className: "wb-update wb-offline-notice" });
   box.setAttribute("role", "region");
   box.setAttribute("aria-label", "Offline copy");
   const text = element("p");
   if (view.mode === "ask") {
     const why = view.metered === false ? "on a phone that may be on mobile data" : "and your connection looks metered";
-    text.textContent = `Store the workbook in this browser for offline use? It takes ${size}, ${why}, so it waits for your word.`;
-    box.append(text, button(`Store (${size})`, ROLE.offlineStore, true, onStore), button("Not now", ROLE.offlineDecline, false, onDecline));
+    text.textContent = `Store the workbook in this browser for offline use? It is ${size}, ${why}, so it waits for your word.`;
+    box.append(text, button(`Store (${short})`, ROLE.offlineStore, true, onStore), button("Not now", ROLE.offlineDecline, false, onDecline));
   } else {
     text.textContent = `The workbook will store itself in this browser for offline use: ${size}, starting in a few seconds (or at OK).`;
     const ok = () => {
@@ -76,7 +86,7 @@ export function hideNotice() {
 let footerView = null;
 let footerActions = {};
 
-/** `view`: {state: "copying"|"complete"|"declined"|"failed"|"partial", bytes, totalBytes, persisted, message}. */
+/** `view`: {state: "copying"|"complete"|"declined"|"failed"|"partial", bytes, totalBytes, wireBytes, persisted, message}. */
 export function setFooter(view, actions = footerActions) {
   footerView = view;
   footerActions = actions;
@@ -105,7 +115,8 @@ export function drawFooter() {
   } else {
     const why = view.state === "failed" ? `Not stored for offline use (${view.message}). ` : "Not stored for offline use. ";
     line.append(why);
-    if (footerActions.onStore) line.append(button(`Store it (${total})`, ROLE.offlineStore, false, footerActions.onStore));
+    const download = formatSize(view.wireBytes || view.totalBytes || 0);
+    if (footerActions.onStore) line.append(button(`Store it (${download})`, ROLE.offlineStore, false, footerActions.onStore));
   }
   footer.append(line);
 }

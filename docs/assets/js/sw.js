@@ -32,6 +32,7 @@
 
 const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
+const WIRE_BYTES = __WB_WIRE_BYTES__; // the whole copy's download, gzip as the host sends it (offline.py)
 
 // The global scope, as what it is: a service worker's (the type checker's lib names it a worker's).
 const sw = /** @type {ServiceWorkerGlobalScope} */ (/** @type {unknown} */ (self));
@@ -101,7 +102,7 @@ async function unseal() {
   await (await caches.open(CACHE)).delete(SEAL);
 }
 
-/** {state, files, total, bytes, totalBytes}: what this browser holds of this version. */
+/** {state, files, total, bytes, totalBytes, wireBytes}: what this browser holds of this version. */
 async function status() {
   const complete = await sealed();
   let files = 0;
@@ -116,7 +117,7 @@ async function status() {
   const state = complete ? "complete" : copying ? "copying" : "partial";
   return {
     type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes,
-    totalBytes: TOTAL_BYTES,
+    totalBytes: TOTAL_BYTES, wireBytes: WIRE_BYTES,
   };
 }
 

@@ -57,12 +57,19 @@ class Readout:
 
 @dataclass(frozen=True)
 class Figure:
+    """``orbit`` names the slider a sideways drag across the picture turns (a 3-D view's azimuth)."""
+
     name: str
     title: str
     caption: str
     controls: tuple[Control, ...]
     readouts: tuple[Readout, ...]
     draw: Callable[[dict[str, float]], dict[str, Any]] = field(repr=False)
+    orbit: str = ""
+
+    def __post_init__(self) -> None:
+        if self.orbit and not any(c.name == self.orbit and c.kind == "range" for c in self.controls):
+            raise ValueError(f"figure {self.name!r}: its orbit {self.orbit!r} is none of its sliders")
 
     def defaults(self) -> dict[str, float]:
         return {c.name: c.default for c in self.controls}

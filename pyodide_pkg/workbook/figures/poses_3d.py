@@ -95,7 +95,8 @@ FIGURE = Figure(
     title="A chain of frames in space",
     caption="World, base and camera frames (x red, y green, z blue; the world's axes thin). The dashed lines "
             "follow the chain world → base → cam, and the thin blue dashes show where the camera looks (its x). "
-            "Turn the view to see the frames from another side; the readouts are T_world_cam = "
+            "Turn the view (its slider, or drag across the picture) to see the frames from another side; "
+            "the readouts are T_world_cam = "
             "T_world_base · T_base_cam and its quaternion, scalar first and scalar last.",
     controls=(
         Control("yaw", "Base yaw (about world z)", -180, 180, 5, 30, "°"),
@@ -109,4 +110,5 @@ FIGURE = Figure(
         Readout("xyzw", "the same as ROS and SciPy store it (x, y, z, w)"),
     ),
     draw=draw,
+    orbit="view",
 )

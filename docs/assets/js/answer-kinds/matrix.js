@@ -1,5 +1,7 @@
 // A vector or matrix answer: a grid of entries. Arrow keys move between entries
-// (left and right once the caret is at the edge), Tab goes in reading order, and a
+// (left and right once the caret is at the edge), Tab goes in reading order, so does
+// Enter (a phone keyboard's "next") up to the last entry, where it checks (and in an entry
+// holding a whole matrix typed, the others empty: it is read so at Check); and a
 // whole matrix pasted into any entry is split by the grader and fills the grid; one
 // value pasted (even a long expression) stays in the entry it was pasted into. A whole
 // matrix typed into one entry, the others empty, is split the same way once the entry
@@ -18,10 +20,19 @@ export function init(ctx) {
       if (input) input.value = text;
     }));
   };
+  // A whole matrix typed into one entry, the others empty: read as a paste (on leaving it, or at Check).
+  const wholeIn = (input) => entries.length >= 2 && /[\s,;[\]]/.test(input.value.trim()) && entries.every((e) => e === input || !e.value.trim());
   for (const input of entries) {
     const r = Number(input.getAttribute(ATTR.row));
     const c = Number(input.getAttribute(ATTR.col));
     input.addEventListener("keydown", (event) => {
+      const next = c < cols ? at(r, c + 1) : at(r + 1, 1);
+      if (event.key === "Enter" && !event.shiftKey && !event.isComposing && next && !wholeIn(input)) {
+        event.preventDefault(); // the last entry's Enter (or a whole matrix's) submits: Check
+        next.focus();
+        next.select();
+        return;
+      }
       const atStart = input.selectionStart === 0 && input.selectionEnd === 0;
       const atEnd = input.selectionStart === input.value.length;
       const moves = { ArrowUp: [r - 1, c], ArrowDown: [r + 1, c], ArrowLeft: atStart ? [r, c - 1] : null, ArrowRight: atEnd ? [r, c + 1] : null };
@@ -34,7 +45,7 @@ export function init(ctx) {
     input.addEventListener("change", async () => {
       // A whole matrix typed (not pasted) into one entry, the others empty: split it as a paste.
       const text = input.value;
-      if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim()) || entries.some((e) => e !== input && e.value.trim())) return;
+      if (!wholeIn(input)) return;
       const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step, text });
       if (reply.ok && reply.value.entries && input.value === text) fill(reply.value.entries);
     });

@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING
 from ...contract import ATTR, ROLE, role_attr
 from ...expr import parse_formula
 from ...expr.latex_output import variable_latex
-from ...markup import check_button, form
+from ...markup import check_button, form, keypad
 
 if TYPE_CHECKING:
     from . import FormulaAnswer
@@ -53,7 +53,8 @@ def widget(ans: FormulaAnswer, base: str) -> str:
     return form("derive", (
         f'<label class="wb-label" for="{base}-answer">{label_html(ans)}</label>'
         f'<span class="wb-answer-row"><input id="{base}-answer" class="wb-answer wb-formula" '
-        f'{role_attr(ROLE.answer)} type="text" inputmode="text" autocomplete="off" autocapitalize="off" '
+        f'{role_attr(ROLE.answer)} type="text" inputmode="text" enterkeyhint="go" {keypad(ans.variables)} '
+        f'autocomplete="off" autocapitalize="off" '
         f'spellcheck="false" placeholder="{escape(placeholder(ans))}" aria-describedby="{base}-reading '
         f'{base}-feedback">'
         f"{check_button()}</span>"

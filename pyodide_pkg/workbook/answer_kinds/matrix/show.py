@@ -6,7 +6,7 @@ from html import escape
 from typing import TYPE_CHECKING
 
 from ...contract import ATTR, ROLE, role_attr
-from ...markup import check_button, form
+from ...markup import check_button, form, keypad
 from ...number_format import fmt
 from ...tolerance import clean
 
@@ -62,8 +62,10 @@ def _cell_name(ans: MatrixAnswer, i: int, j: int) -> str:
 
 def widget(ans: MatrixAnswer, base: str) -> str:
     r, c = ans.shape
+    keys = keypad(units=tuple(ans.units) or (ans.unit,))
     cells = "".join(
         f'<input {role_attr(ROLE.entry)} {ATTR.row}="{i}" {ATTR.col}="{j}" type="text" inputmode="text" '
+        f'enterkeyhint="{"go" if (i, j) == (r, c) else "next"}" {keys} '
         f'autocomplete="off" autocapitalize="off" spellcheck="false" aria-label="{escape(_cell_name(ans, i, j))}"'
         f'{f" id={chr(34)}{base}-answer{chr(34)}" if (i, j) == (1, 1) else ""}>'
         for i in range(1, r + 1) for j in range(1, c + 1)

@@ -6,7 +6,7 @@ from html import escape
 from typing import TYPE_CHECKING, Any
 
 from ...contract import ROLE, role_attr
-from ...markup import check_button, form
+from ...markup import check_button, form, keypad
 from ...number_format import fmt
 from ...tolerance import clean
 
@@ -42,12 +42,20 @@ def label_html(ans: NumberAnswer) -> str:
     return f"{escape(ans.label)}{named}"
 
 
+def input_mode(ans: NumberAnswer) -> str:
+    """The phone keyboard the box brings up: digits for a count (a whole number, nothing else fits),
+    else the letters (sqrt, pi, cos(30°) are answers too; the keypad row has the symbols)."""
+    return "numeric" if ans.exact and not ans.expect else "text"
+
+
 def widget(ans: NumberAnswer, base: str) -> str:
+    keys = keypad(units=(ans.unit,) if ans.expect else ())
     unit = f'<span class="wb-unit" aria-hidden="true">{escape(ans.unit)}</span>' if ans.unit else ""
     return form("derive", (
         f'<label class="wb-label" for="{base}-answer">{label_html(ans)}</label>'
         f'<span class="wb-answer-row"><input id="{base}-answer" class="wb-answer" {role_attr(ROLE.answer)} '
-        f'type="text" inputmode="text" autocomplete="off" autocapitalize="off" spellcheck="false" '
-        f'placeholder="e.g. 0.5, sqrt(2)/2, pi/4" aria-describedby="{base}-feedback">{unit}'
+        f'type="text" inputmode="{input_mode(ans)}" enterkeyhint="go" {keys} autocomplete="off" '
+        f'autocapitalize="off" spellcheck="false" placeholder="e.g. 0.5, sqrt(2)/2, pi/4" '
+        f'aria-describedby="{base}-feedback">{unit}'
         f"{check_button()}</span>"
     ))
