@@ -2,6 +2,7 @@
 #   make serve    build the site and serve it at http://127.0.0.1:8000
 #   make test     run the whole test suite (lint, then unit + browser)
 #   make lint     ruff and mypy over the Python, ESLint over the page's JavaScript (any finding fails)
+#   make typecheck  TypeScript's checker over the JavaScript's JSDoc types (checkJs; not yet in lint)
 #   make site     build the static site into site/
 #   make browser  find a Chromium for the tests, or install Debian's (says so first)
 #   make bench    measure start-up and grading speed (writes bench-results/)
@@ -40,7 +41,7 @@ OVERRIDES := $(shell find docs/overrides -type f)
 PAGES := $(shell find docs -type f -not -path 'docs/assets/vendor/*' -not -path 'docs/assets/dist/*' \
   -not -path 'docs/assets/js/*' -not -path 'docs/hooks/*' -not -path 'docs/overrides/*' -not -name '*.pyc')
 
-.PHONY: serve site lint test test-unit test-browser bench deps browser full-browser clean dev lock python312 scorm
+.PHONY: serve site lint typecheck test test-unit test-browser bench deps browser full-browser clean dev lock python312 scorm
 
 # ---- Python 3.12 -------------------------------------------------------------------
 # Where none is found, the first install says so and provides one with uv (`make python312`).
@@ -201,6 +202,13 @@ BROWSER := $(PYTEST) -n $(BROWSER_JOBS) --dist loadgroup tests/browser
 
 # Linter and type checker (ruff.toml, mypy.ini, eslint.config.mjs): fast, and first in `make test`.
 LINT_PY := pyodide_pkg docs/hooks scripts tests
+# TypeScript's checker over the JavaScript as it is (checkJs, JSDoc types; no build step, nothing emitted): the page's
+# modules, the workers (WebWorker lib) and the service worker, each with the globals its context has
+# (scripts/typecheck/). Not yet part of `lint`: some files still have findings.
+TYPECHECK := page workers sw
+typecheck: node_modules/.installed
+	@status=0; for c in $(TYPECHECK); do node_modules/.bin/tsc -p scripts/typecheck/$$c.json || status=1; done; exit $$status
+
 lint: $(BIN)/.test node_modules/.installed
 	$(BIN)/ruff check --quiet $(LINT_PY)
 	$(BIN)/mypy

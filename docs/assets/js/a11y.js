@@ -40,7 +40,7 @@ const onScroll = (event) => showCue(event.currentTarget);
 
 function scan() {
   for (const [selector, label] of BOXES) {
-    for (const box of document.querySelectorAll(selector)) {
+    for (const box of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll(selector))) {
       const mine = box.dataset.wbScrollable === "true";
       if (box.hidden || box.closest("[hidden]")) continue;
       if (scrolls(box)) {

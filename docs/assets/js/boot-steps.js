@@ -14,6 +14,6 @@ export const BOOT_STEP = Object.freeze({
   import: "import",
 });
 
-/** The order the steps come in (a later step never gives way to an earlier one). */
+/** The order the steps come in (a later step never gives way to an earlier one). @type {readonly string[]} */
 export const STEP_ORDER = Object.freeze([BOOT_STEP.download, BOOT_STEP.compile, BOOT_STEP.restore, BOOT_STEP.boot,
   BOOT_STEP.import]);

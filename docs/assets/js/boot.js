@@ -1,6 +1,7 @@
 // Starting Pyodide in a worker: the one place that knows how.
 //
-//   const { py, from, why, stages, step, module } = await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
+//   const { py, from, why, stages, step, module } =
+//     await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
 //
 // Both workers start here: the grader (worker.js: the core standard library and a
 // snapshot) and the sandbox for learners' code (sandbox.js: its own standard
@@ -48,7 +49,8 @@ export const mark = (name) => {
 /** `url`'s file name in the Pyodide folder `indexURL`, or null. */
 const fileIn = (indexURL, url) => (String(url).startsWith(indexURL) ? String(url).slice(indexURL.length) : null);
 
-/** Whether the service worker's stored copy holds `url` (its bytes are read through the service worker, which checks them). */
+/** Whether the service worker's stored copy holds `url` (its bytes are read through the service worker, which
+ *  checks them). */
 async function isStored(url) {
   try {
     return Boolean(await self.caches?.match(url));
@@ -62,6 +64,7 @@ function progressMeter(indexURL, files, onProgress) {
   const loaded = new Map(); // file name -> bytes so far
   const expected = new Map(files.map((name) => [name, SIZES[name] || 0]));
   let phase = "download";
+  /** @type {string} */
   let step = BOOT_STEP.download;
   let last = 0;
   const report = (force) => {
@@ -135,12 +138,15 @@ function progressMeter(indexURL, files, onProgress) {
 // enough to bring the snapshot in under BOOT_COST_MS (about 26 Mbps), it is fetched and used;
 // if not, Pyodide boots plainly and the service worker stores the snapshot
 // with the offline copy, for the next visit.
-const BOOT_COST_MS = 1500; // a plain start's extra time over a restore, with a margin that keeps a loaded machine on localhost on the snapshot
-const SNAPSHOT_BYTES = 4.9e6; // what the rule was tuned with (the file has since grown to 5.7 MB; the rule leans to the snapshot)
+// A plain start's extra time over a restore, with a margin that keeps a loaded machine on localhost on the snapshot.
+const BOOT_COST_MS = 1500;
+// What the rule was tuned with (the file has since grown to 5.7 MB; the rule leans to the snapshot).
+const SNAPSHOT_BYTES = 4.9e6;
 
 /** Bytes per ms the link brought pyodide.asm.js's body at (Resource Timing), or null. */
 function linkSpeed(indexURL) {
-  const entry = performance.getEntriesByName?.(indexURL + "pyodide.asm.js")?.[0];
+  const entry = /** @type {PerformanceResourceTiming | undefined} */ (
+    performance.getEntriesByName?.(indexURL + "pyodide.asm.js")?.[0]);
   const size = entry?.encodedBodySize;
   const ms = entry ? entry.responseEnd - entry.responseStart : 0;
   if (!(size > 100_000)) return null;
@@ -237,7 +243,8 @@ function checkSnapshot(bytes) {
 // sources' file), the sources. Pyodide asks for the zip as it starts but waits
 // for it only once Python starts, after the snapshot is decided: its request is
 // held until then (`choose`), or until the snapshot is found stored.
-const COMPILED_MIN_SPEED = 200; // bytes per ms of pyodide.asm.js's share of the link (335 at 10 Mbps; the break-even is near 6 Mbps)
+// Bytes per ms of pyodide.asm.js's share of the link (335 at 10 Mbps; the break-even is near 6 Mbps).
+const COMPILED_MIN_SPEED = 200;
 
 function coreChoice(sourceURL, compiledURL, meter) {
   let choose;
@@ -299,7 +306,9 @@ function patchWasm(url, meter, compiledStep, given, used, core) {
     return mine;
   };
   const stored = given ? Promise.resolve(true) : isStored(url);
-  const compiled = given ? Promise.resolve(given) : stored.then((hit) => (hit ? WebAssembly.compileStreaming(takeDownload()) : null));
+  const compiled = given
+    ? Promise.resolve(given)
+    : stored.then((hit) => (hit ? WebAssembly.compileStreaming(takeDownload()) : null));
   compiled.catch(() => {}); // handled below
   const standIn = new Response(null);
   const restore = () => {
@@ -339,7 +348,8 @@ function patchWasm(url, meter, compiledStep, given, used, core) {
 }
 
 // ---- The start ----------------------------------------------------------------------------
-export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = null, snapshotURL = null, onProgress = null,
+export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = null, snapshotURL = null,
+  onProgress = null,
   lockFileURL = null, quiet = false, linkSpeed: knownSpeed = null, module: given = null }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
   const lock = lockFileURL ? fileIn(indexURL, lockFileURL) : "pyodide-lock.json"; // the lock this start reads
@@ -348,7 +358,8 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
   const meter = progressMeter(indexURL, files, onProgress);
   meter.phase("download");
   const download = snapshotURL ? snapshotDownload(snapshotURL, indexURL, meter, knownSpeed) : null;
-  const snapshot = download ? readSnapshot(download) : null; // rejects without DecompressionStream where the file is still gzipped
+  // Rejects without DecompressionStream where the file is still gzipped.
+  const snapshot = download ? readSnapshot(download) : null;
   snapshot?.then(() => mark("snapshot"), () => {}); // handled below
   let skipped = !download;
   const used = { module: null };
@@ -360,7 +371,8 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
   mark("pyodide.js");
   // Pyodide reads this option after loading pyodide.asm.js: the moment to decide
   // (not enumerable, so that loadPyodide's copy of its options does not read it earlier).
-  const plain = { indexURL, stdLibURL, ...(lockFileURL && { lockFileURL }), ...(quiet && { stdout: () => {}, stderr: () => {} }) };
+  const plain = {
+    indexURL, stdLibURL, ...(lockFileURL && { lockFileURL }), ...(quiet && { stdout: () => {}, stderr: () => {} }) };
   const options = { ...plain };
   Object.defineProperty(options, "_loadSnapshot", {
     enumerable: false,

@@ -11,15 +11,17 @@ let media = null;
 
 /** Make the closed drawer inert, the open (or wide) menu not. */
 export function updateDrawer() {
-  const toggle = document.querySelector('input[data-md-toggle="drawer"]');
+  const toggle = /** @type {HTMLInputElement | null} */ (document.querySelector('input[data-md-toggle="drawer"]'));
   const closed = Boolean(media?.matches) && !toggle?.checked;
-  for (const el of document.querySelectorAll(".md-sidebar--primary")) el.inert = closed;
+  for (const el of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll(".md-sidebar--primary"))) {
+    el.inert = closed;
+  }
   searchStop();
 }
 
 /** The search's results box is a tab stop only while it holds results (hidden while closed: workbook.css). */
 function searchStop() {
-  const box = document.querySelector(".md-search__scrollwrap");
+  const box = /** @type {HTMLElement | null} */ (document.querySelector(".md-search__scrollwrap"));
   const list = box?.querySelector(".md-search-result__list");
   if (box) box.tabIndex = list?.children.length ? 0 : -1;
 }
@@ -30,7 +32,7 @@ export function initDrawer() {
   media.addEventListener("change", updateDrawer);
   // The drawer's checkbox changes by its labels (menu button, overlay) and, from other code, by click().
   document.addEventListener("change", (event) => {
-    if (event.target?.matches?.('input[data-md-toggle="drawer"]')) updateDrawer();
+    if (/** @type {Element | null} */ (event.target)?.matches?.('input[data-md-toggle="drawer"]')) updateDrawer();
   });
   const results = document.querySelector(".md-search-result__list");
   if (results) new MutationObserver(searchStop).observe(results, { childList: true });

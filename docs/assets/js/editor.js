@@ -15,6 +15,7 @@ import { Decoration, EditorView, keymap } from "@codemirror/view";
 import { tags as t } from "@lezer/highlight";
 import { basicSetup } from "codemirror";
 
+/** @type {import("@codemirror/state").StateEffectType<number | null>} */
 const setErrorLine = StateEffect.define();
 const errorLine = StateField.define({
   create: () => Decoration.none,
@@ -22,8 +23,9 @@ const errorLine = StateField.define({
     deco = deco.map(tr.changes);
     for (const effect of tr.effects) {
       if (effect.is(setErrorLine)) {
-        if (effect.value == null || effect.value > tr.state.doc.lines) return Decoration.none;
-        const line = tr.state.doc.line(effect.value);
+        const number = effect.value;
+        if (number == null || number > tr.state.doc.lines) return Decoration.none;
+        const line = tr.state.doc.line(number);
         deco = Decoration.set([Decoration.line({ class: "wb-error-line" }).range(line.from)]);
       }
     }
@@ -35,34 +37,41 @@ const errorLine = StateField.define({
 const paletteTheme = EditorView.theme({
   "&": { color: "var(--md-code-fg-color)", backgroundColor: "var(--md-code-bg-color)", fontSize: ".8rem" },
   ".cm-content": { fontFamily: "var(--md-code-font-family, monospace)", caretColor: "var(--md-typeset-color)" },
-  ".cm-gutters": { backgroundColor: "var(--md-code-bg-color)", color: "var(--md-default-fg-color--light)", border: "none" },
+  ".cm-gutters": {
+    backgroundColor: "var(--md-code-bg-color)", color: "var(--md-default-fg-color--light)", border: "none" },
   // The current line is marked in the gutter only: a tinted line lowers the text's contrast.
   ".cm-activeLine": { backgroundColor: "transparent" },
-  ".cm-activeLineGutter": { backgroundColor: "var(--md-default-fg-color--lightest)", color: "var(--md-default-fg-color)" },
+  ".cm-activeLineGutter": {
+    backgroundColor: "var(--md-default-fg-color--lightest)", color: "var(--md-default-fg-color)" },
   "&.cm-focused .cm-cursor": { borderLeftColor: "var(--md-typeset-color)" },
-  ".cm-selectionBackground, &.cm-focused .cm-selectionBackground": { backgroundColor: "var(--md-accent-fg-color--transparent) !important" },
+  ".cm-selectionBackground, &.cm-focused .cm-selectionBackground": {
+    backgroundColor: "var(--md-accent-fg-color--transparent) !important" },
 });
 
 // Syntax colours from the palette's own code colours (readable in light and dark).
 const paletteHighlight = HighlightStyle.define([
-  { tag: [t.keyword, t.controlKeyword, t.definitionKeyword, t.moduleKeyword, t.operatorKeyword, t.self], color: "var(--md-code-hl-keyword-color)" },
+  { tag: [t.keyword, t.controlKeyword, t.definitionKeyword, t.moduleKeyword, t.operatorKeyword, t.self],
+    color: "var(--md-code-hl-keyword-color)" },
   { tag: [t.string, t.special(t.string)], color: "var(--md-code-hl-string-color)" },
   { tag: [t.number, t.bool, t.null], color: "var(--md-code-hl-number-color)" },
   { tag: t.comment, color: "var(--md-code-hl-comment-color)", fontStyle: "italic" },
-  { tag: [t.function(t.variableName), t.function(t.propertyName), t.function(t.definition(t.variableName))], color: "var(--md-code-hl-function-color)" },
+  { tag: [t.function(t.variableName), t.function(t.propertyName), t.function(t.definition(t.variableName))],
+    color: "var(--md-code-hl-function-color)" },
   { tag: [t.className, t.definition(t.className)], color: "var(--md-code-hl-name-color)" },
   { tag: [t.operator, t.punctuation, t.bracket], color: "var(--md-code-hl-punctuation-color)" },
   { tag: t.invalid, color: "var(--md-code-hl-special-color)" },
 ]);
 
 let hints = 0;
-const HINT = "Tab indents once you type here. To leave the editor, press Esc, then Tab. Ctrl+Enter (⌘+Enter on a Mac) runs the tests.";
+const HINT = "Tab indents once you type here. To leave the editor, press Esc, then Tab. "
+  + "Ctrl+Enter (⌘+Enter on a Mac) runs the tests.";
 
 export function createEditor(host, doc, { onChange, onRun }) {
   // Whether this visit of the focus works in the editor: until then, Tab moves on.
   let working = false;
   const tab = (command) => (view) => (working ? command(view) : false);
-  const hint = Object.assign(document.createElement("p"), { className: "wb-editor-hint", id: `wb-editor-hint-${++hints}`, textContent: HINT });
+  const hint = Object.assign(document.createElement("p"),
+    { className: "wb-editor-hint", id: `wb-editor-hint-${++hints}`, textContent: HINT });
   const view = new EditorView({
     parent: host,
     state: EditorState.create({
@@ -77,7 +86,8 @@ export function createEditor(host, doc, { onChange, onRun }) {
           blur: () => { working = false; },
           mousedown: () => { working = true; },
           keydown: (event) => {
-            if (event.key === "Enter" || (event.key.length === 1 && !event.ctrlKey && !event.metaKey && !event.altKey)) working = true;
+            const typing = event.key.length === 1 && !event.ctrlKey && !event.metaKey && !event.altKey;
+            if (event.key === "Enter" || typing) working = true;
           },
         }),
         syntaxHighlighting(paletteHighlight),
@@ -87,7 +97,8 @@ export function createEditor(host, doc, { onChange, onRun }) {
         EditorState.tabSize.of(4),
         paletteTheme,
         errorLine,
-        EditorView.contentAttributes.of({ "aria-label": "Python code editor", "aria-describedby": hint.id, tabindex: "0" }),
+        EditorView.contentAttributes.of(
+          { "aria-label": "Python code editor", "aria-describedby": hint.id, tabindex: "0" }),
         EditorView.updateListener.of((update) => {
           if (update.transactions.some((tr) => tr.isUserEvent("input") || tr.isUserEvent("delete"))) working = true;
           if (update.docChanged) onChange(update.state.doc.toString());

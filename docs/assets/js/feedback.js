@@ -80,7 +80,8 @@ export function renderTests(el, reply) {
   if (rows.length) {
     const table = document.createElement("table");
     table.className = "wb-test-table";
-    table.innerHTML = "<thead><tr><th scope=col>Test</th><th scope=col>Expected</th><th scope=col>Got</th><th scope=col>Result</th></tr></thead>";
+    table.innerHTML = "<thead><tr><th scope=col>Test</th><th scope=col>Expected</th><th scope=col>Got</th>"
+      + "<th scope=col>Result</th></tr></thead>";
     const body = document.createElement("tbody");
     for (const row of rows) {
       body.append(testRow(row));

@@ -17,7 +17,8 @@ import { ATTR, ROLE, ownRole } from "./contract.js";
 
 // Where an answer starts, by kind: the first of these roles an exercise has.
 const ANSWER_ROLES = [ROLE.entry, ROLE.answer, ROLE.choice, ROLE.line, ROLE.editor, ROLE.steps, ROLE.check];
-const FOCUSABLE = 'input:not([type="hidden"]):not([disabled]), button:not([disabled]), textarea, select, [tabindex="0"], [contenteditable="true"]';
+const FOCUSABLE = 'input:not([type="hidden"]):not([disabled]), button:not([disabled]), textarea, select, '
+  + '[tabindex="0"], [contenteditable="true"]';
 
 const visible = (el) => el.getClientRects().length > 0 && !el.closest("[hidden]");
 
@@ -62,7 +63,7 @@ function moveTo(url) {
     return false;
   }
   if (!target) return false;
-  const drawer = document.querySelector('input[data-md-toggle="drawer"]');
+  const drawer = /** @type {HTMLInputElement | null} */ (document.querySelector('input[data-md-toggle="drawer"]'));
   if (drawer?.checked) drawer.click(); // a link in the phone's menu: close it, as a page change would
   if (target.hasAttribute(ATTR.exercise)) return jumpTo(target.getAttribute(ATTR.exercise), url);
   history.pushState(null, "", url.href);
@@ -71,11 +72,12 @@ function moveTo(url) {
 }
 
 function onClick(event) {
-  if (event.defaultPrevented || event.button !== 0 || event.metaKey || event.ctrlKey || event.shiftKey || event.altKey) return;
+  const modified = event.metaKey || event.ctrlKey || event.shiftKey || event.altKey;
+  if (event.defaultPrevented || event.button !== 0 || modified) return;
   const link = event.target.closest?.("a[href]");
   if (!link) return;
   if (link.hasAttribute("data-wb-skip")) {
-    const first = document.querySelector("#wb-exercises a");
+    const first = /** @type {HTMLAnchorElement | null} */ (document.querySelector("#wb-exercises a"));
     if (!first) return;
     first.focus();
   } else if (link.hasAttribute("data-wb-jump")) {

@@ -20,7 +20,7 @@ import { ATTR, BOOT_PHASE, OFFLINE, ROLE, RUNTIME, STATE, byRole, findRole } fro
 import { BOOT_STEP } from "./boot-steps.js";
 import { feedbackOf } from "./feedback.js";
 import { formatSize } from "./offline-ui.js";
-import { el } from "./progress-view.js";
+import { el } from "./dom.js";
 
 const STEPS = [
   [BOOT_PHASE.download, "Download"],
@@ -64,7 +64,8 @@ const STEP_TEXT = {
 };
 
 /** Per worker: its last report, when what it reports last changed, and where the bar is. */
-const fresh = () => ({ phase: BOOT_PHASE.download, step: BOOT_STEP.download, loaded: 0, total: 0, changed: performance.now(), value: 0 });
+const fresh = () => ({
+  phase: BOOT_PHASE.download, step: BOOT_STEP.download, loaded: 0, total: 0, changed: performance.now(), value: 0 });
 const starts = { grader: fresh(), sandbox: fresh() };
 let ticker = null;
 
@@ -100,7 +101,9 @@ function describe(who, start, now) {
   const { phase, step, loaded, total } = start;
   if (phase === BOOT_PHASE.ready) return [WHO[who].ready, ""];
   if (phase === BOOT_PHASE.download && !SPAN[step]) {
-    const text = total ? `Downloading the Python runtime · ${formatSize(loaded)} of ${formatSize(total)}` : "Downloading the Python runtime…";
+    const text = total
+      ? `Downloading the Python runtime · ${formatSize(loaded)} of ${formatSize(total)}`
+      : "Downloading the Python runtime…";
     return [text, ""];
   }
   const text = step === BOOT_STEP.import ? WHO[who].import : STEP_TEXT[step] || "Starting Python…";
@@ -153,7 +156,7 @@ function draw(box, now = performance.now()) {
 function redrawAll() {
   const now = performance.now();
   let waiting = false;
-  for (const box of document.querySelectorAll(byRole(ROLE.runtimeStatus))) {
+  for (const box of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll(byRole(ROLE.runtimeStatus)))) {
     draw(box, now);
     waiting ||= starts[box.dataset.wbWaitsFor].phase !== BOOT_PHASE.ready;
   }
@@ -183,13 +186,14 @@ export function showSandboxStart(exercise) {
 export function initLoading() {
   new MutationObserver((records) => {
     if (!loading()) return;
-    for (const { target } of records) {
+    for (const record of records) {
+      const target = /** @type {Element} */ (record.target); // attribute changes: always an element
       const waits = target.hasAttribute(ATTR.exercise) || target.getAttribute(ATTR.role) === ROLE.workStep;
       if (target.getAttribute(ATTR.state) === STATE.pending && waits) showIn(target, "grader");
     }
   }).observe(document.body, { attributes: true, subtree: true, attributeFilter: [ATTR.state] });
   for (const [who, name] of [["grader", "workbook:boot"], ["sandbox", "workbook:sandbox-boot"]]) {
-    document.addEventListener(name, (event) => {
+    document.addEventListener(name, (/** @type {CustomEvent} */ event) => {
       update(who, event.detail);
       redrawAll();
     });

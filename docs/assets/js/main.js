@@ -16,7 +16,7 @@ import { initJumps } from "./jump.js";
 import { initDrawer } from "./drawer.js";
 import { clearNotice, showNotice, showProgressProblems } from "./notice.js";
 import { strayVariantLinks, strayVariantTargets } from "./variants.js";
-import { loadManifest } from "./progress-view.js";
+import { loadManifest } from "./exercise-list.js";
 import { initCourse } from "./course.js"; // the teacher's, assignment and class pages
 import { findApi, findLaunch } from "./lms/api.js";
 import { learnerProgress } from "./lms/learner.js";
@@ -61,9 +61,11 @@ if (typeof Worker === "undefined") {
 }
 window.workbook = { runtime, progress, checkScrollRegionsNow, lms: null };
 lmsSession?.then((session) => { window.workbook.lms = session; }, (err) => {
-  showNotice("lms", "Course platform", `The connection to the course's platform could not start (${err?.message || err}). Your work is kept in this browser.`);
+  showNotice("lms", "Course platform", `The connection to the course's platform could not start `
+    + `(${err?.message || err}). Your work is kept in this browser.`);
 });
-if (!inLms) registerOffline(siteRoot, progress); // no service worker in an LMS frame: the LMS serves the package from its own paths
+// No service worker in an LMS frame: the LMS serves the package from its own paths.
+if (!inLms) registerOffline(siteRoot, progress);
 initLoading();
 initSearchStart();
 initScrollRegions();
@@ -103,7 +105,8 @@ function initPage() {
     } catch (err) {
       // One exercise that cannot start must not stop the others.
       el.setAttribute(ATTR.state, STATE.error);
-      ownRole(el, ROLE.feedback)?.replaceChildren(Object.assign(document.createElement("p"), { textContent: `This exercise could not start: ${err.message}` }));
+      const textContent = `This exercise could not start: ${err.message}`;
+      ownRole(el, ROLE.feedback)?.replaceChildren(Object.assign(document.createElement("p"), { textContent }));
     }
   }
   initFigures(document, shared.runtime);
@@ -117,11 +120,12 @@ function initPage() {
   initCourse(shared, siteRoot);
 }
 
-document.addEventListener("workbook:runtime", (event) => {
+document.addEventListener("workbook:runtime", (/** @type {CustomEvent} */ event) => {
   if (event.detail === RUNTIME.failed) showRuntimeProblem(runtime.failure);
 });
 document.addEventListener("workbook:progress-problem", () => showProgressProblems(progress));
-document.addEventListener("workbook:progress-saved", () => ["full", "blocked"].forEach((kind) => clearNotice(`progress-${kind}`)));
+document.addEventListener("workbook:progress-saved",
+  () => ["full", "blocked"].forEach((kind) => clearNotice(`progress-${kind}`)));
 
 // mkdocs-material emits every page (the first and each instant navigation) on document$, from
 // inside its own DOMContentLoaded handler: the page starts in a task of its own after it, so that

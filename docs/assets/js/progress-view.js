@@ -1,47 +1,14 @@
-// What the progress displays share: the manifest of chapters, the counts of a
-// set of exercises (solved, mastered, due), and labelled bars that say what they
-// count. Used by progress-ui.js (at a glance), progress-page.js (the "Your
-// progress" page) and practise.js.
+// What the progress displays share: the counts of a set of exercises (solved, mastered, due), and
+// labelled bars that say what they count. Used by progress-ui.js (at a glance), progress-page.js
+// (the "Your progress" page) and practise.js. The exercise list lives in exercise-list.js and `el`
+// in dom.js; they are re-exported here for the modules that still import them from this one.
 
+import { el } from "./dom.js";
+import { reviewedIds } from "./exercise-list.js";
 import { MASTERED, dueIds, isMastered, isSolved, isSolvedAfterReveal, nextDue } from "./review.js";
 
-let manifestPromise = null;
-
-export function loadManifest(siteRoot) {
-  manifestPromise ??= fetch(new URL("assets/exercises.json", siteRoot))
-    .then((r) => (r.ok ? r.json() : null))
-    .catch(() => null)
-    .then((m) => {
-      if (!m || !Array.isArray(m.chapters)) manifestPromise = null; // try again on the next page
-      return m && Array.isArray(m.chapters) ? m : null;
-    });
-  return manifestPromise;
-}
-
-/** A new element with `props` and `children`. */
-export function el(tag, props = {}, ...children) {
-  const node = Object.assign(document.createElement(tag), props);
-  node.append(...children);
-  return node;
-}
-
-/**
- * A page built from the exercise list (Practise, the teacher's, assignment and class pages):
- * its root element (`[attr]`, once per page) and the list; null when the page has no such
- * element, or when the list cannot be loaded (then the page says so).
- */
-export async function listPage(attr, siteRoot) {
-  const root = document.querySelector(`[${attr}]`);
-  if (!root || root.dataset.wbBuilt) return null;
-  root.dataset.wbBuilt = "true";
-  const manifest = await loadManifest(siteRoot);
-  if (manifest) return { root, manifest };
-  root.replaceChildren(el("p", { textContent: "The list of exercises could not be loaded. Reload the page to try again." }));
-  return null;
-}
-
-/** The exercises that join the review queue (Derive, Build and Debug; an older manifest: the Derive ones). */
-export const reviewedIds = (manifest) => manifest.reviewed || manifest.variants || [];
+export { el } from "./dom.js";
+export { listPage, loadManifest, reviewedIds } from "./exercise-list.js";
 
 /**
  * The counts of `ids`. Solved: one variant answered before its derivation was

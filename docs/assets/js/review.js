@@ -70,7 +70,8 @@ export function afterGrade(record, v, status, { schedule = true, now = Date.now(
  */
 export function afterStep(record, v, status, tag = "") {
   if (status !== "correct" && status !== "incorrect") return {};
-  return { stepped: add(record.stepped, v), ...(BACK_TO_EARLIER.includes(tag) ? { carried: add(record.carried, v) } : {}) };
+  const carried = BACK_TO_EARLIER.includes(tag) ? { carried: add(record.carried, v) } : {};
+  return { stepped: add(record.stepped, v), ...carried };
 }
 
 /** The progress patch for opening variant `v`'s derivation. */
@@ -91,7 +92,8 @@ export const isDue = (r, now = Date.now()) => inQueue(r) && (r.due ?? 0) <= now;
 
 /** The ids of `ids` that are due, the longest overdue first. */
 export function dueIds(progress, ids, now = Date.now()) {
-  return ids.filter((id) => isDue(progress.get(id), now)).sort((a, b) => (progress.get(a).due ?? 0) - (progress.get(b).due ?? 0));
+  return ids.filter((id) => isDue(progress.get(id), now))
+    .sort((a, b) => (progress.get(a).due ?? 0) - (progress.get(b).due ?? 0));
 }
 
 /** When the next of `ids` falls due (ms), or null if none is in the queue. */

@@ -34,10 +34,12 @@ const failure = (kind, message) => ({ ok: false, error: { kind, message } });
 function timeoutReply(entry, how) {
   const seconds = (entry.limitMs / 1000).toLocaleString();
   const after = how === "interrupt" ? "It was interrupted" : "The Python runtime was restarted";
-  return failure(ERROR.timeout, `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). ${after}; your code is kept.`);
+  return failure(ERROR.timeout,
+    `Stopped after ${seconds} s: the code did not finish in time (an endless loop?). ${after}; your code is kept.`);
 }
 
-const crashReply = () => failure(ERROR.crash, "The Python runtime crashed while running this; it was restarted. Your code is kept.");
+const crashReply = () =>
+  failure(ERROR.crash, "The Python runtime crashed while running this; it was restarted. Your code is kept.");
 
 export class Runtime {
   /**
@@ -66,7 +68,9 @@ export class Runtime {
     this.ready = false;
     this.startedAt = early ? early.started : performance.now();
     this.setState(RUNTIME.loading);
-    const worker = early ? early.worker : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL);
+    const worker = early
+      ? early.worker
+      : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL);
     this.worker = worker;
     this.spawns = (this.spawns || 0) + 1; // workers started, the first included
     this.reportBoot({ phase: BOOT_PHASE.download, loaded: 0, total: 0, step: null }); // a new start: nothing yet
@@ -118,9 +122,11 @@ export class Runtime {
       this.readyAt = performance.now();
       this.startedFrom = data.from; // "snapshot", or "boot" when the snapshot could not be used
       this.startStages = data.stages;
-      this.wasmModule = data.module ?? null; // Pyodide's compiled WebAssembly (the grader's: the sandbox starts from it)
+      // Pyodide's compiled WebAssembly (the grader's: the sandbox starts from it).
+      this.wasmModule = data.module ?? null;
       if (data.why) console.warn("Python runtime: booted without the snapshot:", data.why);
-      this.reportBoot({ phase: BOOT_PHASE.ready, loaded: this.boot?.total || 0, total: this.boot?.total || 0, step: null });
+      const total = this.boot?.total || 0;
+      this.reportBoot({ phase: BOOT_PHASE.ready, loaded: total, total, step: null });
       this.setState(RUNTIME.ready);
       for (const entry of this.pending.values()) this.send(entry);
       return;
@@ -240,7 +246,11 @@ export class Runtime {
     this.spawn(null);
   }
 
-  /** Send `request` ({op, ...}); resolves with an envelope, never rejects. */
+  /**
+   * Send `request` ({op, ...}); resolves with an envelope, never rejects.
+   * @param {{ op: string, [key: string]: any }} request
+   * @param {{ limitMs?: number, onProgress?: (text: string) => void, onWait?: () => void }} [options]
+   */
   request(request, { limitMs = DEFAULT_LIMIT_MS, onProgress } = {}) {
     if (this.failure) return Promise.resolve(failure(ERROR.runtime, this.failure));
     return new Promise((resolve) => {

@@ -21,7 +21,8 @@
 // Messages in: {type: "wasm-module", module} first, when the page has the grader's compiled
 // WebAssembly to start from (settings.module says it comes); {type: "interrupt-buffer", buffer};
 // {id, op: "run", job, code}.
-// Out: {type: "boot", phase, loaded, total, step} as it starts (boot.js), {type: "ready"|"failed"}; per request {id, type: "received"} at once,
+// Out: {type: "boot", phase, loaded, total, step} as it starts (boot.js), {type: "ready"|"failed"}; per request
+// {id, type: "received"} at once,
 // {type: "progress"}, {type: "started"} when the code starts (the page's time
 // limit starts then) and {type: "reply", reply}: {ok: true, value: REPORT,
 // recycle} or {ok: false, error}.
@@ -31,6 +32,7 @@ import { BOOT_STEP } from "./boot-steps.js";
 
 const post = self.postMessage.bind(self);
 const networkFetch = self.fetch.bind(self);
+/** @type {SandboxSettings} */
 const settings = self.WB_SANDBOX || { indexURL: new URL("../vendor/pyodide/", self.location.href).href };
 delete self.WB_SANDBOX;
 const { indexURL } = settings;
@@ -51,7 +53,7 @@ const given = settings.module ? new Promise((resolve) => (takeModule = resolve))
 // Registered first, before anything else can listen: later listeners (an
 // `onmessage` set by learner code) never see a message.
 // Only the page's own messages count: not an event the sandbox's code dispatched.
-self.addEventListener("message", (event) => {
+self.addEventListener("message", (/** @type {MessageEvent} */ event) => {
   event.stopImmediatePropagation();
   if (!event.isTrusted) return;
   const msg = event.data;
@@ -75,7 +77,8 @@ function guardedFetch(allowed) {
   return function fetch(resource, init = {}) {
     let url;
     try {
-      url = new URL(typeof resource === "string" || resource instanceof URL ? String(resource) : resource.url, indexURL).href;
+      const address = typeof resource === "string" || resource instanceof URL ? String(resource) : resource.url;
+      url = new URL(address, indexURL).href;
     } catch {
       url = "";
     }
@@ -117,7 +120,8 @@ requests = ready.then(
 
 // A few runs of a small job before the first real one: the functions every run calls are
 // compiled now, and the browser starts optimising the hottest, while the learner is still reading.
-const WARM_JOB = JSON.stringify({ function: "f", harness: "call", cases: Array.from({ length: 24 }, (_, i) => [i, i / 3]) });
+const WARM_JOB = JSON.stringify(
+  { function: "f", harness: "call", cases: Array.from({ length: 24 }, (_, i) => [i, i / 3]) });
 const WARM_CODE = "import math\n\n\ndef f(a, b):\n    return (math.hypot(a, b), [a * b, a - b])\n";
 function warmUp(run) {
   for (let i = 0; i < 4; i++) run(WARM_JOB, WARM_CODE).destroy();
@@ -137,7 +141,8 @@ const LANGUAGE = `Object Function Array Number parseFloat parseInt Infinity NaN 
   WebAssembly`;
 const PLATFORM = `console self location navigator performance crypto Crypto SubtleCrypto CryptoKey setTimeout
   clearTimeout setInterval clearInterval queueMicrotask structuredClone atob btoa TextEncoder TextDecoder URL
-  URLSearchParams Blob Response Request Headers ReadableStream ReadableStreamDefaultReader ReadableStreamDefaultController
+  URLSearchParams Blob Response Request Headers ReadableStream ReadableStreamDefaultReader
+  ReadableStreamDefaultController
   ReadableByteStreamController ReadableStreamBYOBReader ReadableStreamBYOBRequest WritableStream
   WritableStreamDefaultWriter WritableStreamDefaultController TransformStream TransformStreamDefaultController
   ByteLengthQueuingStrategy CountQueuingStrategy MessageChannel MessagePort MessageEvent Event EventTarget ErrorEvent
@@ -145,7 +150,8 @@ const PLATFORM = `console self location navigator performance crypto Crypto Subt
   name onmessage onmessageerror onerror onunhandledrejection onrejectionhandled reportError constructor
   DedicatedWorkerGlobalScope WorkerGlobalScope WorkerLocation WorkerNavigator Performance PerformanceEntry
   PerformanceMark PerformanceMeasure`;
-const NAVIGATOR = "hardwareConcurrency appCodeName appName appVersion platform product userAgent language languages onLine constructor";
+const NAVIGATOR = "hardwareConcurrency appCodeName appName appVersion platform product userAgent language languages "
+  + "onLine constructor";
 const ALLOWED = new Set(`${LANGUAGE} ${PLATFORM}`.split(/\s+/));
 
 function strip(object, keep) {
@@ -171,7 +177,8 @@ function tame(scope, fetch) {
   }
   strip(Object.getPrototypeOf(scope.navigator), new Set(NAVIGATOR.split(" ")));
   // Code from strings: every constructor of functions, however it is reached.
-  const prototypes = [function () {}, async function () {}, function* () {}, async function* () {}].map(Object.getPrototypeOf);
+  const prototypes = [function () {}, async function () {}, function* () {}, async function* () {}]
+    .map(Object.getPrototypeOf);
   for (const prototype of prototypes) {
     const denied = function () {
       refuseCode();
@@ -186,7 +193,8 @@ function tame(scope, fetch) {
     const original = timers[name];
     if (typeof original !== "function") continue;
     Object.defineProperty(timers, name, {
-      value: (handler, ...rest) => (typeof handler === "function" ? original.call(scope, handler, ...rest) : refuseCode()),
+      value: (handler, ...rest) =>
+        (typeof handler === "function" ? original.call(scope, handler, ...rest) : refuseCode()),
       writable: false,
       configurable: false,
     });
@@ -219,7 +227,8 @@ async function runOnce({ id, op, job, code }) {
     try {
       await py.loadPackagesFromImports(code);
     } catch (err) {
-      return failure(ERROR.package, "A package your code imports could not be loaded: " + String(err?.message || err).slice(0, 200));
+      return failure(ERROR.package,
+        "A package your code imports could not be loaded: " + String(err?.message || err).slice(0, 200));
     }
   }
   post({ id, type: "started" });

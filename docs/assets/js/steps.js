@@ -14,7 +14,8 @@ import { firstControl } from "./jump.js";
 import { afterStep } from "./review.js";
 
 /** Whether a widget's value holds anything typed (a text, or a grid with one entry filled). */
-const typed = (value) => (Array.isArray(value) ? value.flat().some((t) => String(t).trim()) : String(value ?? "").trim() !== "");
+const typed = (value) =>
+  (Array.isArray(value) ? value.flat().some((t) => String(t).trim()) : String(value ?? "").trim() !== "");
 
 /** The way back to an earlier step: a button that opens the steps and puts the focus in that step's input
  * (a button, not an in-page link: the theme's instant navigation would take the link's click over). */
@@ -30,7 +31,15 @@ function stepLink(steps, name, text) {
 
 class Steps {
   constructor(ctx, button, panel) {
-    Object.assign(this, { ctx, button, panel, fields: new Map(), built: null });
+    this.ctx = ctx;
+    /** @type {HTMLButtonElement} */
+    this.button = button;
+    /** @type {HTMLElement} */
+    this.panel = panel;
+    /** @type {Map<string, any>} a step's name -> its widget */
+    this.fields = new Map();
+    /** @type {Promise<void> | null} */
+    this.built = null;
     button.addEventListener("click", () => (this.isOpen() ? this.close() : this.open()));
   }
 
@@ -49,7 +58,7 @@ class Steps {
   /** Put the list on the page (once) and wire each step's widget. */
   build() {
     this.built ??= (async () => {
-      const template = this.panel.querySelector(":scope > template");
+      const template = /** @type {HTMLTemplateElement} */ (this.panel.querySelector(":scope > template"));
       this.panel.append(template.content.cloneNode(true));
       for (const li of findRoles(this.panel, ROLE.workStep)) await this.wire(li);
     })();
@@ -118,7 +127,8 @@ class Steps {
     const li = this.item(name);
     const field = this.fields.get(name);
     const answer = field.value();
-    const reply = await ctx.submit("grade", { step: name, answer, steps: this.answers(name), given: ctx.given?.() }, { on: li });
+    const payload = { step: name, answer, steps: this.answers(name), given: ctx.given?.() };
+    const reply = await ctx.submit("grade", payload, { on: li });
     if (!reply) return; // new numbers came while it was graded: this verdict is stale
     field.show?.(reply);
     this.showCarried(li, reply);
@@ -146,7 +156,8 @@ class Steps {
     const record = ctx.progress.get(ctx.id);
     const kept = record.stepWork?.variant === variant ? record.stepWork.steps : {};
     const carried = backTo({ ok: true, value: verdict }) ?? undefined;
-    const step = { answer, status: verdict.status, message: verdict.message, ...(verdict.tag ? { tag: verdict.tag } : {}),
+    const step = {
+      answer, status: verdict.status, message: verdict.message, ...(verdict.tag ? { tag: verdict.tag } : {}),
       ...(carried ? { carried } : {}) };
     // The Practise page (ctx.start) shows its own numbers: the chapter's steps on screen stay as they were.
     const onScreen = ctx.start == null ? { stepWork: { variant, steps: { ...kept, [name]: step } } } : {};
@@ -163,7 +174,9 @@ class Steps {
       if (!li) continue;
       this.fields.get(name).restore(step.answer);
       if (!step.status) continue;
-      const reply = { ok: true, value: { status: step.status, tag: step.tag ?? null, message: step.message ?? "", data: { carried: step.carried } } };
+      const value = {
+        status: step.status, tag: step.tag ?? null, message: step.message ?? "", data: { carried: step.carried } };
+      const reply = { ok: true, value };
       showReply(li, reply);
       this.showCarried(li, reply);
     }

@@ -34,7 +34,9 @@ const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
 const WIRE_BYTES = __WB_WIRE_BYTES__; // the whole copy's download, gzip as the host sends it (offline.py)
 
-const SCOPE = self.registration.scope;
+// The global scope, as what it is: a service worker's (the type checker's lib names it a worker's).
+const sw = /** @type {ServiceWorkerGlobalScope} */ (/** @type {unknown} */ (self));
+const SCOPE = sw.registration.scope;
 const PREFIX = `robotics-workbook:${new URL(SCOPE).pathname}:`;
 const CACHE = PREFIX + VERSION;
 const STATE = PREFIX + "state"; // not versioned: whether the learner wants the copy
@@ -113,11 +115,14 @@ async function status() {
     }
   }
   const state = complete ? "complete" : copying ? "copying" : "partial";
-  return { type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes, totalBytes: TOTAL_BYTES, wireBytes: WIRE_BYTES };
+  return {
+    type: "status", version: VERSION, state, wanted: await wanted(), files, total: ENTRIES.size, bytes,
+    totalBytes: TOTAL_BYTES, wireBytes: WIRE_BYTES,
+  };
 }
 
 async function broadcast(message) {
-  for (const client of await self.clients.matchAll({ includeUncontrolled: true })) client.postMessage(message);
+  for (const client of await sw.clients.matchAll({ includeUncontrolled: true })) client.postMessage(message);
 }
 
 // The memory snapshot travels gzip-compressed and is stored inflated, so later
@@ -130,7 +135,8 @@ function inflated(response) {
 }
 
 async function fetchChecked(url, entry, mode) {
-  const response = await fetch(new Request(url, { cache: mode, integrity: entry.integrity, credentials: "same-origin" }));
+  const request = new Request(url, { cache: mode, integrity: entry.integrity, credentials: "same-origin" });
+  const response = await fetch(request);
   if (!response.ok) throw new Error(`${entry.path}: HTTP ${response.status}`);
   return response;
 }
@@ -149,7 +155,8 @@ async function fromOlder(url, entry) {
 /** Store one file and verify what was stored. */
 async function storeOne(cache, url, entry) {
   const older = await fromOlder(url, entry);
-  const response = older || (await fetchChecked(url, entry, "default").catch(() => fetchChecked(url, entry, "no-cache")));
+  const response = older
+    || (await fetchChecked(url, entry, "default").catch(() => fetchChecked(url, entry, "no-cache")));
   await cache.put(url, !older && INFLATE.test(entry.path) ? inflated(response) : response);
   const stored = await cache.match(url);
   if (!stored || !(await genuine(stored, entry))) {
@@ -197,7 +204,7 @@ function copy() {
   stopped = false;
   copying ||= copyAll()
     .then(async () => {
-      await self.clients.claim();
+      await sw.clients.claim();
       broadcast(await status());
     })
     .catch(async (err) => {
@@ -225,31 +232,31 @@ async function decline() {
 }
 
 // ---- Life cycle ---------------------------------------------------------------------
-self.addEventListener("install", (event) => {
+sw.addEventListener("install", (event) => {
   event.waitUntil(
     (async () => {
       // An update of a stored site: whole before it takes over. Otherwise nothing yet.
-      if (self.registration.active && (await wanted())) await copyAll();
-      else await self.skipWaiting();
+      if (sw.registration.active && (await wanted())) await copyAll();
+      else await sw.skipWaiting();
     })(),
   );
 });
 
-self.addEventListener("activate", (event) => {
+sw.addEventListener("activate", (event) => {
   event.waitUntil(
     (async () => {
       for (const name of await caches.keys()) {
         if (name.startsWith(PREFIX) && name !== CACHE && name !== STATE) await caches.delete(name);
       }
-      if (await sealed()) await self.clients.claim();
+      if (await sealed()) await sw.clients.claim();
     })(),
   );
 });
 
-self.addEventListener("message", (event) => {
+sw.addEventListener("message", (event) => {
   const reply = async (message) => event.source?.postMessage(await message);
   const type = event.data?.type;
-  if (type === "activate-update") self.skipWaiting();
+  if (type === "activate-update") sw.skipWaiting();
   else if (type === "status") event.waitUntil(reply(status()).then(resume));
   else if (type === "store") {
     event.waitUntil(
@@ -263,7 +270,8 @@ self.addEventListener("message", (event) => {
 
 // ---- Serving --------------------------------------------------------------------------
 function isolate(response) {
-  if (!response || response.type === "opaque" || response.type === "opaqueredirect" || response.status === 0) return response;
+  const unreadable = response?.type === "opaque" || response?.type === "opaqueredirect" || response?.status === 0;
+  if (!response || unreadable) return response;
   const headers = new Headers(response.headers);
   for (const [name, value] of Object.entries(ISOLATION)) headers.set(name, value);
   return new Response(response.body, { status: response.status, statusText: response.statusText, headers });
@@ -296,10 +304,12 @@ function refused(path) {
 <p>This page (<code>${path.replace(/[<&]/g, "")}</code>) is not stored in this browser, or its stored copy was
 damaged and was not used, and the network cannot be reached. Connect to the network and reload: the workbook
 then stores it again.</p>`;
-  return new Response(text, { status: 503, statusText: "Service Unavailable", headers: { "Content-Type": "text/html; charset=utf-8" } });
+  return new Response(text,
+    { status: 503, statusText: "Service Unavailable", headers: { "Content-Type": "text/html; charset=utf-8" } });
 }
 
-const forDocument = (request) => request.destination === "document" || request.destination === "worker" || request.mode === "navigate";
+const forDocument = (request) =>
+  request.destination === "document" || request.destination === "worker" || request.mode === "navigate";
 
 async function respond(request, event) {
   const key = cacheKey(request.url);
@@ -359,7 +369,7 @@ function sitemap() {
   return new Response(body, { headers: { "Content-Type": "application/xml" } });
 }
 
-self.addEventListener("fetch", (event) => {
+sw.addEventListener("fetch", (event) => {
   const { request } = event;
   if (request.method !== "GET" || !request.url.startsWith(SCOPE)) return;
   if (request.cache === "only-if-cached" && request.mode !== "same-origin") return;

@@ -45,7 +45,8 @@ export function strayVariantLinks(ids, href = location.href) {
   const here = new Set(ids);
   return new URL(href).searchParams.getAll(PARAM).filter((v) => !here.has(idOf(v))).map((v) => (idOf(v)
     ? `The address asks for new numbers for exercise ${quote(idOf(v))}, which is not on this page.`
-    : `The address's “variant=${quote(v).slice(1, -1)}” does not name an exercise: a link to new numbers reads like “variant=0.4-1234” (exercise 0.4, set 1234).`));
+    : `The address's “variant=${quote(v).slice(1, -1)}” does not name an exercise: a link to new numbers reads like `
+      + "“variant=0.4-1234” (exercise 0.4, set 1234)."));
 }
 
 /**
@@ -58,7 +59,8 @@ export function strayVariantTargets(ids, manifest, siteRoot, href = location.hre
   const out = [];
   for (const value of new URL(href).searchParams.getAll(PARAM)) {
     const id = idOf(value);
-    const chapter = id && !here.has(id) && numberIn(value) !== null && manifest?.chapters?.find((c) => c.ids.includes(id));
+    const chapter = id && !here.has(id) && numberIn(value) !== null
+      && manifest?.chapters?.find((c) => c.ids.includes(id));
     if (!chapter) continue;
     const url = new URL(chapter.url, siteRoot);
     url.searchParams.append(PARAM, value);
@@ -154,7 +156,8 @@ export async function showVariant(ctx, n, { remember = true } = {}) {
   showControls(ctx, v.variant);
   if (remember) {
     if ((record.variant ?? 0) !== v.variant) {
-      ctx.progress.update(ctx.id, { variant: v.variant, last: null, stepWork: null }); // null, not absent: an older copy must not bring the old answer back
+      // null, not absent: an older copy must not bring the old answer back.
+      ctx.progress.update(ctx.id, { variant: v.variant, last: null, stepWork: null });
     }
     history.replaceState(history.state, "", variantHref(ctx.id, v.variant, el.id));
   }
@@ -171,7 +174,8 @@ export async function initVariants(ctx, { start = null } = {}) {
   ctx.variant = 0;
   const remember = start === null;
   ctx.remember = remember;
-  ownRole(el, ROLE.newVariant).addEventListener("click", () => showVariant(ctx, freshVariant(ctx.variant), { remember }));
+  ownRole(el, ROLE.newVariant)
+    .addEventListener("click", () => showVariant(ctx, freshVariant(ctx.variant), { remember }));
   ownRole(el, ROLE.originalVariant).addEventListener("click", () => showVariant(ctx, 0, { remember }));
   ownRole(el, ROLE.variantLink).addEventListener("click", (event) => {
     event.preventDefault();
@@ -191,8 +195,10 @@ export async function initVariants(ctx, { start = null } = {}) {
   }
   if (bad !== null) {
     const now = ctx.variant ? "the numbers you had here last time are shown" : "the workbook's numbers are shown";
-    showMessage(el, `This page's address asks for numbers ${quote(bad.slice(bad.lastIndexOf("-") + 1))} for this exercise, `
-      + `but a set of numbers is a whole number from 1 to ${groupDigits(MAX_VARIANT)} (as in “variant=${ctx.id}-1234”): ${now}.`);
+    const asked = quote(bad.slice(bad.lastIndexOf("-") + 1));
+    showMessage(el, `This page's address asks for numbers ${asked} for this exercise, `
+      + `but a set of numbers is a whole number from 1 to ${groupDigits(MAX_VARIANT)} `
+      + `(as in “variant=${ctx.id}-1234”): ${now}.`);
   }
   return shown;
 }

@@ -8,7 +8,7 @@ import { ATTR, RUNTIME } from "./contract.js";
 function runtimeIn(states) {
   const root = document.documentElement;
   const there = () => states.includes(root.getAttribute(ATTR.runtime));
-  return new Promise((resolve) => {
+  return new Promise(/** @param {(value?: void) => void} resolve */ (resolve) => {
     if (there()) return resolve();
     const observer = new MutationObserver(() => {
       if (!there()) return;
@@ -25,8 +25,12 @@ export const runtimeSettled = () => runtimeIn([RUNTIME.ready, RUNTIME.failed]);
 /** Resolves once the grader is ready (not merely given up on). */
 export const runtimeReady = () => runtimeIn([RUNTIME.ready]);
 
+/** @returns {Promise<void>} */
 export const delay = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
 /** The browser's next idle moment, or `timeoutMs` at the latest (at once where it cannot say). */
+/** @returns {Promise<void>} */
 export const idle = (timeoutMs) =>
-  new Promise((resolve) => (window.requestIdleCallback ? requestIdleCallback(() => resolve(), { timeout: timeoutMs }) : setTimeout(resolve, 0)));
+  new Promise((resolve) => (window.requestIdleCallback
+    ? requestIdleCallback(() => resolve(), { timeout: timeoutMs })
+    : setTimeout(resolve, 0)));

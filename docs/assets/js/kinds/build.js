@@ -86,14 +86,15 @@ function lazyEditor(ctx, host, onRun) {
 }
 
 export function init(ctx) {
-  ctx.runtime = withSandbox(ctx.runtime); // ctx.submit("run", ...) goes through the sandbox
+  // This exercise's runs go through the sandbox (`via` below); ctx.runtime stays the grader's, which the page shares.
+  const sandboxed = withSandbox(ctx.runtime);
   // The sandbox is a second Python (about 21 MB): it starts once a Build exercise is within a
   // screen and a half of the viewport, the grader is ready and the browser idle, so that it
   // is ready by the time the learner reaches the code (from its snapshot it takes about a
   // second; sandbox-client.js); at once if the learner moves into a Build exercise or runs
   // one. A page read elsewhere never pays for it. A Run that still has to wait for it shows
   // its start, as a Check shows the grader's.
-  const prepare = () => ctx.runtime.prepare();
+  const prepare = () => sandboxed.prepare();
   const nearSandbox = new IntersectionObserver((entries) => {
     if (!entries.some((entry) => entry.isIntersecting)) return;
     nearSandbox.disconnect();
@@ -116,14 +117,17 @@ export function init(ctx) {
     const ed = await editor.latest();
     ed.markLine(null);
     const reply = await ctx.submit("run", { code: ed.getCode() }, {
-      limitMs, onProgress: (text) => showMessage(ctx.el, text), onWait: () => showSandboxStart(ctx.el) });
+      via: sandboxed, limitMs,
+      onProgress: (text) => showMessage(ctx.el, text),
+      onWait: () => showSandboxStart(ctx.el),
+    });
     runButton.disabled = false;
     renderTests(ctx.el, reply);
     const line = reply.ok && reply.value.data?.error?.line;
     if (line) ed.markLine(line);
     // The verdict first; then the run's figure (sandbox-client.js), drawn by the grader meanwhile.
     const drawn = figure.wanted && reply.ok
-      ? await ctx.runtime.request({ op: "run-figure", exercise: ctx.id, variant: ctx.variant })
+      ? await sandboxed.request({ op: "run-figure", exercise: ctx.id, variant: ctx.variant })
       : null;
     if (thisRun === runs) figure.show(drawn);
   }

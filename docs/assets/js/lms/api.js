@@ -68,7 +68,8 @@ export function findApi(win = window) {
   }
 }
 
-/** The launch (lms/launch.js) holding this page's LMS session, from the nearest launcher page above `win`; null if none. */
+/** The launch (lms/launch.js) holding this page's LMS session, from the nearest launcher page above `win`; null if
+ *  none. */
 export function findLaunch(win = window) {
   return walkUp(win.parent === win ? null : win.parent, launchIn);
 }
@@ -87,7 +88,8 @@ export class ScormApi {
     try {
       result = this.api[this.names[op]](...args);
     } catch (err) {
-      this.lastError = { code: "", text: `the platform's ${this.names[op]} failed (${err?.message || err})`, element: args[0] };
+      const text = `the platform's ${this.names[op]} failed (${err?.message || err})`;
+      this.lastError = { code: "", text, element: args[0] };
       return null;
     }
     return result;

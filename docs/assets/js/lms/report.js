@@ -86,7 +86,8 @@ export function interactionValues(version, i, id, record = {}, check = null) {
   const base = [[`${at}.id`, objectiveId(id)], [`${at}.type`, is.type]];
   if (!check) return base;
   return [...base, [`${at}.objectives.0.id`, objectiveId(id)], [`${at}.${is.when}`, is.at(check.at)],
-    [`${at}.${is.response}`, answerText(record).slice(0, is.responseLength)], [`${at}.result`, check.correct ? is.correct : is.wrong],
+    [`${at}.${is.response}`, answerText(record).slice(0, is.responseLength)],
+    [`${at}.result`, check.correct ? is.correct : is.wrong],
     ...(check.latencyMs === null ? [] : [[`${at}.latency`, v.elapsed(check.latencyMs)]]),
     ...(is.description ? [[`${at}.description`, `Exercise ${id}`]] : [])];
 }

@@ -26,7 +26,8 @@ import { VERSIONS } from "./versions.js";
 
 const NOTICE = "lms";
 
-const says = (error) => (error?.code ? `error ${error.code}${error.text ? `: ${error.text}` : ""}` : error?.text || "no reason given");
+const says = (error) =>
+  (error?.code ? `error ${error.code}${error.text ? `: ${error.text}` : ""}` : error?.text || "no reason given");
 
 /** Report this page's work through `launch` (null: a page an LMS shows without the workbook's launcher). */
 export function connectLms(progress, launch) {
@@ -45,7 +46,8 @@ class Session {
     this.ids = launch?.ids ?? []; // the launched chapter's exercises: the SCO's score and objectives
     this.started = Date.now();
     this.state = null;
-    this.seen = new Map(); // id -> {attempts, steps, since}: what the last change showed, and when the exercise was last checked
+    // id -> {attempts, steps, since}: what the last change showed, and when the exercise was last checked
+    this.seen = new Map();
     this.graded = new Map(); // id -> the exercise's last graded attempt (attempt.js)
     this.resendAll = true;
     this.calls = { commits: 0 };
@@ -61,12 +63,16 @@ class Session {
   start() {
     if (!this.launch) {
       this.setState(LMS.failed);
-      this.tell("This page was opened by the course without the workbook's launcher, so its results are not sent to the course and your answers are kept only while it is open. Open the chapter from the course's list to have your work counted.");
+      this.tell("This page was opened by the course without the workbook's launcher, so its results are not sent to "
+        + "the course and your answers are kept only while it is open. Open the chapter from the course's list to have "
+        + "your work counted.");
       return;
     }
     if (this.launch.state !== LMS.open) {
       this.setState(LMS.failed);
-      this.tell(`The course's platform did not open a session for this chapter (${says(this.launch.error)}), so its results are not sent to it, and your answers are kept only while it is open. Export your progress to keep it.`);
+      this.tell(`The course's platform did not open a session for this chapter (${says(this.launch.error)}), so its `
+        + "results are not sent to it, and your answers are kept only while it is open. "
+        + "Export your progress to keep it.");
       return;
     }
     this.restore();
@@ -124,19 +130,27 @@ class Session {
       if (!this.resendAll && exercise !== id) return;
       const record = records[exercise] || {};
       const earlier = exercise === id ? check : (record.attempts ?? 0) > 0
-        ? { correct: (record.done ?? []).includes(record.variant ?? 0), latencyMs: null, at: record.updated ?? Date.now() } : null;
-      values.push(...objectiveValues(this.version, i, exercise, record), ...interactionValues(this.version, i, exercise, record, earlier));
+        ? {
+          correct: (record.done ?? []).includes(record.variant ?? 0), latencyMs: null, at: record.updated ?? Date.now(),
+        }
+        : null;
+      values.push(...objectiveValues(this.version, i, exercise, record),
+        ...interactionValues(this.version, i, exercise, record, earlier));
     });
     const { text, dropped } = encodeSuspend(records, this.version);
     this.dropped = dropped;
     const elapsed = Date.now() - this.launch.started; // the launch's time, not this page's
-    values.push(["cmi.suspend_data", text], [this.el.exit, "suspend"], [this.el.time, VERSIONS[this.version].elapsed(elapsed)]);
+    values.push(["cmi.suspend_data", text], [this.el.exit, "suspend"],
+      [this.el.time, VERSIONS[this.version].elapsed(elapsed)]);
     let ok = values.every(([element, value]) => this.lms.set(element, value));
     if (ok) ok = this.lms.commit();
     if (ok) this.calls.commits += 1;
     this.resendAll = !ok;
     if (ok) clearNotice(NOTICE);
-    else if (!final) this.tell(`Your latest work could not be sent to the course's platform (${says(this.lms.lastError)}). Nothing is lost: it is kept in this browser, and sent again with your next check.`);
+    else if (!final) {
+      this.tell(`Your latest work could not be sent to the course's platform (${says(this.lms.lastError)}). `
+        + "Nothing is lost: it is kept in this browser, and sent again with your next check.");
+    }
     return ok;
   }
 
@@ -148,6 +162,7 @@ class Session {
   }
 
   tell(message) {
-    showNotice(NOTICE, "Course platform", message, [{ text: "Export progress", action: "notice-export", run: () => exportProgress(this.progress) }]);
+    showNotice(NOTICE, "Course platform", message,
+      [{ text: "Export progress", action: "notice-export", run: () => exportProgress(this.progress) }]);
   }
 }

@@ -54,8 +54,12 @@ export const COMPACT = {
 
 /** The schema's fields that COMPACT does not answer for, and COMPACT's names that are not in the schema. */
 export function compactCoverage(schema = FIELDS) {
-  const listed = [...COMPACT.flags, ...COMPACT.carried, ...Object.keys(COMPACT.rebuilt), ...Object.keys(COMPACT.dropped)];
-  return { unlisted: Object.keys(schema).filter((f) => !listed.includes(f)), unknown: listed.filter((f) => !(f in schema)) };
+  const listed = [
+    ...COMPACT.flags, ...COMPACT.carried, ...Object.keys(COMPACT.rebuilt), ...Object.keys(COMPACT.dropped)];
+  return {
+    unlisted: Object.keys(schema).filter((f) => !listed.includes(f)),
+    unknown: listed.filter((f) => !(f in schema)),
+  };
 }
 const JSON_PREFIX = "wbj:";
 const COMPACT_PREFIX = "wb1:";
@@ -251,7 +255,8 @@ export function encodeSuspend(exercises, version) {
   return encodeCompact(exercises, suspendLimit);
 }
 
-/** The records in a suspend_data text: {exercises, skipped}, where `skipped` counts records that failed their checks. */
+/** The records in a suspend_data text: {exercises, skipped}, where `skipped` counts records that failed their
+ *  checks. */
 export function decodeSuspend(text) {
   const exercises = {};
   let skipped = 0;
