@@ -45,9 +45,12 @@ export function recordGraded(ctx, request, reply, extra = {}) {
   const { id, progress, variant } = ctx;
   for (const listener of listeners) listener({ id, variant, progress, attempt });
   const before = progress.get(id);
+  /** @type {Record<string, any>} the record's new fields */
   const patch = { ...extra, attempts: (before.attempts || 0) + 1,
-    ...afterGrade(before, variant, attempt.status, { schedule: ctx.reviewed, tag: attempt.tag ?? "", guessable: ctx.guessable }) };
-  if (attempt.status === STATE.incorrect && attempt.slip) patch.slips = countSlip(before.slips, attempt.slip); // for the class page
+    ...afterGrade(before, variant, attempt.status,
+      { schedule: ctx.reviewed, tag: attempt.tag ?? "", guessable: ctx.guessable }) };
+  // for the class page
+  if (attempt.status === STATE.incorrect && attempt.slip) patch.slips = countSlip(before.slips, attempt.slip);
   if (attempt.status === STATE.correct && !before.solved) {
     patch.solved = true;
     patch.solvedAfterReveal = Boolean(before.revealedIn?.includes(variant) ?? before.revealed);

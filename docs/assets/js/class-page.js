@@ -190,7 +190,8 @@ export async function initClassPage(shared, siteRoot) {
     root.dataset.wbVerified = String(state.rows.reduce((n, r) => n + Object.values(r.learner.cells).filter((c) => c.verified).length, 0));
     root.dataset.wbGraded = String(state.learners.length);
   }
-  root.wbTake = take; // the bench hands files in this way
+  // the bench hands files in this way
+  /** @type {HTMLElement & { wbTake?: typeof take }} */ (root).wbTake = take;
   input.addEventListener("change", () => take([...input.files]));
   zone.addEventListener("dragover", (event) => event.preventDefault());
   zone.addEventListener("drop", (event) => {

@@ -25,6 +25,11 @@ function chapterPage(href) {
  * back to the chapter ("From <chapter>" then `from`), with `after` below it. Resolves to the
  * exercise element, not yet started (the caller starts it with initExercise); rejects with an
  * Error whose message says why it could not be loaded.
+ * @param {HTMLElement} slot
+ * @param {any} manifest
+ * @param {string} id
+ * @param {string} siteRoot
+ * @param {{ from?: string | ((node: HTMLElement) => string), after?: Node[] }} [options]
  */
 export async function showExerciseCard(slot, manifest, id, siteRoot, { from = ".", after = [] } = {}) {
   const chapter = manifest.chapters.find((c) => c.ids.includes(id));
@@ -34,8 +39,10 @@ export async function showExerciseCard(slot, manifest, id, siteRoot, { from = ".
   const found = doc.querySelector(`[${ATTR.exercise}="${CSS.escape(id)}"]`);
   if (!found) throw new Error(`exercise ${id} is not on its chapter page`);
   const node = document.importNode(found, true);
-  const heading = el("h2", { id: `${node.id}-title` }, el("span", { id: `${node.id}-name`, textContent: `${id} · ${manifest.titles?.[id] ?? ""}` }));
-  const line = el("p", { className: "wb-practise-from" }, "From ", el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }),
+  const heading = el("h2", { id: `${node.id}-title` },
+    el("span", { id: `${node.id}-name`, textContent: `${id} · ${manifest.titles?.[id] ?? ""}` }));
+  const line = el("p", { className: "wb-practise-from" },
+    "From ", el("a", { href: `${href}#${node.id}-title`, textContent: chapter.title }),
     typeof from === "function" ? from(node) : from);
   slot.replaceChildren(heading, line, node, ...after);
   renderMath(node);

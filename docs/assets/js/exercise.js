@@ -17,8 +17,13 @@ export function decodeBase64(text) {
  * Send one request for this exercise and show its reply, on the exercise or, with `on`, on one of
  * its checked steps (steps.js); every request of an exercise goes through here, with the variant on
  * screen. An exercise's graded attempt is recorded. A step's reply that comes back after new numbers
- * were drawn is stale: it is dropped (null), and steps.js records the step's own verdicts. With `via`, the request
- * goes through another runtime than the page's (kinds/build.js: the one whose runs go to the sandbox).
+ * were drawn is stale: it is dropped (null), and steps.js records the step's own verdicts. With `via`, the
+ * request goes through another runtime than the page's (kinds/build.js: the one whose runs go to the sandbox).
+ * @param {any} ctx the exercise's context (initExercise)
+ * @param {string} op
+ * @param {object} payload
+ * @param {{ limitMs?: number, onProgress?: Function, onWait?: Function, saved?: object, on?: HTMLElement,
+ *   via?: any }} [options]
  */
 async function submit(ctx, op, payload,
   { limitMs, onProgress, onWait, saved = {}, on = ctx.el, via = ctx.runtime } = {}) {

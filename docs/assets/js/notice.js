@@ -19,7 +19,7 @@ export function download(name, text, type = "application/json") {
 export function showNotice(key, title, text, buttons = []) {
   const main = document.querySelector(".md-content__inner");
   if (!main) return null;
-  let box = main.querySelector(`[data-wb-notice="${key}"]`);
+  let box = /** @type {HTMLElement | null} */ (main.querySelector(`[data-wb-notice="${key}"]`));
   if (!box) {
     box = document.createElement("div");
     box.className = "admonition warning wb-notice";
@@ -64,6 +64,7 @@ export function showProgressProblems(progress) {
   for (const problem of progress.problems) {
     if (problem.shown && problem.kind === "set-aside") continue;
     problem.shown = true;
+    /** @type {{ text: string, action: string, run: () => unknown }[]} */
     const buttons = [{ text: "Export progress", action: "notice-export", run: () => exportProgress(progress) }];
     if (problem.download) {
       const { name, text } = problem.download;

@@ -18,7 +18,11 @@ export function formatSize(bytes) {
   return mb >= 10 ? `${Math.round(mb)} MB` : `${mb.toFixed(1)} MB`;
 }
 
-/** `el` (progress-ui.js) with a contract role. */
+/**
+ * `el` (progress-ui.js) with a contract role.
+ * @param {string} tag
+ * @param {{ role?: string, className?: string, text?: string }} [options]
+ */
 function element(tag, { role, className = "", text = "" } = {}) {
   const node = el(tag, { className, textContent: text });
   if (role) node.setAttribute(ATTR.role, role);

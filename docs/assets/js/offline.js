@@ -189,7 +189,7 @@ export function registerOffline(siteRoot, progress = null) {
       setFooter({ ...status, state: "copying" }, actions);
       await runtimeSettled();
       const agreed = new Promise((resolve) => showNotice({ mode: "announce", totalBytes: status.totalBytes, wireBytes: status.wireBytes },
-        { ...actions, onOK: resolve }));
+        { ...actions, onOK: () => resolve(undefined) }));
       await Promise.race([delay(READ_MS), agreed]);
       await idle(2000);
       if (note.get("declined") || last.state === "complete" || started) return;

@@ -146,7 +146,7 @@ function buildPanel(panel, manifest, progress) {
 
 /** Build (once) and refresh the panel of every [data-wb-progress-panel] on the page. */
 export function progressPanel(manifest, progress, siteRoot) {
-  for (const panel of document.querySelectorAll("[data-wb-progress-panel]")) {
+  for (const panel of /** @type {NodeListOf<HTMLElement>} */ (document.querySelectorAll("[data-wb-progress-panel]"))) {
     if (!panel.dataset.wbBuilt) buildPanel(panel, manifest, progress);
     panel.querySelector("[data-wb-progress-table-wrap]").replaceChildren(table(manifest, progress, siteRoot));
   }

@@ -21,7 +21,8 @@ const pathOf = (href) => {
 // ---- At a glance ------------------------------------------------------------
 function markNavigation(manifest, progress, siteRoot) {
   const done = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, tally(manifest, progress, c.ids).done]));
-  for (const link of document.querySelectorAll(".md-nav--primary a.md-nav__link")) {
+  const links = /** @type {NodeListOf<HTMLAnchorElement>} */ (document.querySelectorAll(".md-nav--primary a.md-nav__link"));
+  for (const link of links) {
     const url = new URL(link.href);
     const finished = !url.hash && done.get(url.pathname);
     const mark = link.querySelector(".wb-nav-done");
@@ -37,7 +38,7 @@ function chapterSummary(manifest, progress, siteRoot) {
   const article = document.querySelector(".md-content__inner");
   if (!chapter || !article) return;
   const count = tally(manifest, progress, chapter.ids);
-  let box = article.querySelector("[data-wb-chapter-progress]");
+  let box = /** @type {HTMLElement | null} */ (article.querySelector("[data-wb-chapter-progress]"));
   if (!box) {
     box = el("div", { className: "wb-chapter-progress" });
     box.dataset.wbChapterProgress = "";
@@ -68,11 +69,12 @@ function overallSummary(manifest, progress, siteRoot) {
   }
   // The count beside each chapter of the page's own list (the home page).
   const byPath = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, c]));
-  for (const link of document.querySelectorAll(".md-content__inner li > a[href]")) {
+  const listed = /** @type {NodeListOf<HTMLAnchorElement>} */ (document.querySelectorAll(".md-content__inner li > a[href]"));
+  for (const link of listed) {
     const chapter = byPath.get(pathOf(link.href));
     if (!chapter) continue;
     const count = tally(manifest, progress, chapter.ids);
-    let badge = link.parentElement.querySelector("[data-wb-badge]");
+    let badge = /** @type {HTMLElement | null} */ (link.parentElement.querySelector("[data-wb-badge]"));
     if (!badge) {
       badge = el("span", { className: "wb-badge" });
       badge.dataset.wbBadge = "";

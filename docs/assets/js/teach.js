@@ -18,7 +18,7 @@ export const isLocal = (href) => {
 
 /** The site's public root from the page's canonical link (site_url + the page's path), or null. */
 function publicRoot(siteRoot) {
-  const canonical = document.querySelector('link[rel="canonical"]')?.href;
+  const canonical = /** @type {HTMLLinkElement | null} */ (document.querySelector('link[rel="canonical"]'))?.href;
   const path = new URL(location.href).pathname.slice(new URL(siteRoot).pathname.length);
   if (!canonical || !new URL(canonical).pathname.endsWith(path)) return null;
   const root = new URL(canonical);
