@@ -15,8 +15,10 @@ export const MAX_VARIANT = LIMIT.variant;
 /** `text` as the hash reads it: NFC, runs of whitespace as one space, trimmed. */
 export function tidy(text) {
   // Python's str.split/\s and JavaScript's \s differ on a few characters: this is the one list both use.
-  // eslint-disable-next-line no-control-regex -- U+001C to U+001F are white space to Python's str.split
-  return String(text).normalize("NFC").replace(/[\t\n\v\f\r \u001c-\u001f\u0085\u00a0\u1680\u2000-\u200a\u2028\u2029\u202f\u205f\u3000]+/gu, " ").replace(/^ +| +$/g, "");
+  return String(text).normalize("NFC")
+    // eslint-disable-next-line no-control-regex -- U+001C to U+001F are white space to Python's str.split
+    .replace(/[\t\n\v\f\r \u001c-\u001f\u0085\u00a0\u1680\u2000-\u200a\u2028\u2029\u202f\u205f\u3000]+/gu, " ")
+    .replace(/^ +| +$/g, "");
 }
 
 // Python's str.casefold and its Unicode version's unassigned code points, from the table

@@ -38,22 +38,28 @@ export function assignmentHref(siteRoot, { code, ids, due }) {
 export function readAssignment(hash, known) {
   const params = new URLSearchParams(String(hash).replace(/^#/, ""));
   const code = classKey(params.get("class") ?? "");
-  if (!code) return { ok: false, reason: "This link names no class code: ask your teacher for the assignment's link again." };
-  if (code.length > CLASS_CAP) return { ok: false, reason: `This link's class code is longer than ${CLASS_CAP} characters.` };
+  if (!code) return { ok: false, reason: "This link names no class code: ask your teacher for the assignment's link "
+    + "again." };
+  if (code.length > CLASS_CAP) return { ok: false,
+    reason: `This link's class code is longer than ${CLASS_CAP} characters.` };
   const asked = (params.get("ex") ?? "").split(",").map((s) => s.trim()).filter(Boolean);
   const unknown = asked.filter((id) => !known.includes(id));
-  if (unknown.length) return { ok: false, reason: `This link sets exercise ${unknown.slice(0, 3).map((id) => `“${id.slice(0, 12)}”`).join(", ")}, which this workbook does not have.` };
+  if (unknown.length) return { ok: false,
+    reason: `This link sets exercise ${unknown.slice(0, 3).map((id) => `“${id.slice(0, 12)}”`).join(", ")}, which this `
+    + `workbook does not have.` };
   if (!asked.length) return { ok: false, reason: "This link sets no exercises." };
   const ids = known.filter((id) => asked.includes(id));
   const due = params.get("due") || null;
   if (due !== null && !isDate(due)) {
-    return { ok: false, reason: `This link's due date “${due.slice(0, 20)}” is not a day of the calendar (a date reads like 2026-12-01): ask your teacher for the link again.` };
+    return { ok: false, reason: `This link's due date “${due.slice(0, 20)}” is not a day of the calendar (a date reads `
+      + `like 2026-12-01): ask your teacher for the link again.` };
   }
   return { ok: true, code, ids, due };
 }
 
 /** Where the learner's name or student number is kept (this site, this browser). */
-export const studentKey = (siteRoot) => `robotics-workbook:${new URL(siteRoot).pathname.replace(/\/+$/, "") || "/"}:student`;
+export const studentKey = (siteRoot) => `robotics-workbook:${new URL(siteRoot).pathname.replace(/\/+$/,
+  "") || "/"}:student`;
 
 export function savedStudent(siteRoot) {
   try {

@@ -27,7 +27,8 @@ const { attr: A, action: ACTION, field: FIELD } = COURSE;
 const records = new Map(); // learner key -> Progress: one store per learner for this page's life
 let stopRecording = () => {};
 
-/** The learner's own record store; the first time, the assignments' answers kept before records were per learner come along (adoptOnce). */
+/** The learner's own record store; the first time, the assignments' answers kept before records were per learner come
+ * along (adoptOnce). */
 async function ownRecord(siteRoot, shared, student, first) {
   const key = await learnerKey(student);
   if (!records.has(key)) {
@@ -36,7 +37,8 @@ async function ownRecord(siteRoot, shared, student, first) {
     // The page kept the student it last knew and their assignment answers in the browser's one record: that
     // student's own, once; any other student starts empty.
     if (first && adoptOnce(siteRoot)) {
-      const carried = Object.entries(shared.progress.all()).filter(([, r]) => r.assigned).map(([id, r]) => [id, { assigned: r.assigned }]);
+      const carried = Object.entries(shared.progress.all()).filter(([, r]) => r.assigned).map(([id, r]) => [id,
+        { assigned: r.assigned }]);
       if (carried.length) mine.merge(Object.fromEntries(carried));
     }
     showProgressProblems(mine);
@@ -50,8 +52,11 @@ function askStudent(root, siteRoot, then) {
   const say = el("p", { role: "status", className: "wb-course-status" });
   const form = el("form", { className: "wb-student-form" },
     el("label", { htmlFor: input.id, textContent: "Your name or student number (as your teacher asked)" }), input,
-    el("p", { className: "wb-course-help", textContent: "Asked once and kept in this browser only. Your numbers come from it: type it the same way on every device (capital letters and extra spaces do not matter)." }),
-    el("div", { className: "wb-course-actions" }, el("button", { type: "submit", className: "md-button md-button--primary", textContent: "Start" })), say);
+    el("p", { className: "wb-course-help",
+    textContent: "Asked once and kept in this browser only. Your numbers come from it: type it the same way on every "
+    + "device (capital letters and extra spaces do not matter)." }),
+    el("div", { className: "wb-course-actions" }, el("button", { type: "submit",
+    className: "md-button md-button--primary", textContent: "Start" })), say);
   form.addEventListener("submit", (event) => {
     event.preventDefault();
     const id = tidy(input.value);
@@ -60,7 +65,8 @@ function askStudent(root, siteRoot, then) {
       input.setAttribute("aria-invalid", "true");
       return;
     }
-    if (!saveStudent(siteRoot, id)) say.textContent = "This browser does not let the page keep it: you will be asked again next time.";
+    if (!saveStudent(siteRoot, id)) say.textContent =
+      "This browser does not let the page keep it: you will be asked again next time.";
     then(id);
   });
   root.replaceChildren(form);
@@ -72,7 +78,8 @@ function markVariant(node, assigned, back) {
   const label = ownRole(node, ROLE.variantLabel);
   const mine = Number(node.getAttribute(ATTR.variant)) === assigned;
   node.setAttribute(A.assigned, String(mine));
-  if (label) label.textContent = mine ? "Your assignment's numbers: these count" : "Practice numbers (not counted): your assignment's are one click away";
+  if (label) label.textContent = mine ? "Your assignment's numbers: these count" :
+    "Practice numbers (not counted): your assignment's are one click away";
   back.hidden = mine;
 }
 
@@ -83,18 +90,23 @@ function lastAssigned(progress, key, id, variant) {
 }
 
 async function showExercise(slot, manifest, id, siteRoot, mine, variant, key) {
-  const back = el("button", { type: "button", className: "md-button", textContent: "Back to your assignment's numbers", hidden: true });
+  const back = el("button", { type: "button", className: "md-button", textContent: "Back to your assignment's numbers",
+    hidden: true });
   back.setAttribute(A.action, ACTION.assignedNumbers);
   const node = await showExerciseCard(slot, manifest, id, siteRoot, { after: [back] });
   if (variant) {
-    new MutationObserver(() => markVariant(node, variant, back)).observe(node, { attributes: true, attributeFilter: [ATTR.variant] });
-    back.addEventListener("click", () => showExercise(slot, manifest, id, siteRoot, mine, variant, key).then(() => slot.querySelector("h2")?.focus?.()));
+    new MutationObserver(() => markVariant(node, variant, back)).observe(node, { attributes: true,
+      attributeFilter: [ATTR.variant] });
+    back.addEventListener("click", () => showExercise(slot, manifest, id, siteRoot, mine, variant,
+      key).then(() => slot.querySelector("h2")?.focus?.()));
   }
   // A reload, or the way back from practice numbers, shows the last answer given to the assignment's numbers.
-  initExercise(node, { ...mine, ...(variant ? { start: variant, resume: lastAssigned(mine.progress, key, id, variant) } : {}) });
+  initExercise(node, { ...mine, ...(variant ? { start: variant, resume: lastAssigned(mine.progress, key, id,
+    variant) } : {}) });
 }
 
-/** The grader's {version, bank}, if it is running and can say ({"op": "version"}); null otherwise (a hand-in never waits for it). */
+/** The grader's {version, bank}, if it is running and can say ({"op": "version"}); null otherwise (a hand-in never
+ * waits for it). */
 async function graderVersion(runtime) {
   if (document.documentElement.getAttribute(ATTR.runtime) !== RUNTIME.ready) return null;
   try {
@@ -126,7 +138,8 @@ export async function initAssignment(shared, siteRoot) {
     stopRecording();
     const drawing = new Set(manifest.variants || []);
     const variants = new Map();
-    for (const id of assignment.ids) variants.set(id, drawing.has(id) ? await assignedVariant(assignment.code, student, id) : 0);
+    for (const id of assignment.ids) variants.set(id, drawing.has(id) ? await assignedVariant(assignment.code, student,
+      id) : 0);
     const mine = { ...shared, progress: await ownRecord(siteRoot, shared, student, first) };
     // Every graded attempt of this learner's exercises at the assignment's numbers is kept for the hand-in.
     stopRecording = onAttempt(({ id, variant, progress, attempt }) => {
@@ -140,15 +153,18 @@ export async function initAssignment(shared, siteRoot) {
     const said = el("p", { role: "status", className: "wb-course-status" });
     const due = assignment.due ? ` Due ${assignment.due}.` : "";
     const head = el("div", { className: "wb-assignment-head" },
-      el("p", {}, el("strong", { textContent: `Class ${assignment.code}` }), `: ${assignment.ids.length} exercise${assignment.ids.length === 1 ? "" : "s"}, for `,
+      el("p", {}, el("strong", { textContent: `Class ${assignment.code}` }), `: ${assignment.ids.length} `
+      + `exercise${assignment.ids.length === 1 ? "" : "s"}, for `,
         el("strong", { textContent: student }), `.${due}`));
     head.setAttribute(A.student, student);
     const list = el("ol", { className: "wb-assignment-list" });
     const tail = el("div", { className: "wb-assignment-tail" },
-      el("p", { textContent: "When you are done, hand in: this saves a file with your answers to these exercises, for your teacher. Nothing is sent: give the file to your teacher the way they asked." }),
+      el("p", { textContent: "When you are done, hand in: this saves a file with your answers to these exercises, for "
+      + "your teacher. Nothing is sent: give the file to your teacher the way they asked." }),
       el("div", { className: "wb-course-actions" }, hand, change), said);
     root.replaceChildren(head, list, tail);
-    hand.addEventListener("click", async () => { said.textContent = `Saved ${await handIn(mine, assignment, student)}. Hand that file in.`; });
+    hand.addEventListener("click", async () => { said.textContent = `Saved ${await handIn(mine, assignment,
+      student)}. Hand that file in.`; });
     change.addEventListener("click", () => {
       stopRecording();
       askStudent(root, siteRoot, start);
@@ -158,7 +174,8 @@ export async function initAssignment(shared, siteRoot) {
       slot.setAttribute(A.slot, id);
       list.append(slot);
       showExercise(slot, manifest, id, siteRoot, mine, variants.get(id), assignment.code).catch((err) => {
-        slot.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Reload the page to try again.` }));
+        slot.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Reload the `
+          + `page to try again.` }));
       });
     }
   };

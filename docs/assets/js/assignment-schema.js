@@ -10,7 +10,8 @@
 // values an attempt carries are checked as every record's are (record-checks.js).
 
 import { LIMIT } from "./contract.js";
-import { FORBIDDEN_KEYS, isAnswer, isGiven, isObject, isShort, isStepAnswers, isVariant, keysOk } from "./record-checks.js";
+import { FORBIDDEN_KEYS, isAnswer, isGiven, isObject, isShort, isStepAnswers, isVariant,
+  keysOk } from "./record-checks.js";
 
 export const MAX_SLIPS = 24;
 export const SLIP_NAME_CAP = LIMIT.slipName; // workbook/assignment.py NAME_CAP
@@ -25,7 +26,8 @@ export const isSlips = (v) => keysOk(v, MAX_SLIPS, (k) => k.length >= 1 && k.len
 // carried) or a graded Build run (`code`: the code that ran, when it fits LIMIT.code): attempt.js.
 const ATTEMPT_KEYS = ["answer", "code", "status", "tag", "slip", "at", "steps", "given"];
 export const isAttempt = (a) => isObject(a) && Object.keys(a).every((k) => ATTEMPT_KEYS.includes(k))
-  && (a.answer === undefined ? a.code === undefined || isShort(a.code, LIMIT.code) : a.code === undefined && isAnswer(a.answer))
+  && (a.answer === undefined ? a.code === undefined || isShort(a.code, LIMIT.code) : a.code === undefined
+  && isAnswer(a.answer))
   && ["correct", "incorrect"].includes(a.status) && TIME_OK(a.at)
   && (a.tag === undefined || isShort(a.tag, 40)) && (a.slip === undefined || isShort(a.slip, SLIP_NAME_CAP))
   && (a.steps === undefined || isStepAnswers(a.steps)) && (a.given === undefined || isGiven(a.given));
@@ -65,11 +67,13 @@ export function mergeAssigned(a = {}, b = {}) {
     }
     const seen = new Map();
     for (const attempt of [...x.attempts, ...y.attempts]) seen.set(attemptKey(attempt), attempt);
-    const attempts = [...seen.values()].sort((p, q) => p.at - q.at || (attemptKey(p) < attemptKey(q) ? -1 : 1)).slice(-MAX_ATTEMPTS);
+    const attempts = [...seen.values()].sort((p, q) => p.at - q.at || (attemptKey(p) < attemptKey(q) ? -1 : 1))
+      .slice(-MAX_ATTEMPTS);
     const newer = latest(y) > latest(x) || (latest(y) === latest(x) && y.variant > x.variant) ? y : x;
     out[key] = { variant: newer.variant, attempts };
   }
-  const keys = Object.keys(out).sort((p, q) => latest(out[q]) - latest(out[p]) || (p < q ? -1 : 1)).slice(0, MAX_CLASSES);
+  const keys = Object.keys(out).sort((p, q) => latest(out[q]) - latest(out[p]) || (p < q ? -1 : 1)).slice(0,
+    MAX_CLASSES);
   return Object.fromEntries(keys.sort().map((k) => [k, out[k]]));
 }
 

@@ -30,7 +30,8 @@ export function attemptOf(request, reply, at = Date.now()) {
     : { answer: request.answer };
   const filled = (v) => v && Object.keys(v).length > 0;
   return { ...what, status, at, ...(tag ? { tag } : {}), ...(data?.slip ? { slip: data.slip } : {}),
-    ...(filled(request.steps) ? { steps: request.steps } : {}), ...(filled(request.given) ? { given: request.given } : {}) };
+    ...(filled(request.steps) ? { steps: request.steps } : {}),
+    ...(filled(request.given) ? { given: request.given } : {}) };
 }
 
 /**

@@ -16,7 +16,8 @@ export function csvQuote(v) {
 const line = (cells) => cells.map(csvQuote).join(",");
 const lines = (rows) => `${rows.map(line).join("\r\n")}\r\n`;
 
-export const LONG_COLUMNS = ["student", "file", "class", "handedIn", "late", "exercise", "variant", "solved (claimed)", "verified",
+export const LONG_COLUMNS = ["student", "file", "class", "handedIn", "late", "exercise", "variant", "solved (claimed)",
+  "verified",
   "changed since hand-in", "attempts", "hint", "derivation", "steps", "carried", "note"];
 
 /** One line per learner (every file's, the rows' other files too) and exercise set. */
@@ -26,8 +27,10 @@ export function toCSV(learners, ids) {
     for (const id of ids) {
       const c = l.cells[id];
       if (!c) continue;
-      out.push([l.student, l.file, l.code ?? "", l.handedIn ?? "", l.late ? "yes" : l.late === false ? "no" : "", id, c.variant,
-        yes(c.claimed), yes(c.verified), yes(c.changed), c.attempts, yes(c.hinted), yes(c.revealed), yes(c.stepped), yes(c.carried), c.note]);
+      out.push([l.student, l.file, l.code ?? "", l.handedIn ?? "", l.late ? "yes" : l.late === false ? "no" : "", id,
+        c.variant,
+        yes(c.claimed), yes(c.verified), yes(c.changed), c.attempts, yes(c.hinted), yes(c.revealed), yes(c.stepped),
+        yes(c.carried), c.note]);
     }
   }
   return lines(out);
@@ -37,7 +40,8 @@ export function toCSV(learners, ids) {
 export const gradeMark = (c) => (c ? (c.verified ? 1 : 0) : "");
 
 // Canvas's names for the columns that say who a row is (Student, SIS User ID, SIS Login ID, Section); Moodle maps any.
-export const GRADEBOOK_COLUMNS = ["Student", "SIS User ID", "SIS Login ID", "Section", "Handed in", "Late", "Score", "Out of"];
+export const GRADEBOOK_COLUMNS = ["Student", "SIS User ID", "SIS Login ID", "Section", "Handed in", "Late", "Score",
+  "Out of"];
 
 /** One line per student (the shown file of each hand-in's row; a progress export names no student and is left out):
  *  id, name, class, handed in, late, score, each exercise's mark. */
@@ -46,7 +50,8 @@ export function toGradebook(rows, ids) {
   for (const { learner: l } of rows) {
     if (l.kind !== "hand-in") continue;
     const set = ids.filter((id) => l.cells[id]);
-    out.push([l.name ?? l.student, l.student, l.student, l.code ?? "", l.handedIn ?? "", l.late ? "yes" : l.late === false ? "no" : "",
+    out.push([l.name ?? l.student, l.student, l.student, l.code ?? "", l.handedIn ?? "",
+      l.late ? "yes" : l.late === false ? "no" : "",
       set.filter((id) => l.cells[id].verified).length, set.length, ...ids.map((id) => gradeMark(l.cells[id]))]);
   }
   return lines(out);

@@ -20,9 +20,11 @@ const isObject = (v) => v !== null && typeof v === "object" && !Array.isArray(v)
 
 class FileProblem extends Error {}
 
-/** One file's text -> a learner {student, code, ids, due, records, kind} or throws FileProblem (its message is for the page). */
+/** One file's text -> a learner {student, code, ids, due, records, kind} or throws FileProblem (its message is for the
+ * page). */
 export function readLearner(name, text, known) {
-  if (typeof text !== "string" || text.length > MAX_FILE_BYTES) throw new FileProblem(`is larger than ${groupDigits(MAX_FILE_BYTES)} characters`);
+  if (typeof text !== "string" || text.length > MAX_FILE_BYTES) throw new FileProblem(`is larger than ${groupDigits(
+    MAX_FILE_BYTES)} characters`);
   let data;
   try {
     data = JSON.parse(text);
@@ -34,9 +36,11 @@ export function readLearner(name, text, known) {
     const parsed = parseImport(text, known);
     if (!parsed.ok) throw new FileProblem(`is not a readable progress export: ${parsed.reason}`);
     const ids = [...known].filter((id) => parsed.exercises[id]);
-    return { kind: "progress", student: name.replace(/\.json$/i, ""), name: null, code: null, ids, due: null, handedIn: isoTime(data.exported), records: parsed.exercises };
+    return { kind: "progress", student: name.replace(/\.json$/i, ""), name: null, code: null, ids, due: null,
+      handedIn: isoTime(data.exported), records: parsed.exercises };
   }
-  if (data.format !== HAND_IN_FORMAT) throw new FileProblem("is not a hand-in or a progress export (its “format” is missing or different)");
+  if (data.format !== HAND_IN_FORMAT) throw new FileProblem(
+    "is not a hand-in or a progress export (its “format” is missing or different)");
   const read = readHandIn(data, known); // hand-in.js: the format's one home
   if (!read.ok) throw new FileProblem(read.reason);
   return { name: null, ...read.learner };
@@ -44,7 +48,8 @@ export function readLearner(name, text, known) {
 
 /** An ISO time as the file gives it (the student's clock), or null when absent or not a time. */
 function isoTime(v) {
-  return typeof v === "string" && v.length <= 40 && Number.isFinite(Date.parse(v)) ? new Date(Date.parse(v)).toISOString() : null;
+  return typeof v === "string" && v.length <= 40 && Number.isFinite(Date.parse(v)) ? new Date(Date.parse(v))
+    .toISOString() : null;
 }
 
 /**
@@ -67,7 +72,8 @@ async function grade(runtime, request) {
   return reply.ok ? reply.value : { error: reply.error };
 }
 
-const STOPPED = { [ERROR.timeout]: "did not finish in time", [ERROR.crash]: "crashed the sandbox", [ERROR.memory]: "ran out of memory" };
+const STOPPED = { [ERROR.timeout]: "did not finish in time", [ERROR.crash]: "crashed the sandbox", [ERROR.memory]:
+  "ran out of memory" };
 
 /**
  * A claimed Build solve: the record's code run again (`runtime` is withSandbox's). Sets the
@@ -78,7 +84,9 @@ async function rerun(cell, runtime, id, v, code, onProgress) {
   const reply = await runtime.request({ op: "run", exercise: id, variant: v, code }, { onProgress });
   if (!reply.ok) {
     if (reply.error.kind === ERROR.wrongOp) return;
-    cell.note = STOPPED[reply.error.kind] ? `its code, run again here, ${STOPPED[reply.error.kind]}` : `its code could not be run again here: ${reply.error.message}`;
+    cell.note = STOPPED[reply.error.kind]
+      ? `its code, run again here, ${STOPPED[reply.error.kind]}` : `its code could not be run again `
+      + `here: ${reply.error.message}`;
     return;
   }
   cell.regraded = true;
@@ -96,11 +104,13 @@ function slipOf(verdict) {
 }
 
 async function gradeAttempts(cell, runtime, id, v, attempts) {
-  const verdicts = await Promise.all(attempts.map((attempt) => grade(runtime, { exercise: id, variant: v, answer: attempt.answer,
+  const verdicts = await Promise.all(attempts.map((attempt) => grade(runtime, { exercise: id, variant: v,
+    answer: attempt.answer,
     ...(attempt.steps ? { steps: attempt.steps } : {}), ...(attempt.given ? { given: attempt.given } : {}) })));
   verdicts.forEach((verdict, i) => {
     if (verdict.error) {
-      cell.note ||= verdict.error.kind === "wrong-op" ? "a code exercise: only its recorded code is run again here" : `not re-graded: ${verdict.error.message}`;
+      cell.note ||= verdict.error.kind === "wrong-op"
+        ? "a code exercise: only its recorded code is run again here" : `not re-graded: ${verdict.error.message}`;
       return;
     }
     cell.regraded = true;
@@ -117,7 +127,8 @@ async function gradeAttempts(cell, runtime, id, v, attempts) {
     if (slip) {
       cell.slips[slip.key] = (cell.slips[slip.key] ?? 0) + 1;
       cell.slipText[slip.key] ??= slip.text;
-      if (typeof slip.name === "string") cell.slipNames[slip.name] = slip.key; // the name the student's page recorded it by
+      // the name the student's page recorded it by
+      if (typeof slip.name === "string") cell.slipNames[slip.name] = slip.key;
     }
     const first = verdict.status === "incorrect" ? verdict.data?.steps?.first : null;
     if (typeof first === "string") cell.firstWrongStep[first] = (cell.firstWrongStep[first] ?? 0) + 1;
@@ -145,38 +156,47 @@ export async function gradeLearner(learner, drawing, runtime, onRun = () => {}) 
 
 async function gradeCell(learner, id, drawing, runtime, onRun) {
   const r = learner.records[id] ?? {};
-  const cell = { attempts: 0, claimed: false, verified: false, changed: false, changes: [], toSolve: null, hinted: Boolean(r.hinted), slips: {}, slipText: {}, slipNames: {},
+  const cell = { attempts: 0, claimed: false, verified: false, changed: false, changes: [], toSolve: null,
+    hinted: Boolean(r.hinted), slips: {}, slipText: {}, slipNames: {},
     recordedSlips: isSlips(r.slips) ? r.slips : {}, firstWrongStep: {}, withSteps: 0, note: "" };
   if (learner.kind === "hand-in") {
     const v = drawing.has(id) ? await assignedVariant(learner.code, learner.student, id) : 0;
     const entry = isAssigned(r.assigned) ? r.assigned[learner.code] : undefined;
     const attempts = entry?.attempts ?? [];
     Object.assign(cell, { variant: v, claimed: has(r.done, v) || attempts.some((t) => t.status === "correct"),
-      revealed: has(r.revealedIn, v), stepped: has(r.stepped, v), carried: has(r.carried, v), attempts: attempts.length });
-    if (entry && entry.variant !== v) cell.note = `the file's answers are for numbers ${entry.variant}, not this student's ${v}`;
-    const answers = attempts.filter((t) => t.answer !== undefined); // a Build run's attempt holds its code instead (attempt.js)
+      revealed: has(r.revealedIn, v), stepped: has(r.stepped, v), carried: has(r.carried, v),
+      attempts: attempts.length });
+    if (entry && entry.variant !== v) cell.note = `the file's answers are for numbers ${entry.variant}, not this `
+      + `student's ${v}`;
+    // a Build run's attempt holds its code instead (attempt.js)
+    const answers = attempts.filter((t) => t.answer !== undefined);
     await gradeAttempts(cell, runtime, id, v, answers);
     if (cell.claimed && !answers.length && has(r.done, v)) {
-      const code = attempts.findLast((t) => t.status === "correct" && typeof t.code === "string")?.code ?? r.code; // the code that passed
+      // the code that passed
+      const code = attempts.findLast((t) => t.status === "correct" && typeof t.code === "string")?.code ?? r.code;
       if (typeof code === "string") {
-        cell.attempts = attempts.length || Math.max(1, Number.isSafeInteger(r.attempts) ? r.attempts : 0); // a Build run is an attempt
+        // a Build run is an attempt
+        cell.attempts = attempts.length || Math.max(1, Number.isSafeInteger(r.attempts) ? r.attempts : 0);
         onRun(id, null);
         await rerun(cell, runtime, id, v, code, (text) => onRun(id, text));
         if (cell.verified) cell.toSolve = cell.attempts;
         if (cell.regraded && !cell.verified) cell.changed = true; // the student's page showed it solved
       } else cell.note ||= "the file holds no answer or code to check";
-    } else if (!answers.length && typeof r.code === "string") cell.attempts = attempts.length || (Number.isSafeInteger(r.attempts) ? r.attempts : 0);
+    } else if (!answers.length && typeof r.code === "string") cell.attempts = attempts.length
+      || (Number.isSafeInteger(r.attempts) ? r.attempts : 0);
   } else {
     // A progress export: the last answer, at the numbers it was given for.
     const v = r.variant ?? 0;
     Object.assign(cell, { variant: v, claimed: (r.clean?.length ?? 0) > 0 || (r.steppedDone?.length ?? 0) > 0,
-      revealed: has(r.revealedIn, v), stepped: (r.stepped?.length ?? 0) > 0, carried: (r.carried?.length ?? 0) > 0, attempts: r.attempts ?? 0 });
+      revealed: has(r.revealedIn, v), stepped: (r.stepped?.length ?? 0) > 0, carried: (r.carried?.length ?? 0) > 0,
+      attempts: r.attempts ?? 0 });
     if ((r.last === undefined || r.last === null) && typeof r.code === "string" && has(r.done, v)) {
       onRun(id, null);
       await rerun(cell, runtime, id, v, r.code, (text) => onRun(id, text));
     } else if (r.last !== undefined && r.last !== null && has(r.done, v)) {
       const verdict = await grade(runtime, { exercise: id, variant: v, answer: r.last });
-      if (verdict.error) cell.note = verdict.error.kind === "wrong-op" ? "a code exercise: only its recorded code is run again here" : `not re-graded: ${verdict.error.message}`;
+      if (verdict.error) cell.note = verdict.error.kind === "wrong-op"
+        ? "a code exercise: only its recorded code is run again here" : `not re-graded: ${verdict.error.message}`;
       else {
         cell.regraded = true;
         cell.verified = verdict.status === "correct";

@@ -10,7 +10,8 @@
 
 import { el } from "./progress-view.js";
 
-const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield() : new Promise((r) => setTimeout(r, 0)));
+const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield() : new Promise((r) => setTimeout(r,
+  0)));
 
 export function median(values) {
   if (!values.length) return null;
@@ -33,7 +34,8 @@ export function pointBiserial(hits, scores) {
   return ((m1 - m0) / sd) * Math.sqrt(p * (1 - p));
 }
 
-/** Share solved in the top 27 % by `scores` minus the share in the bottom 27 % (ties by order given); null under 4 students. */
+/** Share solved in the top 27 % by `scores` minus the share in the bottom 27 % (ties by order given); null under 4
+ * students. */
 export function upperLower(hits, scores) {
   const n = hits.length;
   if (n < 4) return null;
@@ -65,10 +67,13 @@ export function exerciseStats(rows, ids, id) {
   }
   const ul = upperLower(hits, rest);
   return {
-    id, set: cells.length, solved: share((c) => c.verified), toSolve: median(cells.filter((c) => c.verified && c.toSolve).map((c) => c.toSolve)),
-    hinted: share((c) => c.hinted), revealed: share((c) => c.revealed), pointBiserial: pointBiserial(hits, rest), upperLower: ul,
+    id, set: cells.length, solved: share((c) => c.verified),
+      toSolve: median(cells.filter((c) => c.verified && c.toSolve).map((c) => c.toSolve)),
+    hinted: share((c) => c.hinted), revealed: share((c) => c.revealed), pointBiserial: pointBiserial(hits, rest),
+    upperLower: ul,
     flagged: ul !== null && ul < 0,
-    slips: [...slips].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1)).slice(0, 3)
+    slips: [...slips].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1))
+    .slice(0, 3)
       .map(([key, m]) => ({ key, ...m })),
     withSteps, steps: [...steps].sort((a, b) => b[1] - a[1]).map(([step, n]) => ({ step, n })),
   };
@@ -89,21 +94,27 @@ const num = (x, d = 2) => (x === null ? "—" : x.toFixed(d).replace("-", "−")
 
 /** The table of statistics. */
 export function statsTable(stats) {
-  const heads = ["Exercise", "Set for", "Solved", "Median attempts to solve", "Opened the hint", "Opened the derivation",
+  const heads = ["Exercise", "Set for", "Solved", "Median attempts to solve", "Opened the hint",
+    "Opened the derivation",
     "Discrimination (point-biserial)", "Upper − lower 27 %", "Most common slips"];
   const body = stats.map((s) => {
     const name = el("th", { scope: "row", textContent: s.id });
     if (s.flagged) {
-      const flag = el("span", { className: "wb-class-warn", textContent: " ⚑ the strongest students miss it more than the weakest" });
+      const flag = el("span", { className: "wb-class-warn",
+        textContent: " ⚑ the strongest students miss it more than the weakest" });
       name.append(flag);
     }
     const slips = s.slips.length ? el("ul", {}, ...s.slips.map((m) => {
-      const li = el("li", { textContent: `${m.text} (${m.learners} student${m.learners === 1 ? "" : "s"}, ${m.answers} answer${m.answers === 1 ? "" : "s"})` });
+      const li = el("li", { textContent: `${m.text} (${m.learners} student${m.learners === 1 ? "" : "s"}, ${m.answers} `
+        + `answer${m.answers === 1 ? "" : "s"})` });
       li.dataset.wbSlip = m.key;
       return li;
     })) : "—";
-    const steps = s.steps.length ? el("p", { className: "wb-class-detail", textContent: `First wrong step, of ${s.withSteps} answers worked in steps: ${s.steps.map((x) => `${x.step} ${x.n}`).join(", ")}` }) : "";
-    const tr = el("tr", {}, name, ...[String(s.set), pct(s.solved), s.toSolve === null ? "—" : String(s.toSolve), pct(s.hinted), pct(s.revealed),
+    const steps = s.steps.length ? el("p", { className: "wb-class-detail",
+      textContent: `First wrong step, of ${s.withSteps} answers worked in `
+      + `steps: ${s.steps.map((x) => `${x.step} ${x.n}`).join(", ")}` }) : "";
+    const tr = el("tr", {}, name, ...[String(s.set), pct(s.solved), s.toSolve === null ? "—" : String(s.toSolve),
+      pct(s.hinted), pct(s.revealed),
       num(s.pointBiserial), num(s.upperLower)].map((t) => el("td", { textContent: t })), el("td", {}, slips, steps));
     tr.dataset.wbStats = s.id;
     if (s.flagged) tr.dataset.wbFlagged = "true";
@@ -111,7 +122,8 @@ export function statsTable(stats) {
   });
   const table = el("table", { className: "wb-class-slips wb-class-stats" },
     el("caption", { textContent: "Per exercise, over the students it was set for (each student's shown file)." }),
-    el("thead", {}, el("tr", {}, ...heads.map((t) => el("th", { scope: "col", textContent: t })))), el("tbody", {}, ...body));
+    el("thead", {}, el("tr", {}, ...heads.map((t) => el("th", { scope: "col", textContent: t })))), el("tbody", {},
+    ...body));
   const wrap = el("div", { className: "wb-class-scroll", tabIndex: 0, role: "region" }, table);
   wrap.setAttribute("aria-label", "Which exercises worked");
   return wrap;

@@ -1,8 +1,8 @@
 // The class page's table (class-page.js): one compact row per student, a score (solved / set),
 // the hand-in's time, and one mark per exercise that reads at a glance: a symbol and a colour
 // (never the colour alone), its words for a screen reader, and the cell's details on demand
-// (each mark a button: its box is built when pressed, so 1,000 rows stay light). The header row and the first column stay in view
-// while the table scrolls inside its own focusable region.
+// (each mark a button: its box is built when pressed, so 1,000 rows stay light). The header row and the first column
+// stay in view while the table scrolls inside its own focusable region.
 
 import { el } from "./progress-view.js";
 
@@ -19,7 +19,8 @@ function symbol(text, className = "wb-class-symbol") {
   span.setAttribute("aria-hidden", "true");
   return span;
 }
-const FLAG_SYMBOL = { duplicate: "⊕", "same-file-name": "≡", "other-class": "≠", progress: "⤓", late: "!", "other-grader": "Δ" };
+const FLAG_SYMBOL = { duplicate: "⊕", "same-file-name": "≡", "other-class": "≠", progress: "⤓", late: "!",
+  "other-grader": "Δ" };
 
 /** The table's cell text and its state, for a learner's exercise. */
 export function cellState(c) {
@@ -42,10 +43,12 @@ function detailLines(c) {
   if (c.carried) bits.push("carried");
   const out = [bits.join(", ")];
   if (c.changed) {
-    out.push(`${CHANGED.symbol} ${CHANGED.text}: ${c.changes.length ? c.changes.map((x) => `an answer the student's page marked ${x.was} grades ${x.now} now`).join("; ")
+    out.push(`${CHANGED.symbol} ${CHANGED.text}: ${c.changes.length ? c.changes.map((x) => `an answer the student's `
+      + `page marked ${x.was} grades ${x.now} now`).join("; ")
       : "the student's page showed it solved, its code does not pass now"}`);
   }
-  for (const [key, n] of Object.entries(c.slips)) out.push(`slip${n > 1 ? ` (${n}×)` : ""}: ${(c.slipText[key] ?? key).replace(/^slip: /, "")}`);
+  for (const [key, n] of Object.entries(c.slips)) out.push(`slip${n > 1 ? ` (${n}×)` : ""}: ${(c.slipText[key] ?? key)
+    .replace(/^slip: /, "")}`);
   if (c.note) out.push(c.note);
   return out;
 }
@@ -63,10 +66,12 @@ function markCell(l, id, label) {
   const td = el("td", {});
   td.dataset.wbCell = state;
   td.dataset.wbExercise = id;
-  const mark = [symbol(MARKS[state].symbol), el("span", { className: "wb-sr-only", textContent: `${label}, ${id}: ${text}` })];
+  const mark = [symbol(MARKS[state].symbol), el("span", { className: "wb-sr-only",
+    textContent: `${label}, ${id}: ${text}` })];
   if (c?.changed) {
     td.dataset.wbChanged = "true";
-    mark.push(symbol(CHANGED.symbol, "wb-class-changed"), el("span", { className: "wb-sr-only", textContent: `, ${CHANGED.text}` }));
+    mark.push(symbol(CHANGED.symbol, "wb-class-changed"), el("span", { className: "wb-sr-only",
+      textContent: `, ${CHANGED.text}` }));
   }
   td.append(c ? opener(...mark) : el("span", { className: "wb-class-mark" }, ...mark));
   return td;
@@ -84,7 +89,8 @@ function studentCell(row) {
     b.dataset.wbFlag = f.kind;
     return b;
   });
-  th.append(opener(name, ...badges, el("span", { className: "wb-sr-only", textContent: ` (${row.flags.map((f) => f.kind.replace(/-/g, " ")).join(", ")})` })));
+  th.append(opener(name, ...badges, el("span", { className: "wb-sr-only",
+    textContent: ` (${row.flags.map((f) => f.kind.replace(/-/g, " ")).join(", ")})` })));
   th.dataset.wbFlags = row.flags.map((f) => f.kind).join(" ");
   return th;
 }
@@ -92,9 +98,12 @@ function studentCell(row) {
 /** The details of the cell `button` opens: a student's flags and other files, or an exercise's mark. */
 function detailsOf(row, ids, id) {
   if (!id) {
-    const older = row.others.map((o) => el("li", { textContent: `${o.file}: handed in ${shownTime(o.handedIn)}, ${scoreOf(o, ids)} of ${setOf(o, ids)} solved (${ids.filter((x) => o.cells[x])
+    const older = row.others.map((o) => el("li",
+      { textContent: `${o.file}: handed in ${shownTime(o.handedIn)}, ${scoreOf(o, ids)} of ${setOf(o,
+      ids)} solved (${ids.filter((x) => o.cells[x])
       .map((x) => `${x} ${MARKS[cellState(o.cells[x]).state].symbol}`).join(", ")})` }));
-    return [el("p", { className: "wb-class-pop-title", textContent: `${row.label}: ${row.learner.file}` }), el("ul", {}, ...row.flags.map((f) => el("li", { textContent: f.text }))),
+    return [el("p", { className: "wb-class-pop-title", textContent: `${row.label}: ${row.learner.file}` }), el("ul", {},
+      ...row.flags.map((f) => el("li", { textContent: f.text }))),
       ...(older.length ? [el("p", { textContent: "Its other files:" }), el("ul", {}, ...older)] : [])];
   }
   const c = row.learner.cells[id];
@@ -168,19 +177,22 @@ export function tableRegion(state, trs) {
     cell.setAttribute("aria-sort", aria(key));
     return cell;
   };
-  const head = el("tr", {}, th("Student", "student"), th("Score", "score"), th("Handed in", "handed-in"), ...ids.map((id) => th(id, id)));
+  const head = el("tr", {}, th("Student", "student"), th("Score", "score"), th("Handed in", "handed-in"),
+    ...ids.map((id) => th(id, id)));
   const rate = (id) => {
     const set = rows.filter((r) => r.learner.cells[id]);
     const n = set.filter((r) => r.learner.cells[id].verified).length;
     return set.length ? `${n} of ${set.length} (${Math.round((100 * n) / set.length)}%)` : "—";
   };
-  const foot = el("tr", {}, el("th", { scope: "row", textContent: "Solved, verified" }), el("td", {}), el("td", {}), ...ids.map((id) => {
+  const foot = el("tr", {}, el("th", { scope: "row", textContent: "Solved, verified" }), el("td", {}), el("td", {}),
+    ...ids.map((id) => {
     const td = el("td", { textContent: rate(id) });
     td.dataset.wbRate = id;
     return td;
   }));
   const table = el("table", { className: "wb-class-table" },
-    el("caption", { textContent: `${rows.length} student${rows.length === 1 ? "" : "s"} × ${ids.length} exercise${ids.length === 1 ? "" : "s"}` }),
+    el("caption", { textContent: `${rows.length} student${rows.length === 1 ? "" : "s"} × ${ids.length} `
+    + `exercise${ids.length === 1 ? "" : "s"}` }),
     el("thead", {}, head), el("tbody", {}, ...trs), el("tfoot", {}, foot));
   table.addEventListener("click", (event) => {
     const button = event.target.closest?.(".wb-class-open");
@@ -206,9 +218,12 @@ export function legend() {
     if (state) li.dataset.wbCell = state;
     return li;
   };
-  return el("ul", { className: "wb-class-legend" }, el("li", { textContent: "Press a column's heading to sort by it, a mark for its details." }), ...Object.entries(MARKS).map(([state, m]) => item(m.symbol, m.text, state)),
+  return el("ul", { className: "wb-class-legend" },
+    el("li", { textContent: "Press a column's heading to sort by it, a mark for its details." }),
+    ...Object.entries(MARKS).map(([state, m]) => item(m.symbol, m.text, state)),
     item(CHANGED.symbol, `${CHANGED.text}: a re-graded verdict differs from the one the student's page showed`),
-    item("late", "handed in after the due date, by the student's clock"), item(FLAG_SYMBOL.duplicate, "more than one file"),
+    item("late", "handed in after the due date, by the student's clock"), item(FLAG_SYMBOL.duplicate,
+    "more than one file"),
     item(FLAG_SYMBOL["other-class"], "another class code"), item(FLAG_SYMBOL.progress, "a progress export"),
     item(FLAG_SYMBOL["same-file-name"], "a file name another student's file had"),
     item(FLAG_SYMBOL["other-grader"], "beside a name: the student's page graded with another grader version"));

@@ -61,14 +61,16 @@ function initHelp(ctx) {
     const hideLabel = showLabel.replace("Show", "Hide");
     revealButton.addEventListener("click", () => {
       if (!panel.dataset.rendered) {
-        panel.innerHTML = `<p class="admonition-title">${panel.dataset.title}</p>${decodeBase64(panel.dataset.content)}`;
+        panel.innerHTML = `<p class="admonition-title">${panel.dataset.title}</p>${decodeBase64(
+          panel.dataset.content)}`;
         panel.dataset.rendered = "true";
         ctx.renderMath?.(panel);
       }
       if (toggle(revealButton, panel, showLabel, hideLabel)) {
         const record = progress.get(id);
         const { variant } = ctx;
-        if (!record.revealedIn?.includes(variant)) progress.update(id, afterReveal(record, variant, { schedule: ctx.reviewed }));
+        if (!record.revealedIn?.includes(variant)) progress.update(id, afterReveal(record, variant,
+          { schedule: ctx.reviewed }));
       }
     });
   }
@@ -88,7 +90,8 @@ function replayEarlySubmit(el, numbersBefore) {
   if (at >= 0) {
     early.splice(at, 1);
     if (el.getAttribute(ATTR.variant) !== numbersBefore) {
-      showMessage(el, "Not checked: this exercise's numbers changed as it started, so the answer you typed was for other numbers. Check your answer to these.");
+      showMessage(el, "Not checked: this exercise's numbers changed as it started, so the answer you typed was for "
+        + "other numbers. Check your answer to these.");
       return;
     }
     form.requestSubmit();

@@ -33,7 +33,8 @@ export function showNotice(key, title, text, buttons = []) {
   if (buttons.length) {
     const row = Object.assign(document.createElement("p"), { className: "wb-notice-actions" });
     for (const { text: label, action, run } of buttons) {
-      const b = Object.assign(document.createElement("button"), { type: "button", className: "md-button", textContent: label });
+      const b = Object.assign(document.createElement("button"), { type: "button", className: "md-button",
+        textContent: label });
       b.dataset.wbAction = action;
       b.addEventListener("click", run);
       row.append(b);
@@ -68,7 +69,8 @@ export function showProgressProblems(progress) {
     const buttons = [{ text: "Export progress", action: "notice-export", run: () => exportProgress(progress) }];
     if (problem.download) {
       const { name, text } = problem.download;
-      buttons.push({ text: "Download the unreadable copy", action: "notice-download", run: () => download(name, text) });
+      buttons.push({ text: "Download the unreadable copy", action: "notice-download", run: () => download(name,
+        text) });
     }
     showNotice(`progress-${problem.kind}`, "Progress", problem.message, buttons);
   }

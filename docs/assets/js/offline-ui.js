@@ -68,10 +68,13 @@ export function showNotice(view, { onStore, onDecline, onOK = () => {} }) {
   const text = element("p");
   if (view.mode === "ask") {
     const why = view.metered === false ? "on a phone that may be on mobile data" : "and your connection looks metered";
-    text.textContent = `Store the workbook in this browser for offline use? It is ${size}, ${why}, so it waits for your word.`;
-    box.append(text, button(`Store (${short})`, ROLE.offlineStore, true, onStore), button("Not now", ROLE.offlineDecline, false, onDecline));
+    text.textContent = `Store the workbook in this browser for offline use? It is ${size}, ${why}, so it waits for `
+      + `your word.`;
+    box.append(text, button(`Store (${short})`, ROLE.offlineStore, true, onStore), button("Not now",
+      ROLE.offlineDecline, false, onDecline));
   } else {
-    text.textContent = `The workbook will store itself in this browser for offline use: ${size}, starting in a few seconds (or at OK).`;
+    text.textContent = `The workbook will store itself in this browser for offline use: ${size}, starting in a few `
+      + `seconds (or at OK).`;
     const ok = () => {
       hideNotice();
       onOK();
@@ -90,7 +93,8 @@ export function hideNotice() {
 let footerView = null;
 let footerActions = {};
 
-/** `view`: {state: "copying"|"complete"|"declined"|"failed"|"partial", bytes, totalBytes, wireBytes, persisted, message}. */
+/** `view`: {state: "copying"|"complete"|"declined"|"failed"|"partial", bytes, totalBytes, wireBytes, persisted,
+ * message}. */
 export function setFooter(view, actions = footerActions) {
   footerView = view;
   footerActions = actions;
@@ -117,10 +121,12 @@ export function drawFooter() {
     // Declined after it started (or once the notice is gone): the copy stops after its current file.
     if (footerActions.onDecline) line.append(" ", button("Stop storing", null, false, footerActions.onDecline));
   } else {
-    const why = view.state === "failed" ? `Not stored for offline use (${view.message}). ` : "Not stored for offline use. ";
+    const why = view.state === "failed" ? `Not stored for offline use (${view.message}). ` :
+      "Not stored for offline use. ";
     line.append(why);
     const download = formatSize(view.wireBytes || view.totalBytes || 0);
-    if (footerActions.onStore) line.append(button(`Store it (${download})`, ROLE.offlineStore, false, footerActions.onStore));
+    if (footerActions.onStore) line.append(button(`Store it (${download})`, ROLE.offlineStore, false,
+      footerActions.onStore));
   }
   footer.append(line);
 }
@@ -131,7 +137,8 @@ export function showUpdate(registration) {
   const bar = element("div", { className: "wb-update" });
   bar.dataset.wbUpdate = "";
   bar.setAttribute("role", "status");
-  const text = element("p", { text: "A new version of the workbook is ready. Reload to use it (your progress is kept)." });
+  const text = element("p", { text: "A new version of the workbook is ready. Reload to use it (your progress is "
+    + "kept)." });
   const reload = button("Reload", null, true, () => {
     reload.disabled = true;
     // The waiting worker takes over; "controllerchange" then reloads every open page.
@@ -169,7 +176,8 @@ export async function remindToExport(progress, siteRoot, note) {
   box.setAttribute("role", "note");
   box.setAttribute("aria-label", "Keep a copy of your progress");
   const title = element("p", { className: "admonition-title", text: "Keep a copy of your progress" });
-  const text = element("p", { text: "This browser may delete what the workbook stored, your progress included, after 7 days without a visit. " });
+  const text = element("p", { text: "This browser may delete what the workbook stored, your progress included, after 7 "
+    + "days without a visit. " });
   const link = element("a", { text: "Export your progress" });
   link.href = new URL("progress/", siteRoot).href;
   text.append(link, " to keep it in a file.");

@@ -180,7 +180,8 @@ export function registerOffline(siteRoot, progress = null) {
         setFooter({ ...status, state: "partial" }, actions);
         await runtimeSettled();
         if (note.get("declined") || last.state !== "partial") return;
-        showNotice({ mode: "ask", totalBytes: status.totalBytes, wireBytes: status.wireBytes, metered: metered() }, actions);
+        showNotice({ mode: "ask", totalBytes: status.totalBytes, wireBytes: status.wireBytes, metered: metered() },
+          actions);
         return;
       }
       // Announced at ready, started once the notice has been there long enough to read (or at
@@ -188,7 +189,8 @@ export function registerOffline(siteRoot, progress = null) {
       setOffline(OFFLINE.caching);
       setFooter({ ...status, state: "copying" }, actions);
       await runtimeSettled();
-      const agreed = new Promise((resolve) => showNotice({ mode: "announce", totalBytes: status.totalBytes, wireBytes: status.wireBytes },
+      const agreed = new Promise((resolve) => showNotice({ mode: "announce", totalBytes: status.totalBytes,
+        wireBytes: status.wireBytes },
         { ...actions, onOK: () => resolve(undefined) }));
       await Promise.race([delay(READ_MS), agreed]);
       await idle(2000);

@@ -29,7 +29,8 @@ export async function initPractise(shared, siteRoot) {
   const { root, manifest } = page;
   const { progress } = shared;
   const status = el("p", { className: "wb-practise-status", role: "status" });
-  const next = el("button", { type: "button", className: "md-button md-button--primary", textContent: "Next exercise" });
+  const next = el("button", { type: "button", className: "md-button md-button--primary",
+    textContent: "Next exercise" });
   next.dataset.wbAction = "next";
   const card = el("div", { className: "wb-practise-card" });
   root.replaceChildren(status, card, el("div", { className: "wb-practise-controls" }, next));
@@ -50,10 +51,12 @@ export async function initPractise(shared, siteRoot) {
     }
     card.replaceChildren(el("p", { className: "wb-practise-loading", textContent: `Loading exercise ${id}…` }));
     try {
-      const node = await showExerciseCard(card, manifest, id, siteRoot, { from: (n) => FRESH[n.getAttribute(ATTR.kind)] ?? "." });
+      const node = await showExerciseCard(card, manifest, id, siteRoot, { from: (n) => FRESH[n.getAttribute(ATTR.kind)]
+        ?? "." });
       initExercise(node, { ...shared, start: freshVariant() });
     } catch (err) {
-      card.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Try the next one, or reload when you are online.` }));
+      card.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Try the next `
+        + `one, or reload when you are online.` }));
     }
     say();
   }
@@ -62,6 +65,7 @@ export async function initPractise(shared, siteRoot) {
   progress.onChange(() => root.isConnected && say());
   await serve(pick(manifest, progress, null, false));
   if (!current) {
-    card.replaceChildren(el("p", { textContent: "Press “Practise another” to start with an exercise of your choosing: the one due soonest, or a new one." }));
+    card.replaceChildren(el("p", { textContent:
+      "Press “Practise another” to start with an exercise of your choosing: the one due soonest, or a new one." }));
   }
 }

@@ -19,7 +19,8 @@ function countCell(value, max, text) {
 }
 
 function row(header, count, tag = "td") {
-  const solvedText = `${count.solved} of ${count.total}${count.afterReveal ? ` (+${count.afterReveal} with help)` : ""}`;
+  const solvedText = `${count.solved} of ${count.total}${count.afterReveal ? ` (+${count.afterReveal} with help)` :
+    ""}`;
   const review = el("td", { className: "wb-review-cell", textContent: count.reviewable ? reviewText(count) : "—" });
   if (count.due) review.classList.add("is-due");
   const tr = el("tr", {},
@@ -41,7 +42,8 @@ function table(manifest, progress, siteRoot) {
   const total = tally(manifest, progress, manifest.chapters.flatMap((c) => c.ids));
   const t = el("table", { className: "wb-progress-table" },
     el("caption", { textContent: "Your progress, chapter by chapter" }),
-    el("thead", {}, el("tr", {}, ...["Chapter", "Solved", "Mastered", "Review"].map((text) => el("th", { scope: "col", textContent: text })))),
+    el("thead", {}, el("tr", {}, ...["Chapter", "Solved", "Mastered", "Review"].map((text) => el("th", { scope: "col",
+    textContent: text })))),
     el("tbody", {}, ...rows),
     el("tfoot", {}, row(el("span", { textContent: "All chapters" }), total, "th")));
   t.dataset.wbProgressTable = "";
@@ -57,7 +59,8 @@ function describeMerge({ added, merged, unchanged }) {
   if (added.length) parts.push(`${added.length} added${list(added)}`);
   if (merged.length) parts.push(`${merged.length} combined with what this browser had${list(merged)}`);
   if (unchanged.length) parts.push(`${unchanged.length} already up to date${list(unchanged)}`);
-  return `Imported a file with ${plural(total, "exercise")}: ${parts.join("; ")}. Nothing was lost: answers, solved marks and review boxes from both are kept.`;
+  return `Imported a file with ${plural(total, "exercise")}: ${parts.join("; ")}. Nothing was lost: answers, solved `
+    + `marks and review boxes from both are kept.`;
 }
 
 // ---- The controls: export, import, reset -------------------------------------------
@@ -98,7 +101,8 @@ function importAction(progress, say, knownIds) {
     file.value = "";
     if (!chosen) return;
     const result = chosen.size > MAX_IMPORT_BYTES
-      ? { ok: false, reason: `The file is too large (${groupDigits(chosen.size)} bytes); a progress file is much smaller.` }
+      ? { ok: false, reason: `The file is too large (${groupDigits(chosen.size)} bytes); a progress file is much `
+      + `smaller.` }
       : parseImport(await chosen.text().catch(() => null), knownIds);
     if (!result.ok) say(`Import refused: ${result.reason} Nothing was changed.`, "error");
     else say(describeMerge(progress.merge(result.exercises)), "ok");
@@ -112,7 +116,8 @@ function resetAction(progress, say) {
   dialog.setAttribute("aria-labelledby", "wb-confirm-title");
   const form = el("form", { method: "dialog" },
     el("p", { id: "wb-confirm-title", className: "wb-confirm-title", textContent: "Erase all progress?" }),
-    el("p", { textContent: "Every answer, solved mark and piece of Build code saved in this browser for this workbook will be erased. Export first if you may want it back." }),
+    el("p", { textContent: "Every answer, solved mark and piece of Build code saved in this browser for this workbook "
+    + "will be erased. Export first if you may want it back." }),
     el("div", { className: "wb-confirm-buttons" },
       el("button", { value: "cancel", className: "md-button", textContent: "Cancel", autofocus: true }),
       el("button", { value: "reset", className: "md-button md-button--primary", textContent: "Erase everything" })));

@@ -20,15 +20,18 @@ const pathOf = (href) => {
 
 // ---- At a glance ------------------------------------------------------------
 function markNavigation(manifest, progress, siteRoot) {
-  const done = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, tally(manifest, progress, c.ids).done]));
-  const links = /** @type {NodeListOf<HTMLAnchorElement>} */ (document.querySelectorAll(".md-nav--primary a.md-nav__link"));
+  const done = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, tally(manifest, progress,
+    c.ids).done]));
+  const links = /** @type {NodeListOf<HTMLAnchorElement>} */ (document.querySelectorAll(
+    ".md-nav--primary a.md-nav__link"));
   for (const link of links) {
     const url = new URL(link.href);
     const finished = !url.hash && done.get(url.pathname);
     const mark = link.querySelector(".wb-nav-done");
     if (finished && !mark) {
       link.append(el("span", { className: "wb-nav-done", title: "All exercises solved" },
-        el("span", { ariaHidden: "true", textContent: "✓" }), el("span", { className: "wb-sr-only", textContent: " (finished)" })));
+        el("span", { ariaHidden: "true", textContent: "✓" }), el("span", { className: "wb-sr-only",
+        textContent: " (finished)" })));
     } else if (!finished && mark) mark.remove();
   }
 }
@@ -49,8 +52,10 @@ function chapterSummary(manifest, progress, siteRoot) {
     else article.prepend(box);
   }
   box.classList.toggle("is-done", count.done);
-  const review = count.reviewable ? [el("span", { className: "wb-bar-note", textContent: `Review: ${reviewText(count)}.` })] : [];
-  const finished = count.done ? [el("span", { className: "wb-bar-note wb-finished", textContent: "✓ Chapter finished." })] : [];
+  const review = count.reviewable ? [el("span", { className: "wb-bar-note",
+    textContent: `Review: ${reviewText(count)}.` })] : [];
+  const finished = count.done ? [el("span", { className: "wb-bar-note wb-finished",
+    textContent: "✓ Chapter finished." })] : [];
   box.replaceChildren(...countBars(count), ...review, ...finished);
 }
 
@@ -64,12 +69,14 @@ function overallSummary(manifest, progress, siteRoot) {
     slot.setAttribute("role", "group");
     slot.setAttribute("aria-label", "Your progress in the whole workbook");
     slot.replaceChildren(...countBars(all),
-      el("span", { className: "wb-bar-note", textContent: `${finished} of ${plural(manifest.chapters.length, "chapter")} finished.` }),
+      el("span", { className: "wb-bar-note",
+      textContent: `${finished} of ${plural(manifest.chapters.length, "chapter")} finished.` }),
       el("span", { className: "wb-bar-note wb-bar-rule", textContent: MASTERY_RULE }));
   }
   // The count beside each chapter of the page's own list (the home page).
   const byPath = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, c]));
-  const listed = /** @type {NodeListOf<HTMLAnchorElement>} */ (document.querySelectorAll(".md-content__inner li > a[href]"));
+  const listed = /** @type {NodeListOf<HTMLAnchorElement>} */ (document.querySelectorAll(
+    ".md-content__inner li > a[href]"));
   for (const link of listed) {
     const chapter = byPath.get(pathOf(link.href));
     if (!chapter) continue;
@@ -92,7 +99,8 @@ function dueSummary(manifest, progress, siteRoot) {
     slot.classList.add("wb-due");
     slot.classList.toggle("is-due", due > 0);
     slot.replaceChildren(el("span", { textContent: `${text} ` }),
-      el("a", { href: new URL("practise/", siteRoot).href, textContent: due ? "Practise now" : "Open the Practise page" }));
+      el("a", { href: new URL("practise/", siteRoot).href,
+      textContent: due ? "Practise now" : "Open the Practise page" }));
   }
 }
 

@@ -66,17 +66,21 @@ export function bar(label, value, max, text, kind) {
 /** The bars for a count: solved, and (where any can be) mastered. */
 export function countBars(count) {
   const extra = count.afterReveal ? ` (+${count.afterReveal} with help)` : "";
-  const out = [bar("Solved", count.solved + count.afterReveal, count.total, `${count.solved} of ${plural(count.total, "exercise")}${extra}`, "solved")];
+  const out = [bar("Solved", count.solved + count.afterReveal,
+    count.total, `${count.solved} of ${plural(count.total, "exercise")}${extra}`, "solved")];
   if (count.masterable) {
-    out.push(bar("Mastered", count.mastered, count.masterable, `${count.mastered} of ${count.masterable} that draw new numbers`, "mastered"));
+    out.push(bar("Mastered", count.mastered,
+      count.masterable, `${count.mastered} of ${count.masterable} that draw new numbers`, "mastered"));
   }
   return out;
 }
 
-export const MASTERY_RULE = "Solved: answered correctly before opening the solution (a Build exercise: all its tests pass; "
+export const MASTERY_RULE = "Solved: answered correctly before opening the solution (a Build exercise: all its tests "
+  + "pass; "
   + `a Debug exercise: the buggy line found). Mastered: solved that way with ${MASTERED} different sets of numbers, `
   + "which only the exercises that draw new numbers (the Derive ones) can offer, so they alone count towards it. "
-  + "Review: Derive, Build and Debug exercises come back when they are due, Derive ones with new numbers and Build ones "
+  + "Review: Derive, Build and Debug exercises come back when they are due, Derive ones with new numbers and Build "
+  + "ones "
   + "with new hidden tests.";
 
 export function reviewText(count) {

@@ -24,12 +24,14 @@
 //   if even that copy fails, nothing is written at all until it succeeds, and
 //   the page offers the unreadable text as a download.
 
-import { mergeData, mergeRecord, salvageRecord, same, canonical, isObject, EXPORT_FORMAT, SCHEMA_VERSION } from "./progress-schema.js";
+import { mergeData, mergeRecord, salvageRecord, same, canonical, isObject, EXPORT_FORMAT,
+  SCHEMA_VERSION } from "./progress-schema.js";
 import { migrateRecord } from "./review.js";
 
 export { MAX_IMPORT_BYTES, parseImport, SCHEMA_VERSION, EXPORT_FORMAT } from "./progress-schema.js";
 
-const FULL = "Your browser's storage for this site is full, so new answers are not saved. Free some space (or export your progress to keep it), then answer again.";
+const FULL = "Your browser's storage for this site is full, so new answers are not saved. Free some space (or export "
+  + "your progress to keep it), then answer again.";
 
 /** localStorage, or null where the browser refuses it (private mode, disabled). */
 function openStorage() {
@@ -65,7 +67,8 @@ function parseStored(raw) {
     throw new Unreadable("it is not valid JSON");
   }
   if (!isObject(data) || !isObject(data.exercises)) throw new Unreadable("it is not a progress record");
-  if ((data.version ?? 0) > SCHEMA_VERSION) throw new Unreadable(`it was written by a newer version of the workbook (${data.version})`);
+  if ((data.version ?? 0) > SCHEMA_VERSION) throw new Unreadable(`it was written by a newer version of the workbook `
+    + `(${data.version})`);
   while ((data.version ?? 0) < SCHEMA_VERSION) {
     const step = MIGRATIONS[data.version ?? 0];
     if (!step) throw new Unreadable(`no migration from version ${data.version}`);
@@ -87,14 +90,16 @@ const emptyData = () => ({ version: SCHEMA_VERSION, exercises: {} });
 export class Progress {
   /**
    * @param {string} siteRoot the site's base address: each site keeps its own record
-   * @param {{learner?: string, memoryOnly?: string}} [options] `learner`: an opaque key (a hash, never a name or an id) that
+   * @param {{learner?: string, memoryOnly?: string}} [options] `learner`: an opaque key (a hash, never a name or an id)
+   *   that
    *   gives one learner of a shared browser a record of their own (the LMS's learner, the assignment's student)
    *   `memoryOnly`: when set, the record is kept in memory only (nothing read or written in
    *   storage), and this text tells the learner why (an LMS that gives no learner id: lms/learner.js)
    */
   constructor(siteRoot, { learner = "", memoryOnly = "" } = {}) {
     const scope = new URL(siteRoot).pathname.replace(/\/+$/, "") || "/";
-    this.key = learner ? `robotics-workbook:${scope}:learner:${learner}:progress` : `robotics-workbook:${scope}:progress`;
+    this.key = learner ? `robotics-workbook:${scope}:learner:${learner}:progress`
+      : `robotics-workbook:${scope}:progress`;
     this.memoryOnly = memoryOnly;
     this.store = memoryOnly ? null : openStorage();
     this.listeners = new Set();
@@ -124,7 +129,8 @@ export class Progress {
       return emptyData();
     }
     if (!this.store) {
-      this.report("unavailable", "This browser does not let the workbook store anything, so your answers last only until you close this page. Export your progress to keep it.");
+      this.report("unavailable", "This browser does not let the workbook store anything, so your answers last only "
+        + "until you close this page. Export your progress to keep it.");
       return emptyData();
     }
     const raw = this.store.getItem(this.key);
@@ -133,13 +139,16 @@ export class Progress {
       const { data, setAside } = parseStored(raw);
       const ids = Object.keys(setAside);
       if (ids.length) {
-        const what = ids.slice(0, 6).map((id) => (isObject(setAside[id]) ? `${id} (${Object.keys(setAside[id]).join(", ")})` : id)).join("; ");
-        this.keepAside(raw, `Part of your saved progress could not be read (exercise ${what}); the rest is shown as usual.`);
+        const what = ids.slice(0, 6).map((id) => (isObject(setAside[id])
+          ? `${id} (${Object.keys(setAside[id]).join(", ")})` : id)).join("; ");
+        this.keepAside(raw, `Part of your saved progress could not be read (exercise ${what}); the rest is shown as `
+          + `usual.`);
       }
       return data;
     } catch (err) {
       if (!(err instanceof Unreadable)) throw err;
-      this.keepAside(raw, `Your saved progress could not be read (${err.message}), so this page starts from an empty record.`);
+      this.keepAside(raw, `Your saved progress could not be read (${err.message}), so this page starts from an empty `
+        + `record.`);
       return emptyData();
     }
   }
@@ -155,16 +164,19 @@ export class Progress {
     }
   }
 
-  /** Copy `raw` under a backup key before anything is written; say where it is, or that nothing will be written until it is. */
+  /** Copy `raw` under a backup key before anything is written; say where it is, or that nothing will be written until
+   * it is. */
   keepAside(raw, why) {
     const backup = `${this.key}:backup:${Date.now()}`;
     this.pending = { key: backup, raw };
     this.keptRaw = raw;
     const download = { name: "robotics-math-workbook-unreadable-progress.json", text: raw };
     if (this.writeBackup()) {
-      this.report("set-aside", `${why} The saved text is kept unchanged under “${backup}” in this browser's storage.`, download);
+      this.report("set-aside", `${why} The saved text is kept unchanged under “${backup}” in this browser's storage.`,
+        download);
     } else {
-      this.report("blocked", `${why} There is no room to keep a copy of it, so nothing will be saved until there is: download it, or free some space.`, download);
+      this.report("blocked", `${why} There is no room to keep a copy of it, so nothing will be saved until there is: `
+        + `download it, or free some space.`, download);
     }
   }
 
@@ -285,7 +297,8 @@ export class Progress {
 
   /** The export file's content (an object; JSON.stringify it). */
   exportData() {
-    return { format: EXPORT_FORMAT, version: SCHEMA_VERSION, exported: new Date().toISOString(), exercises: this.all() };
+    return { format: EXPORT_FORMAT, version: SCHEMA_VERSION, exported: new Date().toISOString(),
+      exercises: this.all() };
   }
 
   /**
@@ -317,7 +330,8 @@ export class Progress {
     // the erase drops them all here, in storage and in every other tab's copy.
     this.flush();
     const latest = Math.max(0, ...Object.values(this.data.exercises).map((r) => r.updated ?? 0));
-    this.data = { version: SCHEMA_VERSION, reset: Math.max(Date.now(), latest + 1, (this.data.reset ?? 0) + 1), exercises: {} };
+    this.data = { version: SCHEMA_VERSION, reset: Math.max(Date.now(), latest + 1, (this.data.reset ?? 0) + 1),
+      exercises: {} };
     this.persist();
     this.notify(null, null);
   }

@@ -13,7 +13,8 @@ const LOCAL_HOSTS = new Set(["localhost", "127.0.0.1", "[::1]"]);
 /** Whether an address is this computer's own (a file, or a loopback host): no student can open it. */
 export const isLocal = (href) => {
   const url = new URL(href);
-  return url.protocol === "file:" || LOCAL_HOSTS.has(url.hostname) || /^127\./.test(url.hostname) || url.hostname.endsWith(".localhost");
+  return url.protocol === "file:" || LOCAL_HOSTS.has(url.hostname) || /^127\./.test(url.hostname)
+    || url.hostname.endsWith(".localhost");
 };
 
 /** The site's public root from the page's canonical link (site_url + the page's path), or null. */
@@ -33,10 +34,13 @@ function linkRoot(siteRoot) {
   const root = known && !isLocal(known) ? known : siteRoot;
   if (!isLocal(siteRoot)) return { root: siteRoot, warning: null, local: false };
   if (root !== siteRoot) {
-    return { root, local: false, warning: `This page is open at ${siteRoot}, on this computer only. The links it makes lead to the site's public address, ${root}, where your students open them.` };
+    return { root, local: false, warning: `This page is open at ${siteRoot}, on this computer only. The links it makes `
+      + `lead to the site's public address, ${root}, where your students open them.` };
   }
-  return { root, local: true, warning: `This page is open at ${siteRoot}, an address on this computer only: links made here reach no one else. `
-    + "Host the site for your class (GitHub Pages from a fork, any static host, or the SCORM package in your course's platform) and make the links there: " };
+  return { root, local: true, warning: `This page is open at ${siteRoot}, an address on this computer only: links made `
+    + `here reach no one else. `
+    + "Host the site for your class (GitHub Pages from a fork, any static host, or the SCORM package in your course's "
+    + "platform) and make the links there: " };
 }
 
 let serial = 0;
@@ -53,8 +57,8 @@ function field(label, input, help) {
   return el("div", { className: "wb-course-field" }, ...parts);
 }
 
-// An exercise whose right answer students may share (manifest.sameAnswer, from the bank: the same for all, or from a short list)
-// says so beside its box, with the reason: per-student numbers do not stop copying there.
+// An exercise whose right answer students may share (manifest.sameAnswer, from the bank: the same for all, or from a
+// short list) says so beside its box, with the reason: per-student numbers do not stop copying there.
 function sameNote(why) {
   if (!why) return "";
   const note = el("span", { className: "wb-teach-same", textContent: ` (students may share this answer: ${why})` });
@@ -68,7 +72,8 @@ function chapterBox(chapter, titles, same) {
   const boxes = chapter.ids.map((id) => {
     const box = el("input", { type: "checkbox", value: id, id: uid("ex") });
     box.setAttribute(COURSE.attr.exercise, id);
-    return el("li", {}, box, el("label", { htmlFor: box.id, textContent: ` ${id} · ${titles?.[id] ?? ""}` }, sameNote(same?.[id])));
+    return el("li", {}, box, el("label", { htmlFor: box.id, textContent: ` ${id} · ${titles?.[id] ?? ""}` },
+      sameNote(same?.[id])));
   });
   const inputs = () => [...list.querySelectorAll(`input[${COURSE.attr.exercise}]`)];
   const list = el("ul", { className: "wb-teach-exercises" }, ...boxes);
@@ -79,7 +84,8 @@ function chapterBox(chapter, titles, same) {
     all.indeterminate = n > 0 && n < chapter.ids.length;
   });
   return el("fieldset", { className: "wb-teach-chapter" },
-    el("legend", {}, all, el("label", { htmlFor: all.id, textContent: ` ${chapter.title} (the whole chapter)` })), list);
+    el("legend", {}, all, el("label", { htmlFor: all.id, textContent: ` ${chapter.title} (the whole chapter)` })),
+    list);
 }
 
 export async function initTeach(siteRoot) {
@@ -92,21 +98,26 @@ export async function initTeach(siteRoot) {
   const due = el("input", { type: "date" });
   due.setAttribute(A.field, FIELD.due);
   const chapters = manifest.chapters.map((c) => chapterBox(c, manifest.titles, manifest.sameAnswer));
-  const make = el("button", { type: "submit", className: "md-button md-button--primary", textContent: "Make the link" });
+  const make = el("button", { type: "submit", className: "md-button md-button--primary",
+    textContent: "Make the link" });
   const status = el("p", { role: "status", className: "wb-course-status" });
   const out = el("input", { type: "text", readOnly: true, id: uid("link") });
   out.setAttribute(A.field, FIELD.link);
   const copy = el("button", { type: "button", className: "md-button", textContent: "Copy the link" });
   copy.setAttribute(A.action, COURSE.action.copyLink);
   const result = el("div", { className: "wb-teach-result", hidden: true },
-    el("label", { htmlFor: out.id, textContent: "The assignment link" }), out, el("div", { className: "wb-course-actions" }, copy));
+    el("label", { htmlFor: out.id, textContent: "The assignment link" }), out,
+    el("div", { className: "wb-course-actions" }, copy));
   const form = el("form", { className: "wb-teach-form", noValidate: true },
-    field("Class code", code, "Any text that names this class and assignment, e.g. ROB101-week3. Each student's numbers come from it: a new code gives everyone new numbers."),
+    field("Class code", code, "Any text that names this class and assignment, e.g. ROB101-week3. Each student's "
+    + "numbers come from it: a new code gives everyone new numbers."),
     field("Due date (optional)", due, "Shown to the learners; the workbook does not lock anything after it."),
     el("h2", { textContent: "Exercises" }), ...chapters,
     el("div", { className: "wb-course-actions" }, make), status, result);
-  const guide = el("a", { href: new URL("teaching/hosting/", siteRoot).href, textContent: "Hosting the workbook for a class" });
-  const warning = where.warning ? el("p", { className: "wb-course-problem" }, where.warning, ...(where.local ? [guide, "."] : [])) : null;
+  const guide = el("a", { href: new URL("teaching/hosting/", siteRoot).href,
+    textContent: "Hosting the workbook for a class" });
+  const warning = where.warning ? el("p", { className: "wb-course-problem" }, where.warning, ...(where.local ? [guide,
+    "."] : [])) : null;
   if (warning) warning.setAttribute(A.hostWarning, where.local ? "local" : "public");
   root.replaceChildren(...(warning ? [warning] : []), form);
   form.addEventListener("submit", (event) => {
@@ -117,7 +128,8 @@ export async function initTeach(siteRoot) {
     if (!ids.length) problems.push("Choose at least one exercise.");
     // A date field holds "" for a date that is not one (30 February): its badInput says so.
     const badDue = due.validity.badInput || (due.value !== "" && !isDate(due.value));
-    if (badDue) problems.push("The due date is not a day of the calendar (e.g. 30 February): choose another, or leave it empty.");
+    if (badDue) problems.push("The due date is not a day of the calendar (e.g. 30 February): choose another, or leave "
+      + "it empty.");
     code.setAttribute("aria-invalid", String(!code.value.trim()));
     due.setAttribute("aria-invalid", String(badDue));
     if (problems.length) {
@@ -128,11 +140,13 @@ export async function initTeach(siteRoot) {
     out.value = assignmentHref(where.root, { code: code.value.trim(), ids, due: due.value || null });
     result.hidden = false;
     const sets = `The link sets ${ids.length} exercise${ids.length === 1 ? "" : "s"}.`;
-    status.textContent = where.local ? `${sets} It leads to this computer only: make the link again where the site is hosted for your class.`
+    status.textContent = where.local
+      ? `${sets} It leads to this computer only: make the link again where the site is hosted for your class.`
       : `${sets} Send it to your class; each student gets their own numbers.`;
   });
   copy.addEventListener("click", () => {
     out.select();
-    navigator.clipboard?.writeText(out.value).then(() => { status.textContent = "Link copied."; }, () => { status.textContent = "Select the link and copy it."; });
+    navigator.clipboard?.writeText(out.value).then(() => { status.textContent = "Link copied."; }, () =>
+      { status.textContent = "Select the link and copy it."; });
   });
 }

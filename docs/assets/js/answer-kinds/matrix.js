@@ -11,7 +11,8 @@ import { showMessage } from "../feedback.js";
 
 export function init(ctx) {
   const entries = ownRoles(ctx.el, ROLE.entry);
-  const at = (r, c) => entries.find((e) => Number(e.getAttribute(ATTR.row)) === r && Number(e.getAttribute(ATTR.col)) === c);
+  const at = (r, c) => entries.find((e) => Number(e.getAttribute(ATTR.row)) === r
+    && Number(e.getAttribute(ATTR.col)) === c);
   const rows = Math.max(...entries.map((e) => Number(e.getAttribute(ATTR.row))));
   const cols = Math.max(...entries.map((e) => Number(e.getAttribute(ATTR.col))));
   const fill = (grid) => {
@@ -21,7 +22,8 @@ export function init(ctx) {
     }));
   };
   // A whole matrix typed into one entry, the others empty: read as a paste (on leaving it, or at Check).
-  const wholeIn = (input) => entries.length >= 2 && /[\s,;[\]]/.test(input.value.trim()) && entries.every((e) => e === input || !e.value.trim());
+  const wholeIn = (input) => entries.length >= 2 && /[\s,;[\]]/.test(input.value.trim())
+    && entries.every((e) => e === input || !e.value.trim());
   for (const input of entries) {
     const r = Number(input.getAttribute(ATTR.row));
     const c = Number(input.getAttribute(ATTR.col));
@@ -35,7 +37,8 @@ export function init(ctx) {
       }
       const atStart = input.selectionStart === 0 && input.selectionEnd === 0;
       const atEnd = input.selectionStart === input.value.length;
-      const moves = { ArrowUp: [r - 1, c], ArrowDown: [r + 1, c], ArrowLeft: atStart ? [r, c - 1] : null, ArrowRight: atEnd ? [r, c + 1] : null };
+      const moves = { ArrowUp: [r - 1, c], ArrowDown: [r + 1, c], ArrowLeft: atStart ? [r, c - 1] : null,
+        ArrowRight: atEnd ? [r, c + 1] : null };
       const target = moves[event.key] && at(...moves[event.key]);
       if (!target) return;
       event.preventDefault();
@@ -46,7 +49,8 @@ export function init(ctx) {
       // A whole matrix typed (not pasted) into one entry, the others empty: split it as a paste.
       const text = input.value;
       if (!wholeIn(input)) return;
-      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step, text });
+      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step,
+        text });
       if (reply.ok && reply.value.entries && input.value === text) fill(reply.value.entries);
     });
     input.addEventListener("paste", async (event) => {
@@ -54,7 +58,8 @@ export function init(ctx) {
       if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim())) return; // one value: paste as usual
       event.preventDefault();
       const at = [input.selectionStart ?? input.value.length, input.selectionEnd ?? input.value.length];
-      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step, text });
+      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step,
+        text });
       if (reply.ok && typeof reply.value.cell === "string") {
         input.setRangeText(reply.value.cell, at[0], at[1], "end");
         input.dispatchEvent(new Event("input", { bubbles: true }));
@@ -63,9 +68,11 @@ export function init(ctx) {
     });
   }
   return {
-    value: () => Array.from({ length: rows }, (_, i) => Array.from({ length: cols }, (_, j) => at(i + 1, j + 1)?.value ?? "")),
+    value: () => Array.from({ length: rows }, (_, i) => Array.from({ length: cols }, (_, j) => at(i + 1, j + 1)?.value
+      ?? "")),
     restore(last) {
-      if (Array.isArray(last) && entries.every((input) => !input.value)) fill(last); // what the learner typed meanwhile stays
+      // what the learner typed meanwhile stays
+      if (Array.isArray(last) && entries.every((input) => !input.value)) fill(last);
     },
     clear() {
       for (const input of entries) {

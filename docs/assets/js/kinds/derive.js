@@ -29,8 +29,10 @@ export async function init(ctx) {
     // (the Practise page's review, an assignment's) is not put there, or the chapter would show it. The
     // record's variant names the numbers `last` answered: another tab may have drawn others meanwhile.
     const recorded = ctx.progress.get(ctx.id).variant ?? 0;
-    const saved = ctx.start != null ? {} : recorded === ctx.variant ? { last: answer } : { last: answer, variant: ctx.variant };
-    const reply = await ctx.submit("grade", { answer, given: givenFor(ctx), ...(steps && Object.keys(steps).length ? { steps } : {}) },
+    const saved = ctx.start != null ? {} : recorded === ctx.variant ? { last: answer } : { last: answer,
+      variant: ctx.variant };
+    const reply = await ctx.submit("grade", { answer, given: givenFor(ctx), ...(steps && Object.keys(steps).length
+      ? { steps } : {}) },
       { saved });
     field.show?.(reply);
     showCarried(ctx.el, reply);
