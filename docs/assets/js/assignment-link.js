@@ -58,8 +58,8 @@ export function readAssignment(hash, known) {
 }
 
 /** Where the learner's name or student number is kept (this site, this browser). */
-export const studentKey = (siteRoot) => `robotics-workbook:${new URL(siteRoot).pathname.replace(/\/+$/,
-  "") || "/"}:student`;
+export const studentKey = (siteRoot) =>
+  `robotics-workbook:${new URL(siteRoot).pathname.replace(/\/+$/, "") || "/"}:student`;
 
 export function savedStudent(siteRoot) {
   try {

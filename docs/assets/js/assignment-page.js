@@ -37,8 +37,8 @@ async function ownRecord(siteRoot, shared, student, first) {
     // The page kept the student it last knew and their assignment answers in the browser's one record: that
     // student's own, once; any other student starts empty.
     if (first && adoptOnce(siteRoot)) {
-      const carried = Object.entries(shared.progress.all()).filter(([, r]) => r.assigned).map(([id, r]) => [id,
-        { assigned: r.assigned }]);
+      const carried = Object.entries(shared.progress.all()).filter(([, r]) => r.assigned)
+        .map(([id, r]) => [id, { assigned: r.assigned }]);
       if (carried.length) mine.merge(Object.fromEntries(carried));
     }
     showProgressProblems(mine);
@@ -53,10 +53,10 @@ function askStudent(root, siteRoot, then) {
   const form = el("form", { className: "wb-student-form" },
     el("label", { htmlFor: input.id, textContent: "Your name or student number (as your teacher asked)" }), input,
     el("p", { className: "wb-course-help",
-    textContent: "Asked once and kept in this browser only. Your numbers come from it: type it the same way on every "
-    + "device (capital letters and extra spaces do not matter)." }),
-    el("div", { className: "wb-course-actions" }, el("button", { type: "submit",
-    className: "md-button md-button--primary", textContent: "Start" })), say);
+      textContent: "Asked once and kept in this browser only. Your numbers come from it: type it the same way on "
+        + "every device (capital letters and extra spaces do not matter)." }),
+    el("div", { className: "wb-course-actions" },
+      el("button", { type: "submit", className: "md-button md-button--primary", textContent: "Start" })), say);
   form.addEventListener("submit", (event) => {
     event.preventDefault();
     const id = tidy(input.value);
@@ -97,12 +97,12 @@ async function showExercise(slot, manifest, id, siteRoot, mine, variant, key) {
   if (variant) {
     new MutationObserver(() => markVariant(node, variant, back)).observe(node, { attributes: true,
       attributeFilter: [ATTR.variant] });
-    back.addEventListener("click", () => showExercise(slot, manifest, id, siteRoot, mine, variant,
-      key).then(() => slot.querySelector("h2")?.focus?.()));
+    back.addEventListener("click", () => showExercise(slot, manifest, id, siteRoot, mine, variant, key)
+      .then(() => slot.querySelector("h2")?.focus?.()));
   }
   // A reload, or the way back from practice numbers, shows the last answer given to the assignment's numbers.
-  initExercise(node, { ...mine, ...(variant ? { start: variant, resume: lastAssigned(mine.progress, key, id,
-    variant) } : {}) });
+  initExercise(node,
+    { ...mine, ...(variant ? { start: variant, resume: lastAssigned(mine.progress, key, id, variant) } : {}) });
 }
 
 /** The grader's {version, bank}, if it is running and can say ({"op": "version"}); null otherwise (a hand-in never
@@ -138,8 +138,8 @@ export async function initAssignment(shared, siteRoot) {
     stopRecording();
     const drawing = new Set(manifest.variants || []);
     const variants = new Map();
-    for (const id of assignment.ids) variants.set(id, drawing.has(id) ? await assignedVariant(assignment.code, student,
-      id) : 0);
+    for (const id of assignment.ids) variants.set(id, drawing.has(id)
+      ? await assignedVariant(assignment.code, student, id) : 0);
     const mine = { ...shared, progress: await ownRecord(siteRoot, shared, student, first) };
     // Every graded attempt of this learner's exercises at the assignment's numbers is kept for the hand-in.
     stopRecording = onAttempt(({ id, variant, progress, attempt }) => {
@@ -163,8 +163,9 @@ export async function initAssignment(shared, siteRoot) {
       + "your teacher. Nothing is sent: give the file to your teacher the way they asked." }),
       el("div", { className: "wb-course-actions" }, hand, change), said);
     root.replaceChildren(head, list, tail);
-    hand.addEventListener("click", async () => { said.textContent = `Saved ${await handIn(mine, assignment,
-      student)}. Hand that file in.`; });
+    hand.addEventListener("click", async () => {
+      said.textContent = `Saved ${await handIn(mine, assignment, student)}. Hand that file in.`;
+    });
     change.addEventListener("click", () => {
       stopRecording();
       askStudent(root, siteRoot, start);

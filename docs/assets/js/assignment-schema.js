@@ -26,8 +26,8 @@ export const isSlips = (v) => keysOk(v, MAX_SLIPS, (k) => k.length >= 1 && k.len
 // carried) or a graded Build run (`code`: the code that ran, when it fits LIMIT.code): attempt.js.
 const ATTEMPT_KEYS = ["answer", "code", "status", "tag", "slip", "at", "steps", "given"];
 export const isAttempt = (a) => isObject(a) && Object.keys(a).every((k) => ATTEMPT_KEYS.includes(k))
-  && (a.answer === undefined ? a.code === undefined || isShort(a.code, LIMIT.code) : a.code === undefined
-  && isAnswer(a.answer))
+  && (a.answer === undefined ? a.code === undefined || isShort(a.code, LIMIT.code)
+    : a.code === undefined && isAnswer(a.answer))
   && ["correct", "incorrect"].includes(a.status) && TIME_OK(a.at)
   && (a.tag === undefined || isShort(a.tag, 40)) && (a.slip === undefined || isShort(a.slip, SLIP_NAME_CAP))
   && (a.steps === undefined || isStepAnswers(a.steps)) && (a.given === undefined || isGiven(a.given));
@@ -72,8 +72,8 @@ export function mergeAssigned(a = {}, b = {}) {
     const newer = latest(y) > latest(x) || (latest(y) === latest(x) && y.variant > x.variant) ? y : x;
     out[key] = { variant: newer.variant, attempts };
   }
-  const keys = Object.keys(out).sort((p, q) => latest(out[q]) - latest(out[p]) || (p < q ? -1 : 1)).slice(0,
-    MAX_CLASSES);
+  const keys = Object.keys(out).sort((p, q) => latest(out[q]) - latest(out[p]) || (p < q ? -1 : 1))
+    .slice(0, MAX_CLASSES);
   return Object.fromEntries(keys.sort().map((k) => [k, out[k]]));
 }
 

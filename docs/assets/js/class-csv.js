@@ -17,8 +17,7 @@ const line = (cells) => cells.map(csvQuote).join(",");
 const lines = (rows) => `${rows.map(line).join("\r\n")}\r\n`;
 
 export const LONG_COLUMNS = ["student", "file", "class", "handedIn", "late", "exercise", "variant", "solved (claimed)",
-  "verified",
-  "changed since hand-in", "attempts", "hint", "derivation", "steps", "carried", "note"];
+  "verified", "changed since hand-in", "attempts", "hint", "derivation", "steps", "carried", "note"];
 
 /** One line per learner (every file's, the rows' other files too) and exercise set. */
 export function toCSV(learners, ids) {

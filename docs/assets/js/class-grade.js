@@ -23,8 +23,9 @@ class FileProblem extends Error {}
 /** One file's text -> a learner {student, code, ids, due, records, kind} or throws FileProblem (its message is for the
  * page). */
 export function readLearner(name, text, known) {
-  if (typeof text !== "string" || text.length > MAX_FILE_BYTES) throw new FileProblem(`is larger than ${groupDigits(
-    MAX_FILE_BYTES)} characters`);
+  if (typeof text !== "string" || text.length > MAX_FILE_BYTES) {
+    throw new FileProblem(`is larger than ${groupDigits(MAX_FILE_BYTES)} characters`);
+  }
   let data;
   try {
     data = JSON.parse(text);
@@ -48,8 +49,8 @@ export function readLearner(name, text, known) {
 
 /** An ISO time as the file gives it (the student's clock), or null when absent or not a time. */
 function isoTime(v) {
-  return typeof v === "string" && v.length <= 40 && Number.isFinite(Date.parse(v)) ? new Date(Date.parse(v))
-    .toISOString() : null;
+  return typeof v === "string" && v.length <= 40 && Number.isFinite(Date.parse(v))
+    ? new Date(Date.parse(v)).toISOString() : null;
 }
 
 /**
@@ -72,8 +73,9 @@ async function grade(runtime, request) {
   return reply.ok ? reply.value : { error: reply.error };
 }
 
-const STOPPED = { [ERROR.timeout]: "did not finish in time", [ERROR.crash]: "crashed the sandbox", [ERROR.memory]:
-  "ran out of memory" };
+const STOPPED = {
+  [ERROR.timeout]: "did not finish in time", [ERROR.crash]: "crashed the sandbox", [ERROR.memory]: "ran out of memory",
+};
 
 /**
  * A claimed Build solve: the record's code run again (`runtime` is withSandbox's). Sets the
@@ -104,8 +106,8 @@ function slipOf(verdict) {
 }
 
 async function gradeAttempts(cell, runtime, id, v, attempts) {
-  const verdicts = await Promise.all(attempts.map((attempt) => grade(runtime, { exercise: id, variant: v,
-    answer: attempt.answer,
+  const verdicts = await Promise.all(attempts.map((attempt) => grade(runtime, {
+    exercise: id, variant: v, answer: attempt.answer,
     ...(attempt.steps ? { steps: attempt.steps } : {}), ...(attempt.given ? { given: attempt.given } : {}) })));
   verdicts.forEach((verdict, i) => {
     if (verdict.error) {

@@ -19,8 +19,8 @@ import { withSandbox } from "./sandbox-client.js";
 const LEARNERS_AT_ONCE = 4; // files graded side by side: the grader answers one while the sandbox runs another's code
 // students shown at once: a bigger class is paged (a table of 1,000 rows lays out in one long task)
 const PAGE_ROWS = 100;
-const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield() : new Promise((r) => setTimeout(r,
-  0)));
+const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield()
+  : new Promise((r) => setTimeout(r, 0)));
 
 function renderMistakes(rows, ids) {
   const section = el("div", { className: "wb-class-mistakes" });
@@ -73,8 +73,8 @@ async function graderVersion(runtime) {
   if (!reply.ok) return { text: "Re-graded here by the workbook's grader (its version could not be read).",
     grader: null };
   const { version, bank } = reply.value;
-  return { text: `Re-graded here by the workbook's grader version ${version}, ${bank ? `bank ${bank}` : "its bank's "
-    + "hash not known in this start (compiled files only)"}.`,
+  return { text: `Re-graded here by the workbook's grader version ${version}, `
+    + `${bank ? `bank ${bank}` : "its bank's hash not known in this start (compiled files only)"}.`,
     grader: bank ? { version, bank } : null };
 }
 
@@ -143,10 +143,10 @@ export async function initClassPage(shared, siteRoot) {
     const stats = el("div", { className: "wb-class-worked" },
       el("p", { textContent: "Working out which exercises worked…" }));
     const mistakes = el("div", {}, el("p", { textContent: "Counting the mistakes…" }));
-    results.replaceChildren(el("h2", { textContent: "Students and exercises" }), legend(), tableRegion(state, pageOf()),
-      pager,
-      el("h2", { textContent: "Which exercises worked" }), stats, el("h2", { textContent: "Most common mistakes" }),
-      mistakes);
+    results.replaceChildren(el("h2", { textContent: "Students and exercises" }), legend(),
+      tableRegion(state, pageOf()), pager,
+      el("h2", { textContent: "Which exercises worked" }), stats,
+      el("h2", { textContent: "Most common mistakes" }), mistakes);
     csv.hidden = gradebook.hidden = false;
     await giveWay(); // the table is laid out in a task of its own
     mistakes.replaceWith(renderMistakes(state.rows, state.ids));
@@ -174,8 +174,8 @@ export async function initClassPage(shared, siteRoot) {
       Object.assign(learner, { file: file.name, seq: state.seq++, idKey: learner.kind === "hand-in"
         ? await fold(learner.student) : null });
       const onRun = (id, text) => {
-        status.textContent = `${progress()} Running ${learner.student}’s code for exercise ${id}${text
-          ? `: ${text}` : "…"}`;
+        status.textContent = `${progress()} Running ${learner.student}’s code for exercise ${id}`
+          + `${text ? `: ${text}` : "…"}`;
       };
       learner.cells = await gradeLearner(learner, drawing, runtime, onRun);
       state.learners.push(learner);
@@ -188,8 +188,8 @@ export async function initClassPage(shared, siteRoot) {
     const started = performance.now();
     let next = 0;
     let done = 0;
-    const progress = () => `Reading and re-grading ${files.length} file${files.length === 1 ? "" : "s"} (${done} `
-      + `done)…`;
+    const progress = () => `Reading and re-grading ${files.length} file${files.length === 1 ? "" : "s"} `
+      + `(${done} done)…`;
     const lane = async () => {
       while (next < files.length) {
         const file = files[next++];

@@ -10,8 +10,8 @@
 
 import { el } from "./progress-view.js";
 
-const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield() : new Promise((r) => setTimeout(r,
-  0)));
+const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield()
+  : new Promise((r) => setTimeout(r, 0)));
 
 export function median(values) {
   if (!values.length) return null;
@@ -68,12 +68,12 @@ export function exerciseStats(rows, ids, id) {
   const ul = upperLower(hits, rest);
   return {
     id, set: cells.length, solved: share((c) => c.verified),
-      toSolve: median(cells.filter((c) => c.verified && c.toSolve).map((c) => c.toSolve)),
+    toSolve: median(cells.filter((c) => c.verified && c.toSolve).map((c) => c.toSolve)),
     hinted: share((c) => c.hinted), revealed: share((c) => c.revealed), pointBiserial: pointBiserial(hits, rest),
     upperLower: ul,
     flagged: ul !== null && ul < 0,
     slips: [...slips].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1))
-    .slice(0, 3)
+      .slice(0, 3)
       .map(([key, m]) => ({ key, ...m })),
     withSteps, steps: [...steps].sort((a, b) => b[1] - a[1]).map(([step, n]) => ({ step, n })),
   };
@@ -95,8 +95,7 @@ const num = (x, d = 2) => (x === null ? "—" : x.toFixed(d).replace("-", "−")
 /** The table of statistics. */
 export function statsTable(stats) {
   const heads = ["Exercise", "Set for", "Solved", "Median attempts to solve", "Opened the hint",
-    "Opened the derivation",
-    "Discrimination (point-biserial)", "Upper − lower 27 %", "Most common slips"];
+    "Opened the derivation", "Discrimination (point-biserial)", "Upper − lower 27 %", "Most common slips"];
   const body = stats.map((s) => {
     const name = el("th", { scope: "row", textContent: s.id });
     if (s.flagged) {

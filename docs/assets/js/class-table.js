@@ -99,9 +99,9 @@ function studentCell(row) {
 function detailsOf(row, ids, id) {
   if (!id) {
     const older = row.others.map((o) => el("li",
-      { textContent: `${o.file}: handed in ${shownTime(o.handedIn)}, ${scoreOf(o, ids)} of ${setOf(o,
-      ids)} solved (${ids.filter((x) => o.cells[x])
-      .map((x) => `${x} ${MARKS[cellState(o.cells[x]).state].symbol}`).join(", ")})` }));
+      { textContent: `${o.file}: handed in ${shownTime(o.handedIn)}, ${scoreOf(o, ids)} of `
+        + `${setOf(o, ids)} solved (${ids.filter((x) => o.cells[x])
+          .map((x) => `${x} ${MARKS[cellState(o.cells[x]).state].symbol}`).join(", ")})` }));
     return [el("p", { className: "wb-class-pop-title", textContent: `${row.label}: ${row.learner.file}` }), el("ul", {},
       ...row.flags.map((f) => el("li", { textContent: f.text }))),
       ...(older.length ? [el("p", { textContent: "Its other files:" }), el("ul", {}, ...older)] : [])];
@@ -222,8 +222,8 @@ export function legend() {
     el("li", { textContent: "Press a column's heading to sort by it, a mark for its details." }),
     ...Object.entries(MARKS).map(([state, m]) => item(m.symbol, m.text, state)),
     item(CHANGED.symbol, `${CHANGED.text}: a re-graded verdict differs from the one the student's page showed`),
-    item("late", "handed in after the due date, by the student's clock"), item(FLAG_SYMBOL.duplicate,
-    "more than one file"),
+    item("late", "handed in after the due date, by the student's clock"),
+    item(FLAG_SYMBOL.duplicate, "more than one file"),
     item(FLAG_SYMBOL["other-class"], "another class code"), item(FLAG_SYMBOL.progress, "a progress export"),
     item(FLAG_SYMBOL["same-file-name"], "a file name another student's file had"),
     item(FLAG_SYMBOL["other-grader"], "beside a name: the student's page graded with another grader version"));

@@ -16,8 +16,8 @@ const MAX_SET = 200; // exercises one assignment sets
 
 /** The file's name: the class code, the id as far as a file name can show it, and the id's tag (studentTag). */
 export function handInName(code, student, tag) {
-  const safe = (t) => t.normalize("NFKD").replace(/\p{M}+/gu, "").replace(/[^A-Za-z0-9._-]+/g, "-").replace(/^-+|-+$/g,
-    "").slice(0, 40);
+  const safe = (t) => t.normalize("NFKD").replace(/\p{M}+/gu, "").replace(/[^A-Za-z0-9._-]+/g, "-")
+    .replace(/^-+|-+$/g, "").slice(0, 40);
   return `hand-in-${[safe(code), safe(student), tag].filter(Boolean).join("-")}.json`;
 }
 
@@ -48,8 +48,9 @@ const isGrader = (v) => isObject(v) && Object.keys(v).length <= 4 && Object.valu
  */
 export function readHandIn(data, known) {
   const no = (reason) => ({ ok: false, reason });
-  if (data.version !== HAND_IN_VERSION) return no(`is a hand-in of version ${String(data.version).slice(0,
-    10)}, which this page does not read`);
+  if (data.version !== HAND_IN_VERSION) {
+    return no(`is a hand-in of version ${String(data.version).slice(0, 10)}, which this page does not read`);
+  }
   const a = data.assignment;
   if (!isObject(a) || typeof a.class !== "string" || !classKey(a.class) || a.class.length > LIMIT.classCode) return no(
     "names no class code");
@@ -62,8 +63,9 @@ export function readHandIn(data, known) {
   if (!isObject(data.records)) return no("holds no records");
   const records = {};
   for (const [id, raw] of Object.entries(data.records)) {
-    if (!a.exercises.includes(id)) return no(`holds a record of exercise “${id.slice(0,
-      12)}”, which the assignment does not set`);
+    if (!a.exercises.includes(id)) {
+      return no(`holds a record of exercise “${id.slice(0, 12)}”, which the assignment does not set`);
+    }
     try {
       records[id] = cleanRecord(id, raw);
     } catch (err) {

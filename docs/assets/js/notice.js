@@ -69,8 +69,8 @@ export function showProgressProblems(progress) {
     const buttons = [{ text: "Export progress", action: "notice-export", run: () => exportProgress(progress) }];
     if (problem.download) {
       const { name, text } = problem.download;
-      buttons.push({ text: "Download the unreadable copy", action: "notice-download", run: () => download(name,
-        text) });
+      buttons.push({ text: "Download the unreadable copy", action: "notice-download",
+        run: () => download(name, text) });
     }
     showNotice(`progress-${problem.kind}`, "Progress", problem.message, buttons);
   }

@@ -51,8 +51,8 @@ export async function initPractise(shared, siteRoot) {
     }
     card.replaceChildren(el("p", { className: "wb-practise-loading", textContent: `Loading exercise ${id}…` }));
     try {
-      const node = await showExerciseCard(card, manifest, id, siteRoot, { from: (n) => FRESH[n.getAttribute(ATTR.kind)]
-        ?? "." });
+      const node = await showExerciseCard(card, manifest, id, siteRoot,
+        { from: (n) => FRESH[n.getAttribute(ATTR.kind)] ?? "." });
       initExercise(node, { ...shared, start: freshVariant() });
     } catch (err) {
       card.replaceChildren(el("p", { textContent: `Exercise ${id} could not be loaded (${err.message}). Try the next `

@@ -19,8 +19,8 @@ function countCell(value, max, text) {
 }
 
 function row(header, count, tag = "td") {
-  const solvedText = `${count.solved} of ${count.total}${count.afterReveal ? ` (+${count.afterReveal} with help)` :
-    ""}`;
+  const solvedText = `${count.solved} of ${count.total}`
+    + `${count.afterReveal ? ` (+${count.afterReveal} with help)` : ""}`;
   const review = el("td", { className: "wb-review-cell", textContent: count.reviewable ? reviewText(count) : "—" });
   if (count.due) review.classList.add("is-due");
   const tr = el("tr", {},
@@ -42,8 +42,8 @@ function table(manifest, progress, siteRoot) {
   const total = tally(manifest, progress, manifest.chapters.flatMap((c) => c.ids));
   const t = el("table", { className: "wb-progress-table" },
     el("caption", { textContent: "Your progress, chapter by chapter" }),
-    el("thead", {}, el("tr", {}, ...["Chapter", "Solved", "Mastered", "Review"].map((text) => el("th", { scope: "col",
-    textContent: text })))),
+    el("thead", {}, el("tr", {},
+      ...["Chapter", "Solved", "Mastered", "Review"].map((text) => el("th", { scope: "col", textContent: text })))),
     el("tbody", {}, ...rows),
     el("tfoot", {}, row(el("span", { textContent: "All chapters" }), total, "th")));
   t.dataset.wbProgressTable = "";

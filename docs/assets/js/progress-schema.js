@@ -35,20 +35,20 @@ const notFuture = (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + DAY_M
 const STATUSES = ["correct", "incorrect", "invalid"];
 // A carried step's link: back to the learner's own earlier step, or to an earlier exercise.
 const isCarriedLink = (v) => isObject(v) && Object.keys(v).every((k) => ["step", "from", "variant", "link"].includes(k))
-  && isShort(v.link, 200) && (v.step === undefined || STEP_NAME.test(v.step)) && (v.from === undefined
-  || isShort(v.from, 20))
+  && isShort(v.link, 200) && (v.step === undefined || STEP_NAME.test(v.step))
+  && (v.from === undefined || isShort(v.from, 20))
   && (v.variant === undefined || isVariant(v.variant));
-const isStepVerdict = (v) => isObject(v) && Object.keys(v).every((k) => ["answer", "status", "tag", "message",
-  "carried"].includes(k))
-  && isAnswer(v.answer) && (v.status === undefined || STATUSES.includes(v.status)) && (v.tag === undefined
-  || isShort(v.tag, 40))
+const isStepVerdict = (v) => isObject(v)
+  && Object.keys(v).every((k) => ["answer", "status", "tag", "message", "carried"].includes(k))
+  && isAnswer(v.answer) && (v.status === undefined || STATUSES.includes(v.status))
+  && (v.tag === undefined || isShort(v.tag, 40))
   && (v.message === undefined || isShort(v.message, 2000)) && (v.carried === undefined || isCarriedLink(v.carried));
 /** The checked steps on screen: {variant, steps: {NAME: {answer, status, tag, message, carried}}} (null: cleared by new
  * numbers). */
 const isStepWork = (v) => v === null || (isObject(v) && Object.keys(v).every((k) => k === "variant" || k === "steps")
   && isVariant(v.variant) && isObject(v.steps) && Object.keys(v.steps).length <= LIMIT.steps
   && Object.entries(v.steps).every(([name, step]) => STEP_NAME.test(name) && !FORBIDDEN_KEYS.has(name)
-  && isStepVerdict(step)));
+    && isStepVerdict(step)));
 const VARIANTS = { check: isVariantList,
   says: `a list of at most ${KEEP} variant numbers (0 to ${groupDigits(MAX_VARIANT)})`, merge: "union" };
 const TIME = "a time (milliseconds since 1970) not in the future";
@@ -75,16 +75,17 @@ export const FIELDS = {
   // Since version 4: checked steps (CONTRACT.md, "Checked steps").
   stepped: VARIANTS, // the variants worked with steps (a step checked)
   steppedDone: VARIANTS, // the variants solved after working with steps, the derivation not revealed first
-  stepWork: { check: isStepWork, says: "the steps on screen ({variant, steps: {name: {answer, status, tag, message, "
-    + "carried}}}) or null", merge: "latest" },
+  stepWork: { check: isStepWork,
+    says: "the steps on screen ({variant, steps: {name: {answer, status, tag, message, carried}}}) or null",
+    merge: "latest" },
   // Since version 5: assignments (assignment-schema.js; CONTRACT.md, "Progress records").
   slips: { check: isSlips, says: "the named slips hit, {name: count} (at most 24)", merge: "slips" },
   assigned: { check: isAssigned, says: "an assignment's graded answers, {class: {variant, attempts}}",
-  merge: "assigned" },
+    merge: "assigned" },
   box: { check: (v) => Number.isInteger(v) && v >= 1 && v <= TOP_BOX, says: `a review box from 1 to ${TOP_BOX}`,
-  merge: "review" },
+    merge: "review" },
   due: { check: (v) => Number.isFinite(v) && v >= 0 && v <= Date.now() + 366 * DAY_MS,
-  says: "a time (milliseconds since 1970) within a year", merge: "review" },
+    says: "a time (milliseconds since 1970) within a year", merge: "review" },
   reviewed: { check: notFuture, says: TIME, merge: "review" },
 };
 
@@ -208,8 +209,9 @@ export function same(a, b) {
 }
 
 function sorted(value) {
-  if (Array.isArray(value)) return value.every((v) => typeof v === "number") ? [...value].sort((x,
-    y) => x - y) : value.map(sorted);
+  if (Array.isArray(value)) {
+    return value.every((v) => typeof v === "number") ? [...value].sort((x, y) => x - y) : value.map(sorted);
+  }
   if (isObject(value)) return Object.fromEntries(Object.entries(value).map(([k, v]) => [k, sorted(v)]));
   return value;
 }
@@ -239,15 +241,17 @@ export function parseImport(text, knownIds) {
     if (data.version > SCHEMA_VERSION) throw new ImportError(`The file was written by a newer version of the workbook `
       + `(version ${data.version}); update this page first.`);
     for (const key of Object.keys(data)) {
-      if (!["format", "version", "exported", "site",
-        "exercises"].includes(key)) throw new ImportError(`The file has an unexpected entry “${key.slice(0, 40)}”.`);
+      if (!["format", "version", "exported", "site", "exercises"].includes(key)) {
+        throw new ImportError(`The file has an unexpected entry “${key.slice(0, 40)}”.`);
+      }
     }
     if (!isObject(data.exercises)) throw new ImportError("The file has no “exercises” object.");
     checkKeys(data.exercises, "The exercise list");
     const exercises = {};
     for (const [id, raw] of Object.entries(data.exercises)) {
-      if (knownIds && !knownIds.has(id)) throw new ImportError(`The file mentions exercise “${id.slice(0,
-        20)}”, which this workbook does not have.`);
+      if (knownIds && !knownIds.has(id)) {
+        throw new ImportError(`The file mentions exercise “${id.slice(0, 20)}”, which this workbook does not have.`);
+      }
       const record = cleanRecord(id, raw);
       // a version-1 file: same migration as on load (2 -> 3 -> 4 -> 5 add fields only)
       exercises[id] = data.version < 2 ? migrateRecord(record) : record;

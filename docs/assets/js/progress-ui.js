@@ -20,8 +20,8 @@ const pathOf = (href) => {
 
 // ---- At a glance ------------------------------------------------------------
 function markNavigation(manifest, progress, siteRoot) {
-  const done = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname, tally(manifest, progress,
-    c.ids).done]));
+  const done = new Map(manifest.chapters.map((c) => [new URL(c.url, siteRoot).pathname,
+    tally(manifest, progress, c.ids).done]));
   const links = /** @type {NodeListOf<HTMLAnchorElement>} */ (document.querySelectorAll(
     ".md-nav--primary a.md-nav__link"));
   for (const link of links) {

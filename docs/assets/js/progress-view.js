@@ -76,12 +76,10 @@ export function countBars(count) {
 }
 
 export const MASTERY_RULE = "Solved: answered correctly before opening the solution (a Build exercise: all its tests "
-  + "pass; "
-  + `a Debug exercise: the buggy line found). Mastered: solved that way with ${MASTERED} different sets of numbers, `
-  + "which only the exercises that draw new numbers (the Derive ones) can offer, so they alone count towards it. "
-  + "Review: Derive, Build and Debug exercises come back when they are due, Derive ones with new numbers and Build "
-  + "ones "
-  + "with new hidden tests.";
+  + `pass; a Debug exercise: the buggy line found). Mastered: solved that way with ${MASTERED} different sets of `
+  + "numbers, which only the exercises that draw new numbers (the Derive ones) can offer, so they alone count towards "
+  + "it. Review: Derive, Build and Debug exercises come back when they are due, Derive ones with new numbers and Build "
+  + "ones with new hidden tests.";
 
 export function reviewText(count) {
   if (count.due) return `${plural(count.due, "exercise")} due for review`;

@@ -91,8 +91,7 @@ export class Progress {
   /**
    * @param {string} siteRoot the site's base address: each site keeps its own record
    * @param {{learner?: string, memoryOnly?: string}} [options] `learner`: an opaque key (a hash, never a name or an id)
-   *   that
-   *   gives one learner of a shared browser a record of their own (the LMS's learner, the assignment's student)
+   *   that gives one learner of a shared browser a record of their own (the LMS's learner, the assignment's student)
    *   `memoryOnly`: when set, the record is kept in memory only (nothing read or written in
    *   storage), and this text tells the learner why (an LMS that gives no learner id: lms/learner.js)
    */

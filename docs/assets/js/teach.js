@@ -116,8 +116,8 @@ export async function initTeach(siteRoot) {
     el("div", { className: "wb-course-actions" }, make), status, result);
   const guide = el("a", { href: new URL("teaching/hosting/", siteRoot).href,
     textContent: "Hosting the workbook for a class" });
-  const warning = where.warning ? el("p", { className: "wb-course-problem" }, where.warning, ...(where.local ? [guide,
-    "."] : [])) : null;
+  const warning = where.warning
+    ? el("p", { className: "wb-course-problem" }, where.warning, ...(where.local ? [guide, "."] : [])) : null;
   if (warning) warning.setAttribute(A.hostWarning, where.local ? "local" : "public");
   root.replaceChildren(...(warning ? [warning] : []), form);
   form.addEventListener("submit", (event) => {

@@ -68,8 +68,8 @@ export function init(ctx) {
     });
   }
   return {
-    value: () => Array.from({ length: rows }, (_, i) => Array.from({ length: cols }, (_, j) => at(i + 1, j + 1)?.value
-      ?? "")),
+    value: () => Array.from({ length: rows },
+      (_, i) => Array.from({ length: cols }, (_, j) => at(i + 1, j + 1)?.value ?? "")),
     restore(last) {
       // what the learner typed meanwhile stays
       if (Array.isArray(last) && entries.every((input) => !input.value)) fill(last);
