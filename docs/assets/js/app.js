@@ -33,8 +33,8 @@ export function rememberPage(siteRoot, here = new URL(location.href)) {
   if (!here.href.startsWith(siteRoot) || document.head.querySelector("base")) return;
   here.searchParams.delete("source");
   try {
-    localStorage.setItem(keyFor(siteRoot), here.pathname.slice(new URL(siteRoot).pathname.length) + here.search
-      || "./");
+    localStorage.setItem(keyFor(siteRoot),
+      here.pathname.slice(new URL(siteRoot).pathname.length) + here.search || "./");
   } catch {
     /* storage refused: nothing to remember with */
   }

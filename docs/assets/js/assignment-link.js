@@ -38,8 +38,9 @@ export function assignmentHref(siteRoot, { code, ids, due }) {
 export function readAssignment(hash, known) {
   const params = new URLSearchParams(String(hash).replace(/^#/, ""));
   const code = classKey(params.get("class") ?? "");
-  if (!code) return { ok: false, reason: "This link names no class code: ask your teacher for the assignment's link "
-    + "again." };
+  if (!code) {
+    return { ok: false, reason: "This link names no class code: ask your teacher for the assignment's link again." };
+  }
   if (code.length > CLASS_CAP) return { ok: false,
     reason: `This link's class code is longer than ${CLASS_CAP} characters.` };
   const asked = (params.get("ex") ?? "").split(",").map((s) => s.trim()).filter(Boolean);

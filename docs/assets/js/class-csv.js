@@ -27,9 +27,8 @@ export function toCSV(learners, ids) {
       const c = l.cells[id];
       if (!c) continue;
       out.push([l.student, l.file, l.code ?? "", l.handedIn ?? "", l.late ? "yes" : l.late === false ? "no" : "", id,
-        c.variant,
-        yes(c.claimed), yes(c.verified), yes(c.changed), c.attempts, yes(c.hinted), yes(c.revealed), yes(c.stepped),
-        yes(c.carried), c.note]);
+        c.variant, yes(c.claimed), yes(c.verified), yes(c.changed), c.attempts, yes(c.hinted), yes(c.revealed),
+        yes(c.stepped), yes(c.carried), c.note]);
     }
   }
   return lines(out);
@@ -39,8 +38,9 @@ export function toCSV(learners, ids) {
 export const gradeMark = (c) => (c ? (c.verified ? 1 : 0) : "");
 
 // Canvas's names for the columns that say who a row is (Student, SIS User ID, SIS Login ID, Section); Moodle maps any.
-export const GRADEBOOK_COLUMNS = ["Student", "SIS User ID", "SIS Login ID", "Section", "Handed in", "Late", "Score",
-  "Out of"];
+export const GRADEBOOK_COLUMNS = [
+  "Student", "SIS User ID", "SIS Login ID", "Section", "Handed in", "Late", "Score", "Out of",
+];
 
 /** One line per student (the shown file of each hand-in's row; a progress export names no student and is left out):
  *  id, name, class, handed in, late, score, each exercise's mark. */

@@ -102,8 +102,8 @@ export async function initClassPage(shared, siteRoot) {
   const csv = button("Download the table (CSV)", "csv");
   const gradebook = button("Download the gradebook (CSV, one row per student)", "gradebook");
   const results = el("div", { className: "wb-class-results" });
-  root.replaceChildren(zone, status, version, problems, el("div", { className: "wb-course-actions" }, csv, gradebook),
-    results);
+  root.replaceChildren(zone, status, version, problems,
+    el("div", { className: "wb-course-actions" }, csv, gradebook), results);
   const state = { learners: [], rows: [], ids: [], sort: { key: "student", dir: 1 }, trs: new Map(), seq: 0, page: 0 };
   const pager = el("nav", { className: "wb-class-pager", hidden: true });
   pager.setAttribute("aria-label", "Pages of students");
@@ -222,6 +222,6 @@ export async function initClassPage(shared, siteRoot) {
     take([...event.dataTransfer.files]);
   });
   csv.addEventListener("click", () => download("class-results.csv", toCSV(state.learners, state.ids), "text/csv"));
-  gradebook.addEventListener("click", () => download("class-gradebook.csv", toGradebook(state.rows, state.ids),
-    "text/csv"));
+  gradebook.addEventListener("click",
+    () => download("class-gradebook.csv", toGradebook(state.rows, state.ids), "text/csv"));
 }

@@ -121,8 +121,8 @@ export function statsTable(stats) {
   });
   const table = el("table", { className: "wb-class-slips wb-class-stats" },
     el("caption", { textContent: "Per exercise, over the students it was set for (each student's shown file)." }),
-    el("thead", {}, el("tr", {}, ...heads.map((t) => el("th", { scope: "col", textContent: t })))), el("tbody", {},
-    ...body));
+    el("thead", {}, el("tr", {}, ...heads.map((t) => el("th", { scope: "col", textContent: t })))),
+    el("tbody", {}, ...body));
   const wrap = el("div", { className: "wb-class-scroll", tabIndex: 0, role: "region" }, table);
   wrap.setAttribute("aria-label", "Which exercises worked");
   return wrap;

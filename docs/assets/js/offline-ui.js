@@ -137,8 +137,8 @@ export function showUpdate(registration) {
   const bar = element("div", { className: "wb-update" });
   bar.dataset.wbUpdate = "";
   bar.setAttribute("role", "status");
-  const text = element("p", { text: "A new version of the workbook is ready. Reload to use it (your progress is "
-    + "kept)." });
+  const text = element("p",
+    { text: "A new version of the workbook is ready. Reload to use it (your progress is kept)." });
   const reload = button("Reload", null, true, () => {
     reload.disabled = true;
     // The waiting worker takes over; "controllerchange" then reloads every open page.

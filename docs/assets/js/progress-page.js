@@ -101,8 +101,8 @@ function importAction(progress, say, knownIds) {
     file.value = "";
     if (!chosen) return;
     const result = chosen.size > MAX_IMPORT_BYTES
-      ? { ok: false, reason: `The file is too large (${groupDigits(chosen.size)} bytes); a progress file is much `
-      + `smaller.` }
+      ? { ok: false,
+        reason: `The file is too large (${groupDigits(chosen.size)} bytes); a progress file is much smaller.` }
       : parseImport(await chosen.text().catch(() => null), knownIds);
     if (!result.ok) say(`Import refused: ${result.reason} Nothing was changed.`, "error");
     else say(describeMerge(progress.merge(result.exercises)), "ok");

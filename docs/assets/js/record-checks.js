@@ -26,8 +26,8 @@ const isGrid = (v) => Array.isArray(v) && v.length >= 1 && v.length <= GRID
 /** One answer as a request carries it: a text, a number, a list of step keys or a grid of entries. */
 export const isAnswer = (v) => isCell(v) || isKeyList(v) || isGrid(v);
 /** The step answers one graded answer carried: {NAME: answer}, at most LIMIT.steps. */
-export const isStepAnswers = (v) => keysOk(v, LIMIT.steps, (k) => STEP_NAME.test(k)) && Object.values(v)
-  .every(isAnswer);
+export const isStepAnswers = (v) => keysOk(v, LIMIT.steps, (k) => STEP_NAME.test(k))
+  && Object.values(v).every(isAnswer);
 /** The earlier answers one graded answer carried: {ID: {answer, variant}}, at most LIMIT.given. */
 export const isGiven = (v) => keysOk(v, LIMIT.given, (k) => EXERCISE_ID.test(k))
   && Object.values(v).every((g) => keysOk(g, 2, (k) => k === "answer" || k === "variant") && isAnswer(g.answer)

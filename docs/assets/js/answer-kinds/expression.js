@@ -24,8 +24,8 @@ export function init(ctx) {
     timer = setTimeout(async () => {
       if (!input.value.trim()) return show();
       const mine = ++asked;
-      const reply = await ctx.runtime.request({ op: "read", exercise: ctx.id, variant: ctx.variant, step: ctx.step,
-        answer: input.value });
+      const reply = await ctx.runtime.request(
+        { op: "read", exercise: ctx.id, variant: ctx.variant, step: ctx.step, answer: input.value });
       if (mine === asked && reply.ok) show(reply.value.latex, reply.value.message);
     }, PAUSE_MS);
   });

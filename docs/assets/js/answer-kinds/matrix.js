@@ -49,8 +49,8 @@ export function init(ctx) {
       // A whole matrix typed (not pasted) into one entry, the others empty: split it as a paste.
       const text = input.value;
       if (!wholeIn(input)) return;
-      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step,
-        text });
+      const reply = await ctx.runtime.request(
+        { op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step, text });
       if (reply.ok && reply.value.entries && input.value === text) fill(reply.value.entries);
     });
     input.addEventListener("paste", async (event) => {
@@ -58,8 +58,8 @@ export function init(ctx) {
       if (entries.length < 2 || !/[\s,;[\]]/.test(text.trim())) return; // one value: paste as usual
       event.preventDefault();
       const at = [input.selectionStart ?? input.value.length, input.selectionEnd ?? input.value.length];
-      const reply = await ctx.runtime.request({ op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step,
-        text });
+      const reply = await ctx.runtime.request(
+        { op: "split", exercise: ctx.id, variant: ctx.variant, step: ctx.step, text });
       if (reply.ok && typeof reply.value.cell === "string") {
         input.setRangeText(reply.value.cell, at[0], at[1], "end");
         input.dispatchEvent(new Event("input", { bubbles: true }));
