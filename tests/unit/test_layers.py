@@ -16,7 +16,7 @@ import pytest
 PACKAGE = Path(__file__).resolve().parents[2] / "pyodide_pkg" / "workbook"
 
 LAYERS: tuple[tuple[str, ...], ...] = (  # top first
-    ("api", "copying"),  # copying: the teach page's copy-share measure, over the whole bank
+    ("api", "copying", "version"),  # copying: the teach page's copy-share measure, over the whole bank
     ("bank", "assignment"),
     ("kinds",),
     ("figures", "carried", "build_plain"),
