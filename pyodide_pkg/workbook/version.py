@@ -39,16 +39,21 @@ def _files(folder: Traversable, prefix: str = "") -> list[tuple[str, Traversable
     return out
 
 
-def _program(source: bytes) -> bytes:
-    """A module's syntax tree without the docstring of the module and of each class and function."""
-    tree = ast.parse(source)
+def strip_docstrings(tree: ast.AST) -> ast.AST:
+    """Remove the docstring of the module and of every class and function (in place; returns the tree).
+    The build's stdlib minifier (scripts/split_stdlib.py) strips them the same way."""
     for node in ast.walk(tree):
         if isinstance(node, (ast.Module, ast.ClassDef, ast.FunctionDef, ast.AsyncFunctionDef)):
             body = node.body
             if body and isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) \
                     and isinstance(body[0].value.value, str):
                 body[0:1] = [] if len(body) > 1 else [ast.Pass()]
-    return ast.dump(tree).encode()
+    return tree
+
+
+def _program(source: bytes) -> bytes:
+    """A module's syntax tree without the docstring of the module and of each class and function."""
+    return ast.dump(strip_docstrings(ast.parse(source))).encode()
 
 
 @functools.cache

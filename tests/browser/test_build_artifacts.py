@@ -18,7 +18,7 @@ import sys
 import zipfile
 from pathlib import Path
 
-from split_stdlib import strip_docstrings  # scripts/ (tests/conftest.py puts it on the path)
+from workbook.version import strip_docstrings  # the one docstring stripper (the build's minifier uses it too)
 
 SITE = Path(__file__).resolve().parents[2] / "site"
 VENDOR = SITE / "assets/vendor/pyodide"

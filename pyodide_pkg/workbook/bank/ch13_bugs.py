@@ -50,16 +50,9 @@ _CASES = (
 def scan_facts() -> dict:
     """The first case: the scan turned by 10°; what the bug reports."""
     P, Q = _CASES[0]
-    n = len(P)
-    px, py = sum(p[0] for p in P) / n, sum(p[1] for p in P) / n
-    qx, qy = sum(q[0] for q in Q) / n, sum(q[1] for q in Q) / n
-    h = [[0.0, 0.0], [0.0, 0.0]]
-    for (ax, ay), (bx, by) in zip(P, Q):
-        a, b = (ax - px, ay - py), (bx - qx, by - qy)
-        for i in range(2):
-            for j in range(2):
-                h[i][j] += b[i] * a[j]
-    wrong = math.degrees(math.atan2(h[0][1] - h[1][0], h[0][0] + h[1][1]))
+    program: dict = {}
+    exec(_SCAN_MATCH, program)  # the bug's own code says what it reports: nothing here copies it
+    wrong = math.degrees(program["scan_turn"](P, Q)[0])
     return {"right": math.degrees(_turn(P, Q)[0]), "wrong": wrong}
 
 
