@@ -17,7 +17,7 @@ await build({
   splitting: true,
   chunkNames: "chunks/[name]-[hash]",
 });
-// The runtime files' sizes, for the boot's progress bar (docs/assets/js/boot.js): real bytes, known at build time.
+// The runtime files' sizes, for the boot's progress bar (docs/assets/js/boot-meter.js): real bytes, known at build time.
 const VENDOR = "docs/assets/vendor/pyodide";
 const sizes = Object.fromEntries(readdirSync(VENDOR).map((name) => [name, statSync(`${VENDOR}/${name}`).size]));
 await build({

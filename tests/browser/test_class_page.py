@@ -19,7 +19,7 @@ import pytest
 from playwright.sync_api import Page
 
 from class_files import a_class, answer, derive_ids, hand_in, record
-from test_a11y import COLOUR_RULES, OVERFLOW, audit, load_axe, set_scheme
+from site_audit import COLOUR_RULES, OVERFLOW, audit, load_axe, set_scheme
 from workbook import bank, version
 
 SLOW = 300_000

@@ -15,7 +15,7 @@ import re
 
 from conftest import SITE
 from helpers import CHAPTERS
-from test_a11y import DECISIONS, EVERY_PAGE
+from site_audit import DECISIONS, EVERY_PAGE
 from test_course import COURSE_PAGES
 
 CSP_META = re.compile(r'<meta http-equiv="Content-Security-Policy" content="([^"]+)">')

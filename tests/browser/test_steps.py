@@ -11,7 +11,7 @@ from __future__ import annotations
 from playwright.sync_api import Locator, Page, expect
 
 from helpers import exercise, fill_matrix, open_chapter, paste, role, wait_runtime
-from test_a11y import COLOUR_RULES, audit, set_scheme
+from site_audit import COLOUR_RULES, audit, set_scheme
 from workbook import bank
 from workbook.contract import ATTR, STATE, TAG
 from workbook.number_format import fmt

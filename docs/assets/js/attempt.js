@@ -11,6 +11,10 @@ import { countSlip } from "./assignment-schema.js";
 
 const listeners = new Set();
 
+// A named slip is kept by the bank's stable id (data.slipId, e.g. "6.3/cos-minus-one"), the key the class page
+// counts re-graded answers by; a verdict without one keeps the name the grader derives (data.slip).
+const slipKey = (data) => data?.slipId || data?.slip || null;
+
 /** Call `listener({id, variant, progress, attempt})` after every graded attempt; returns the way to stop. */
 export function onAttempt(listener) {
   listeners.add(listener);
@@ -29,7 +33,7 @@ export function attemptOf(request, reply, at = Date.now()) {
     ? (typeof request.code === "string" && request.code.length <= LIMIT.code ? { code: request.code } : {})
     : { answer: request.answer };
   const filled = (v) => v && Object.keys(v).length > 0;
-  return { ...what, status, at, ...(tag ? { tag } : {}), ...(data?.slip ? { slip: data.slip } : {}),
+  return { ...what, status, at, ...(tag ? { tag } : {}), ...(slipKey(data) ? { slip: slipKey(data) } : {}),
     ...(filled(request.steps) ? { steps: request.steps } : {}),
     ...(filled(request.given) ? { given: request.given } : {}) };
 }

@@ -22,7 +22,7 @@
 //   files, counted as they arrive), "start" (Python starting), then the caller
 //   says "ready"; `step` (boot-steps.js) what is happening now: the start's steps
 //   are told as they begin, and `step(name)` in the result tells the caller's own
-//   (its imports). Sizes come from the build (scripts/bundle.mjs: BOOT_SIZES).
+//   (its imports). Sizes come from the build (boot-meter.js).
 //
 // It relies on Pyodide 0.27 internals beyond the public API, each named in
 // pyodide-internals.json (beside this file; PYODIDE_INTERNALS below), which a
@@ -31,13 +31,13 @@
 // `instantiateStreaming(fetch(wasm))`; the `stdLibURL` option and where the
 // standard library is mounted; pyodide.asm.js loaded by importScripts.
 // docs/performance.md has the measurements behind each step.
-/* global loadPyodide, BOOT_SIZES */
+/* global loadPyodide */
 import internals from "./pyodide-internals.json";
-import { BOOT_STEP, STEP_ORDER } from "./boot-steps.js";
+import { BOOT_STEP } from "./boot-steps.js";
+import { fileIn, progressMeter } from "./boot-meter.js";
 
 export const PYODIDE_INTERNALS = Object.freeze(internals.internals.map((entry) => entry.name));
 
-const SIZES = typeof BOOT_SIZES === "object" ? BOOT_SIZES : {}; // file name -> bytes (defined by the bundler)
 const networkFetch = self.fetch.bind(self); // kept before patchWasm() stands in for it
 
 // `stages` keeps when each step ended (ms since the worker started), for the benchmark.
@@ -45,9 +45,6 @@ export const stages = {};
 export const mark = (name) => {
   stages[name] = Math.round(performance.now());
 };
-
-/** `url`'s file name in the Pyodide folder `indexURL`, or null. */
-const fileIn = (indexURL, url) => (String(url).startsWith(indexURL) ? String(url).slice(indexURL.length) : null);
 
 /** Whether the service worker's stored copy holds `url` (its bytes are read through the service worker, which
  *  checks them). */
@@ -57,74 +54,6 @@ async function isStored(url) {
   } catch {
     return false; // no Cache Storage here (an insecure origin)
   }
-}
-
-// ---- Progress: bytes of the runtime files as they arrive --------------------------
-function progressMeter(indexURL, files, onProgress) {
-  const loaded = new Map(); // file name -> bytes so far
-  const expected = new Map(files.map((name) => [name, SIZES[name] || 0]));
-  let phase = "download";
-  /** @type {string} */
-  let step = BOOT_STEP.download;
-  let last = 0;
-  const report = (force) => {
-    if (!onProgress) return;
-    const now = performance.now();
-    if (!force && now - last < 100) return;
-    last = now;
-    let done = 0;
-    for (const [name, size] of expected) done += Math.min(loaded.get(name) || 0, size || Infinity);
-    const total = [...expected.values()].reduce((a, b) => a + b, 0);
-    // Every file is in, or Python has started and imports (a file left uncounted must not hold the phase back).
-    if (phase === "download" && (done >= total || step === BOOT_STEP.import)) phase = "start";
-    const shown = phase === "start" && step === BOOT_STEP.download ? BOOT_STEP.compile : step;
-    onProgress({ phase, loaded: Math.min(done, total), total, step: shown });
-  };
-  return {
-    /** Count `response`'s body as it arrives (a clone: the original goes on untouched). */
-    watch(name, response) {
-      if (!expected.has(name) || !response?.body) return response;
-      const reader = response.clone().body.getReader();
-      (async () => {
-        let n = 0;
-        for (;;) {
-          const { done, value } = await reader.read();
-          if (done) break;
-          n += value.byteLength;
-          loaded.set(name, n);
-          report(false);
-        }
-        loaded.set(name, Math.max(n, expected.get(name)));
-        report(true);
-      })().catch(() => {});
-      return response;
-    },
-    done(name) {
-      loaded.set(name, expected.get(name) || 0);
-      report(true);
-    },
-    drop(name) {
-      expected.delete(name);
-      report(true);
-    },
-    /** Count `to` instead of `from` (the start took another file for the same part). */
-    swap(from, to) {
-      expected.delete(from);
-      expected.set(to, SIZES[to] || 0);
-      report(true);
-    },
-    phase(next) {
-      phase = next;
-      report(true);
-    },
-    /** What the worker does now (never an earlier step than the one told before). */
-    step(next) {
-      if (STEP_ORDER.indexOf(next) <= STEP_ORDER.indexOf(step)) return;
-      step = next;
-      report(true);
-    },
-    fileName: (url) => fileIn(indexURL, url),
-  };
 }
 
 // ---- The memory snapshot ------------------------------------------------------------

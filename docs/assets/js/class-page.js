@@ -27,8 +27,11 @@ function renderMistakes(rows, ids) {
   let any = false;
   for (const id of ids) {
     const counts = new Map(); // key -> {text, answers, learners, recorded}
-    const count = (key, text) => counts.get(key) ?? counts.set(key, { text, answers: 0, learners: 0, recorded: 0 })
-      .get(key);
+    const count = (key, text) => {
+      const m = counts.get(key) ?? counts.set(key, { text, answers: 0, learners: 0, recorded: 0 }).get(key);
+      if (m.text === key && text !== key) m.text = text; // a recorded slip id first seen, its words later
+      return m;
+    };
     // recorded name -> slip id
     const byName = new Map(rows.flatMap(({ learner: l }) => Object.entries(l.cells[id]?.slipNames ?? {})));
     for (const { learner: l } of rows) {

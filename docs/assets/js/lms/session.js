@@ -137,7 +137,7 @@ class Session {
       values.push(...objectiveValues(this.version, i, exercise, record),
         ...interactionValues(this.version, i, exercise, record, earlier));
     });
-    const { text, dropped } = encodeSuspend(records, this.version);
+    const { text, dropped } = encodeSuspend(records, this.version, this.ids);
     this.dropped = dropped;
     const elapsed = Date.now() - this.launch.started; // the launch's time, not this page's
     values.push(["cmi.suspend_data", text], [this.el.exit, "suspend"],

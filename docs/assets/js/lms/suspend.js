@@ -14,8 +14,11 @@
 // When it would not fit, what is dropped first:
 //   2004: the checked steps on screen (`stepWork`), then Build code, then the
 //         compact form (as for 1.2);
-//   1.2:  last answers, of the exercise updated longest ago first; then (never
-//         with this workbook's exercises) whole records, oldest first.
+//   1.2:  last answers, of the exercise updated longest ago first; then whole records,
+//         oldest first. The launched chapter's own (`first`) go last in each round: a SCO's
+//         suspend_data is its own, so every chapter's records travel whole in their own
+//         SCO's copy, and the others' as far as they fit (at their widest, 112 records take
+//         4,036 characters, so a few more chapters pass the limit; one chapter's need under 500).
 // What is dropped is only left out of the LMS's copy: this browser keeps it.
 //
 // Decoding never trusts the text: every record passes the progress schema's
@@ -210,22 +213,25 @@ function compact(entries, withLast) {
 }
 
 /**
- * The compact text of `exercises` ({id: record}) within `limit` characters.
- * Returns {text, dropped: {answers: [ids], records: [ids]}}.
+ * The compact text of `exercises` ({id: record}) within `limit` characters; the ids in `first` (the launched
+ * chapter's) are dropped only after every other one. Returns {text, dropped: {answers: [ids], records: [ids]}}.
  */
-export function encodeCompact(exercises, limit = LIMIT_12) {
+export function encodeCompact(exercises, limit = LIMIT_12, first = []) {
   const entries = Object.entries(exercises).filter(([id, r]) => ID.test(id) && isObject(r));
-  const oldestFirst = (list) => [...list].sort(([, a], [, b]) => (a.updated ?? 0) - (b.updated ?? 0));
+  const own = new Set(first);
+  // Others before the launched chapter's, and in each the one updated longest ago first.
+  const dropOrder = (list) => [...list].sort(([a, x], [b, y]) =>
+    Number(own.has(a)) - Number(own.has(b)) || (x.updated ?? 0) - (y.updated ?? 0));
   const withLast = new Set(entries.filter(([, r]) => r.last !== undefined && r.last !== null).map(([id]) => id));
   const dropped = { answers: [], records: [] };
   let text = compact(entries, withLast);
-  for (const [id] of oldestFirst(entries)) {
+  for (const [id] of dropOrder(entries)) {
     if (text.length <= limit) break;
     if (!withLast.delete(id)) continue;
     dropped.answers.push(id);
     text = compact(entries, withLast);
   }
-  let kept = oldestFirst(entries);
+  let kept = dropOrder(entries);
   while (text.length > limit && kept.length) {
     dropped.records.push(kept[0][0]);
     kept = kept.slice(1);
@@ -234,10 +240,10 @@ export function encodeCompact(exercises, limit = LIMIT_12) {
   return { text, dropped };
 }
 
-/** suspend_data for SCORM `version` ("1.2" or "2004"): {text, dropped}. */
-export function encodeSuspend(exercises, version) {
+/** suspend_data for SCORM `version` ("1.2" or "2004"): {text, dropped}; `first`: the launched chapter's ids. */
+export function encodeSuspend(exercises, version, first = []) {
   const { suspendLimit, suspendJson } = VERSIONS[version];
-  if (!suspendJson) return encodeCompact(exercises, suspendLimit);
+  if (!suspendJson) return encodeCompact(exercises, suspendLimit, first);
   const fields = [];
   let records = exercises;
   for (const field of [null, "stepWork", "code"]) {
@@ -252,7 +258,7 @@ export function encodeSuspend(exercises, version) {
     const text = JSON_PREFIX + canonical(records);
     if (text.length <= suspendLimit) return { text, dropped: { fields } };
   }
-  return encodeCompact(exercises, suspendLimit);
+  return encodeCompact(exercises, suspendLimit, first);
 }
 
 /** The records in a suspend_data text: {exercises, skipped}, where `skipped` counts records that failed their
