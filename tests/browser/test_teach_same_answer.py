@@ -17,7 +17,7 @@ def test_teach_page_labels_the_exercises_whose_answer_cannot_vary(page: Page, si
     assert set(labelled) == set(expected)
     for ex_id, why in expected.items():
         if why:
-            assert labelled[ex_id] == f" (same answer for every student: {why})", ex_id
+            assert labelled[ex_id] == f" (students may share this answer: {why})", ex_id
         else:
             assert labelled[ex_id] is None, ex_id
     assert expected["0.6"] and expected["0.3"] and not expected["0.1"]  # a Derive that cannot vary, a Trace, one that does

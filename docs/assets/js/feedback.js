@@ -34,15 +34,32 @@ export function showMessage(el, text, math = null) {
   if (Array.isArray(math) && math.length) renderMath(p);
 }
 
+// A number in a test's call or value never breaks across lines (a narrow column may break the call
+// between its arguments, or inside a long name, but "1.570796" stays whole).
+const NUMBER = /-?\d+(?:\.\d+)?(?:e[-+]?\d+)?/gi;
+
+function codeOf(text) {
+  const code = document.createElement("code");
+  let at = 0;
+  for (const m of text.matchAll(NUMBER)) {
+    if (m.index > at) code.append(text.slice(at, m.index));
+    const num = document.createElement("span");
+    num.className = "wb-num";
+    num.textContent = m[0];
+    code.append(num);
+    at = m.index + m[0].length;
+  }
+  if (at < text.length) code.append(text.slice(at));
+  return code;
+}
+
 function testRow(row) {
   const tr = document.createElement("tr");
   tr.setAttribute(ATTR.role, ROLE.testResult);
   tr.setAttribute(ATTR.passed, String(Boolean(row.passed)));
   for (const text of [row.input, row.expected, row.actual]) {
-    const code = document.createElement("code");
-    code.textContent = text ?? "";
     const td = document.createElement("td");
-    td.append(code);
+    td.append(codeOf(String(text ?? "")));
     tr.append(td);
   }
   const result = document.createElement("td");
