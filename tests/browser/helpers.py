@@ -100,6 +100,12 @@ def before_the_widget(page: Page, chunk: str, go: Callable[[], object], act: Cal
     page.route(pattern, lambda route: held.append(route))
     go()
     act()
+    # The page asks for the chunk when its script gets to it, which may come after `act` on a fast run: the
+    # learner's work is done by then either way (the chunk is held until now), so wait for the request.
+    for _ in range(600):
+        if held:
+            break
+        page.wait_for_timeout(50)  # Playwright's route handlers run while it waits
     assert held, f"the {chunk} widget's script was not held back"
     for route in held:
         route.continue_()
