@@ -33,7 +33,6 @@ const essential = (r) => ({
 });
 
 const chapterOf = (id) => id.split(".")[0];
-const CHAPTERS = [...new Set(IDS.map(chapterOf))];
 
 function checkKept(exercises, records, ids) {
   for (const id of ids) {

@@ -33,7 +33,8 @@ export function attemptOf(request, reply, at = Date.now()) {
     ? (typeof request.code === "string" && request.code.length <= LIMIT.code ? { code: request.code } : {})
     : { answer: request.answer };
   const filled = (v) => v && Object.keys(v).length > 0;
-  return { ...what, status, at, ...(tag ? { tag } : {}), ...(slipKey(data) ? { slip: slipKey(data) } : {}),
+  const slip = slipKey(data);
+  return { ...what, status, at, ...(tag ? { tag } : {}), ...(slip ? { slip } : {}),
     ...(filled(request.steps) ? { steps: request.steps } : {}),
     ...(filled(request.given) ? { given: request.given } : {}) };
 }
