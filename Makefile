@@ -212,7 +212,7 @@ typecheck: node_modules/.installed build/casefold.json
 lint: $(BIN)/.test node_modules/.installed typecheck
 	$(BIN)/ruff check --quiet $(LINT_PY)
 	$(BIN)/mypy
-	node_modules/.bin/eslint --max-warnings 0 docs/assets/js
+	node_modules/.bin/eslint --max-warnings 0 docs/assets/js tests/js
 
 test-unit: $(BIN)/.test node_modules/.installed
 	WORKBOOK_DRAW_SHARE=0.2 $(UNIT)

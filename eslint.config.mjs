@@ -3,7 +3,8 @@
 // code, duplicate keys); nothing is switched off. Each file gets the globals its context
 // really has: the page's modules a window's, the grader's, the sandbox's and the search's workers (and the
 // boot module they share) a dedicated worker's, sw.js a service worker's (a classic script
-// that docs/hooks/offline.py fills in).
+// that docs/hooks/offline.py fills in). The page-side tests in tests/js (Node's runner) get the same rules
+// and Node's globals.
 import js from "@eslint/js";
 import globals from "globals";
 
@@ -32,6 +33,11 @@ export default [
       },
     },
   },
+  {
+    ...js.configs.recommended,
+    files: ["tests/js/**/*.mjs"],
+    languageOptions: { sourceType: "module", globals: globals.node },
+  },
   // Lines of at most 120 characters, comments and strings included (URLs excepted).
-  { files: ["docs/assets/js/**/*.js"], rules: { "max-len": ["error", { code: 120, ignoreUrls: true }] } },
+  { files: ["docs/assets/js/**/*.js", "tests/js/**/*.mjs"], rules: { "max-len": ["error", { code: 120, ignoreUrls: true }] } },
 ];

@@ -135,9 +135,10 @@ def page(page, external_requests):
 
 
 @pytest.fixture(scope="module")
-def _tour_tab(browser, site_url):
-    """The one tab of a test module's ``tour``, with the checks the ``page`` fixture makes."""
-    context = browser.new_context(service_workers="block")  # no offline copy (see browser_context_args)
+def _tour_tab(browser, site_url, browser_context_args):
+    """The one tab of a test module's ``tour``, with the checks the ``page`` fixture makes, in a
+    context made as the module's ``page`` is (its viewport, touch), with no offline copy."""
+    context = browser.new_context(**{**browser_context_args, "service_workers": "block"})
     leaving = (keep_to_origin if os.environ.get("WORKBOOK_ROUTE_ALL") else record_leaving)(context, site_url)
     tab = context.new_page()
     tab.set_default_timeout(30_000)

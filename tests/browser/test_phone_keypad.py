@@ -65,26 +65,38 @@ def cells(answer) -> list[tuple[tuple[int, int] | None, str]]:
     return [(None, typed)]
 
 
-def box(ex_el, step: str | None, at: tuple[int, int] | None):
-    scope = ex_el
-    if step:
-        scope = ex_el.locator(role("work-step", f'[{ATTR.stepName}="{step}"]'))
-        opener = ex_el.locator(role("work-steps-open"))
-        if not scope.count():  # the steps wait in a <template> until the panel first opens
-            opener.wait_for()
-            ex_el.page.wait_for_function("el => el.closest('[data-exercise-id]').querySelector('form[data-wb-ready]')",
-                                         arg=opener.element_handle())
-            opener.click()
-        scope.wait_for(state="attached")
-    if at is None:
-        return scope.locator(role("answer")).first
-    return scope.locator(role("entry", f'[{ATTR.row}="{at[0]}"][{ATTR.col}="{at[1]}"]')).first
+def open_steps(ex_el) -> None:
+    """Open the exercise's checked steps (they wait in a <template> until the panel first opens)."""
+    if ex_el.locator(role("work-step")).count():
+        return
+    opener = ex_el.locator(role("work-steps-open"))
+    opener.wait_for()
+    ex_el.page.wait_for_function("el => el.closest('[data-exercise-id]').querySelector('form[data-wb-ready]')",
+                                 arg=opener.element_handle())
+    opener.click()
+    ex_el.locator(role("work-step")).first.wait_for(state="attached")
 
 
-def test_every_answer_of_the_workbook_can_be_typed_with_the_keypad_and_letters(page, site_url):
+# Every answer box of an exercise, read at once: {"step|row|col": [keys, inputmode]}, step "" for
+# the exercise's own answer, row and col "" for a single box.
+BOXES = """(ex, [inputs, step, stepName, row, col, keys]) => Object.fromEntries(
+  [...ex.querySelectorAll(inputs)].map((b) => [
+    [b.closest(step)?.getAttribute(stepName) ?? "", b.getAttribute(row) ?? "", b.getAttribute(col) ?? ""].join("|"),
+    [b.getAttribute(keys), b.getAttribute("inputmode")]]))"""
+
+
+def boxes(ex_el) -> dict[str, list[str]]:
+    return ex_el.evaluate(BOXES, [INPUTS, role("work-step"), ATTR.stepName, ATTR.row, ATTR.col, ATTR.keys])
+
+
+def where(step: str | None, at: tuple[int, int] | None) -> str:
+    return "|".join([step or "", *(map(str, at) if at else ("", ""))])
+
+
+def test_every_answer_of_the_workbook_can_be_typed_with_the_keypad_and_letters(tour):
     seen = 0
     for n, path in CHAPTERS.items():
-        page.goto(site_url + path)
+        page = tour(n)
         missing = page.locator(INPUTS).evaluate_all(
             "els => els.filter(e => !e.getAttribute('inputmode') || !e.getAttribute('enterkeyhint')"
             " || !e.dataset.keys).map(e => e.outerHTML.slice(0, 100))")
@@ -93,12 +105,14 @@ def test_every_answer_of_the_workbook_can_be_typed_with_the_keypad_and_letters(p
             if ex.kind != "derive":
                 continue
             el = exercise(page, ex.id)
+            if getattr(ex, "step_answers", None):
+                open_steps(el)
+            found = boxes(el)
             for step, answer in answers(ex):
                 for at, text in cells(answer):
-                    target = box(el, step, at)
-                    keys = target.get_attribute(ATTR.keys).split()
-                    numeric = target.get_attribute("inputmode") == "numeric"
-                    strokes(text, keys, numeric)
+                    assert where(step, at) in found, f"{ex.id}: no answer box {where(step, at)!r} in {sorted(found)}"
+                    keys, mode = found[where(step, at)]
+                    strokes(text, keys.split(), mode == "numeric")
                     seen += 1
     assert seen > 150, seen
 

@@ -233,17 +233,16 @@ FITS = """(ex) => {
 }"""
 
 
-def test_a_build_runs_table_and_the_editors_help_line_fit_at_360_px(page, site_url):
+def test_a_build_runs_table_and_the_editors_help_line_fit_at_360_px(tour):
     """Issue 48: after a Build run at 360 px the pass/fail column was past the screen's edge
     (x = 329-369 on 4.5) with no visible scrollbar, and the editor's help line was clipped on both
     sides by the exercise's borders. Every Build exercise, its solution run (and a failing run)."""
     runs = 0
-    for n, path in CHAPTERS.items():
+    for n in CHAPTERS:
         builds = [ex for ex in bank.chapter(n) if ex.kind == "build"]
         if not builds:
             continue
-        page.goto(site_url + path)
-        wait_runtime(page, timeout=120_000)
+        page = tour(n)
         for k, ex in enumerate(builds):
             el = exercise(page, ex.id)
             for code in (ex.solution, ex.starter) if k == 0 else (ex.solution,):
@@ -281,14 +280,14 @@ DISPLAY_SCROLLS = """async () => {
 }"""
 
 
-def test_no_display_formula_scrolls_at_360_px(page, site_url):
+def test_no_display_formula_scrolls_at_360_px(tour):
     """Issue 48: 14 display formulas of the chapters (27 before the first fixes: measured with this
     script) scrolled sideways at 360 px; each now breaks at a natural operator (aligned and
     gathered forms in the Markdown), the hints' formulas included."""
     formulas = 0
     wide = {}
-    for _n, path in CHAPTERS.items():
-        page.goto(site_url + path)
+    for n, path in CHAPTERS.items():
+        page = tour(n)
         # KaTeX typesets the page in slices (math.js): wait for every display formula
         page.wait_for_function("() => { const all = [...document.querySelectorAll('div.arithmatex')];"
                                " return all.length > 0 && all.every((el) => el.dataset.rendered); }")

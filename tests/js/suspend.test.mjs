@@ -4,7 +4,9 @@
 
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { COMPACT, LIMIT_12, LIMIT_2004, compactCoverage, decodeSuspend, encodeCompact, encodeSuspend } from "../../docs/assets/js/lms/suspend.js";
+import {
+  COMPACT, LIMIT_12, LIMIT_2004, compactCoverage, decodeSuspend, encodeCompact, encodeSuspend,
+} from "../../docs/assets/js/lms/suspend.js";
 import { FIELDS, cleanRecord, mergeRecord } from "../../docs/assets/js/progress-schema.js";
 import { MASTERED, isMastered, isSolved } from "../../docs/assets/js/review.js";
 import { chapterValues, duration2004, interactionValues, timespan12 } from "../../docs/assets/js/lms/report.js";
@@ -40,14 +42,16 @@ function checkKept(exercises, records, ids) {
     assert.ok(back, `${id} kept`);
     assert.deepEqual(essential(back), essential(records[id]), id);
     assert.ok(Math.abs(back.due - records[id].due) < 60_000, `${id}: due within the minute`);
-    assert.ok(back.updated <= records[id].updated && records[id].updated - back.updated < 1000, `${id}: updated to the second, never later`);
+    assert.ok(back.updated <= records[id].updated && records[id].updated - back.updated < 1000,
+      `${id}: updated to the second, never later`);
   }
 }
 
 // The workbook as it is, and one with a made-up chapter 99 of 40 more exercises (past 1.2's limit at their widest).
 const BOOKS = [IDS, [...IDS, ...Array.from({ length: 40 }, (_, i) => `99.${i + 1}`)]];
 
-for (const book of BOOKS) test(`every chapter's records of ${book.length}, each at its widest, travel whole in its own SCO's 4,096 characters, the others' as far as they fit`, () => {
+for (const book of BOOKS) test(`every chapter's records of ${book.length}, each at its widest, travel whole in ` +
+  "its own SCO's 4,096 characters, the others' as far as they fit", () => {
   const chapters = [...new Set(book.map(chapterOf))];
   assert.ok(chapters.length > 1);
   const records = Object.fromEntries(book.map((id, i) => [id, fullRecord(i, { ids: book })]));
@@ -65,7 +69,8 @@ for (const book of BOOKS) test(`every chapter's records of ${book.length}, each 
     assert.deepEqual(dropped.records, others.slice(0, dropped.records.length), chapter);
     checkKept(exercises, records, others.slice(dropped.records.length));
     if (dropped.records.length) {
-      const oneMore = Object.fromEntries(Object.entries(records).filter(([id]) => !dropped.records.slice(0, -1).includes(id)));
+      const oneMore = Object.fromEntries(Object.entries(records)
+        .filter(([id]) => !dropped.records.slice(0, -1).includes(id)));
       assert.ok(encodeCompact(oneMore, Infinity).text.length > LIMIT_12, `${chapter}: dropped one more than needed`);
     } else {
       assert.ok(whole <= LIMIT_12);
@@ -78,11 +83,13 @@ test("over the limit, last answers are dropped first, oldest record first, and n
   // Short answers: with 100 exercises at their widest, room is left for some of their answers only.
   const long = "x".repeat(8);
   const ids = IDS.slice(0, 100); // records that fit whole at their widest, without their answers
-  assert.ok(encodeCompact(Object.fromEntries(ids.map((id, i) => [id, fullRecord(i)])), Infinity).text.length <= LIMIT_12);
+  const widest = Object.fromEntries(ids.map((id, i) => [id, fullRecord(i)]));
+  assert.ok(encodeCompact(widest, Infinity).text.length <= LIMIT_12);
   const records = Object.fromEntries(ids.map((id, i) => [id, fullRecord(i, { answer: `${long} ${i}` })]));
   const { text, dropped } = encodeSuspend(records, "1.2");
   assert.ok(text.length <= LIMIT_12, `${text.length} characters`);
-  assert.ok(dropped.answers.length > 0 && dropped.answers.length < ids.length, `${dropped.answers.length} answers dropped`);
+  assert.ok(dropped.answers.length > 0 && dropped.answers.length < ids.length,
+    `${dropped.answers.length} answers dropped`);
   assert.deepEqual(dropped.records, []);
   // Oldest first: the dropped ones are exactly the first N by time.
   assert.deepEqual(dropped.answers, ids.slice(0, dropped.answers.length));
@@ -93,7 +100,8 @@ test("over the limit, last answers are dropped first, oldest record first, and n
   }
   // Just one answer fewer would not have fitted: the limit is used, not wasted.
   const kept = new Set(ids.slice(dropped.answers.length - 1));
-  const oneMore = Object.fromEntries(ids.map((id, i) => [id, kept.has(id) ? records[id] : { ...records[id], last: undefined }]));
+  const oneMore = Object.fromEntries(ids.map((id) =>
+    [id, kept.has(id) ? records[id] : { ...records[id], last: undefined }]));
   for (const r of Object.values(oneMore)) if (r.last === undefined) delete r.last;
   assert.ok(encodeCompact(oneMore, Infinity).text.length > LIMIT_12);
 });
@@ -107,13 +115,15 @@ test("answers of every shape come back as they were: text, numbers, step keys, g
 
 test("a decoded record merges with the local one by the import's rules: nothing local is lost", () => {
   const local = { ...fullRecord(3), code: "def f(): pass", missed: [5, 6], last: "mine" };
-  const lms = decodeSuspend(encodeSuspend({ [IDS[3]]: { ...local, updated: local.updated - 5000, last: "older" } }, "1.2").text).exercises[IDS[3]];
+  const older = { [IDS[3]]: { ...local, updated: local.updated - 5000, last: "older" } };
+  const lms = decodeSuspend(encodeSuspend(older, "1.2").text).exercises[IDS[3]];
   const merged = mergeRecord(local, lms);
   assert.equal(merged.code, "def f(): pass");
   assert.deepEqual(merged.missed, [5, 6]);
   assert.equal(merged.last, "mine", "the local answer is newer");
   // And the other way round: the LMS's copy is newer, so its answer and variant win; the local lists stay.
-  const newer = decodeSuspend(encodeSuspend({ [IDS[3]]: { ...local, updated: local.updated + 5000, last: "theirs", variant: 42 } }, "1.2").text).exercises[IDS[3]];
+  const theirs = { [IDS[3]]: { ...local, updated: local.updated + 5000, last: "theirs", variant: 42 } };
+  const newer = decodeSuspend(encodeSuspend(theirs, "1.2").text).exercises[IDS[3]];
   const merged2 = mergeRecord(local, newer);
   assert.equal(merged2.last, "theirs");
   assert.equal(merged2.variant, 42);
@@ -128,7 +138,7 @@ test("SCORM 2004 carries every field as it is, and drops checked steps, then cod
   assert.deepEqual(decodeSuspend(full.text).exercises, records);
 
   const steps = { variant: 1, steps: { FP: { answer: "y".repeat(1500), status: "incorrect", message: "m" } } };
-  const big = Object.fromEntries(IDS.map((id, i) => [id, { ...records[id], stepWork: steps }]));
+  const big = Object.fromEntries(IDS.map((id) => [id, { ...records[id], stepWork: steps }]));
   const noSteps = encodeSuspend(big, "2004");
   assert.ok(noSteps.text.length <= LIMIT_2004);
   assert.deepEqual(noSteps.dropped, { fields: ["stepWork"] });
@@ -163,7 +173,8 @@ test("text the LMS hands back is never trusted: garbage, cut text and forged fie
   assert.equal(cut.skipped, 1);
 });
 
-test("the chapter's score is the share solved on 0-100; under a mastery score, passed at or above it and failed below", () => {
+test("the chapter's score is the share solved on 0-100; under a mastery score, passed at or above it " +
+  "and failed below", () => {
   const ids = IDS.slice(0, 4);
   const records = { [ids[0]]: fullRecord(0), [ids[1]]: { attempts: 2, missed: [0] } };
   const get = (pairs) => Object.fromEntries(pairs);
@@ -220,11 +231,13 @@ test("times in each version's format", () => {
   assert.equal(duration2004(60_000), "PT1M0S");
   // 2004's timestamp: UTC, said so, to the hundredth of a second (the most SCORM's time type holds).
   const at = Date.UTC(2026, 10, 27, 5, 52, 1, 239);
-  const v = Object.fromEntries(interactionValues("2004", 3, "0.4", { last: "1" }, { correct: true, latencyMs: 90_500, at }));
+  const v = Object.fromEntries(
+    interactionValues("2004", 3, "0.4", { last: "1" }, { correct: true, latencyMs: 90_500, at }));
   assert.equal(v["cmi.interactions.3.timestamp"], "2026-11-27T05:52:01.23Z");
   assert.equal(v["cmi.interactions.3.latency"], "PT1M30.5S");
   assert.equal(v["cmi.interactions.3.learner_response"], "1");
-  const none = Object.fromEntries(interactionValues("1.2", 3, "0.4", { last: "1" }, { correct: false, latencyMs: null, at }));
+  const none = Object.fromEntries(
+    interactionValues("1.2", 3, "0.4", { last: "1" }, { correct: false, latencyMs: null, at }));
   assert.equal(none["cmi.interactions.3.result"], "wrong");
   assert.ok(!("cmi.interactions.3.latency" in none), "no latency for a check of an earlier session");
 });

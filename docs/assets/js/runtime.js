@@ -3,8 +3,12 @@
 // A request waits until the worker is ready, then gets a limit. When a limit
 // fires on a cross-origin isolated page (the service worker adds COOP/COEP), the
 // page writes SIGINT into a buffer it shares with the worker, and Python raises
-// KeyboardInterrupt; if the worker has not answered within INTERRUPT_GRACE_MS, or
+// KeyboardInterrupt; if the request is still running INTERRUPT_GRACE_MS later, or
 // the page is not isolated, the worker is terminated and a fresh one started.
+// "Still running" is read from the buffer, never from the order of a timer and a
+// message: the worker clears the request's id there when the run has returned
+// (its reply is then on its way), and Python clears the signal when it sees it, so a
+// worker that has not yet been given the CPU to see it gets up to INTERRUPT_WAIT_MS.
 // Either way the request that ran too long is answered with a "timeout" error,
 // and every other request waits for the worker instead of failing.
 //
@@ -21,7 +25,8 @@ import { BOOT_PHASE, ERROR, RUNTIME, setRootState } from "./contract.js";
 
 const DEFAULT_LIMIT_MS = 10_000;
 const LOAD_LIMIT_MS = 120_000; // fetching a package (NumPy) before a run starts
-const INTERRUPT_GRACE_MS = 2_000; // after an interrupt, how long to wait before terminating
+const INTERRUPT_GRACE_MS = 2_000; // after an interrupt seen by Python, how long it may take to stop
+const INTERRUPT_WAIT_MS = 10_000; // at most, after an interrupt, before the worker is terminated
 const SIGINT = 2;
 
 function setRuntimeState(state) {
@@ -213,7 +218,16 @@ export class Runtime {
       entry.interrupted = true; // answered as a timeout when the worker replies
       this.interruptsSent = (this.interruptsSent || 0) + 1;
       Atomics.store(buffer, 0, SIGINT);
-      entry.timer = setTimeout(() => this.terminate(entry), INTERRUPT_GRACE_MS);
+      let waited = 0;
+      const check = () => {
+        waited += INTERRUPT_GRACE_MS;
+        const running = Atomics.load(buffer, 1) === entry.msg.id;
+        const unseen = Atomics.load(buffer, 0) === SIGINT;
+        // The run has returned (its reply is coming), or Python has not yet seen the signal: wait on.
+        if ((!running || unseen) && waited < INTERRUPT_WAIT_MS) entry.timer = setTimeout(check, INTERRUPT_GRACE_MS);
+        else this.terminate(entry);
+      };
+      entry.timer = setTimeout(check, INTERRUPT_GRACE_MS);
       return;
     }
     this.terminate(entry);
