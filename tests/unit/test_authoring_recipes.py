@@ -125,18 +125,18 @@ needs_site = pytest.mark.skipif(not (ROOT / "docs" / "assets" / "dist").is_dir()
 def test_adding_a_chapter_as_authoring_says_builds(tmp_path):
     copy_repo(tmp_path)
     touched = follow("Adding a chapter", tmp_path)
-    assert touched == ["pyodide_pkg/workbook/reference/odometry.py", "pyodide_pkg/workbook/bank/ch11_odometry.py",
-                       "docs/chapters/11-odometry.md", "mkdocs.yml"]
-    found = build(tmp_path, "11.1")
-    assert found["kind"] == "derive" and found["chapter"] == ["11.1"] and found["key"] == "correct"
-    page = (tmp_path / "site" / "chapters" / "11-odometry" / "index.html").read_text(encoding="utf-8")
-    assert 'data-exercise-id="11.1"' in page
+    assert touched == ["pyodide_pkg/workbook/reference/odometry.py", "pyodide_pkg/workbook/bank/ch14_odometry.py",
+                       "docs/chapters/14-odometry.md", "mkdocs.yml"]
+    found = build(tmp_path, "14.1")
+    assert found["kind"] == "derive" and found["chapter"] == ["14.1"] and found["key"] == "correct"
+    page = (tmp_path / "site" / "chapters" / "14-odometry" / "index.html").read_text(encoding="utf-8")
+    assert 'data-exercise-id="14.1"' in page
     home = (tmp_path / "site" / "index.html").read_text(encoding="utf-8")
-    assert 'href="chapters/11-odometry/"' in home, "the chapter is not in the menu"
+    assert 'href="chapters/14-odometry/"' in home, "the chapter is not in the menu"
     chapters = json.loads((tmp_path / "site" / "assets" / "exercises.json").read_text(encoding="utf-8"))["chapters"]
-    urls = [c["url"] for c in chapters]  # the new chapter sits where the recipe put it, after chapter 10
-    at = urls.index("chapters/11-odometry/")
-    assert chapters[at]["ids"] == ["11.1"] and urls[at - 1] == "chapters/10-poses-3d/"
+    urls = [c["url"] for c in chapters]  # the new chapter sits where the recipe put it, after chapter 13
+    at = urls.index("chapters/14-odometry/")
+    assert chapters[at]["ids"] == ["14.1"] and urls[at - 1] == "chapters/13-aligning-point-sets/"
 
 
 @needs_site
