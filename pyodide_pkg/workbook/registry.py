@@ -16,7 +16,7 @@ that name (``kind`` or ``name``). ``check()`` loads every part and says what is
 wrong in words; the site's build calls it for each registry (docs/hooks), so a
 part that is listed but missing, or found but broken, stops the build.
 
->>> [name for name in FIGURES.names() if name.startswith(("arm", "cap"))][:2]
+>>> [name for name in FIGURES.names() if name.startswith(("arm-2", "cap"))][:2]
 ['arm-2link', 'capstone']
 >>> KINDS.get("derive").__name__
 'Derive'

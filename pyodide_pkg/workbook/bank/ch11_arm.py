@@ -1,6 +1,6 @@
 """Chapter 11 · The chapter's 3R arm (a base about z, a shoulder and an elbow about −y): its forward
 kinematics as a product of exponentials (11.3, in checked steps from the right), and the same arm
-from its standard DH table (11.4, in checked steps, link 1 and then links 2 and 3).
+from its standard DH table (11.4, in checked steps from the right, A₃ and then A₂ A₃).
 
 >>> from workbook import bank
 >>> bank.get("11.3").worked_text() == bank.get("11.4").worked_text()
@@ -13,7 +13,6 @@ from __future__ import annotations
 
 import math
 
-from .. import chains
 from ..answer_kinds.matrix import matrix
 from ..kinds.derive import Derive
 from ..number_format import bmatrix, fmt, relation_all
@@ -23,7 +22,7 @@ from ..reference.se3 import compose
 from ..steps import Step
 from ..variants import Choice, Param, Vary
 from . import column
-from .ch11_screws import clean
+from .ch11_screws import clean, given_rows
 from .checks import kept_slips
 
 ARM_DEFAULTS = {"L0": 1, "L1": 2, "L2": 1, "t1": 90, "t2": 90, "t3": -90}
@@ -60,9 +59,9 @@ def _poe(p, given=None):
     M = arm_home(p["L0"], p["L1"], p["L2"])
     e1, e2, e3 = (twist_exp(s, t) for s, t in zip(S, th))
     E3M_key = clean(matmul(e3, M))
-    E3M = [list(r) for r in chains.given(given, "E3M", E3M_key)]
+    E3M = given_rows(given, "E3M", E3M_key)
     E23M_key = clean(matmul(e2, E3M))
-    E23M = [list(r) for r in chains.given(given, "E23M", E23M_key)]
+    E23M = given_rows(given, "E23M", E23M_key)
     key = clean(matmul(e1, E23M))
     return {
         "key": key,
@@ -109,39 +108,44 @@ def _poe_ok(p):
 # ---- 11.4 The same arm from its DH table -------------------------------------------------------------
 
 def _dh(p, given=None):
-    """11.4: T = A₁ A₂ A₃, A_i = Rot_z(θ_i) Trans_z(d_i) Trans_x(a_i) Rot_x(α_i) (standard DH)."""
+    """11.4: T = A₁ A₂ A₃, A_i = Rot_z(θ_i) Trans_z(d_i) Trans_x(a_i) Rot_x(α_i) (standard DH), worked from
+    the right: A₃, then A₂ A₃ (the learner's when given)."""
     rows = arm_dh(p["L0"], p["L1"], p["L2"], _theta(p))
     A1, A2, A3 = (dh_standard(*r) for r in rows)
-    A1_key = clean(A1)
-    A1g = [list(r) for r in chains.given(given, "A1", A1_key)]
-    A23_key = clean(matmul(A2, A3))
-    A23 = [list(r) for r in chains.given(given, "A23", A23_key)]
-    key = clean(matmul(A1g, A23))
+    A3_key = clean(A3)
+    A3g = given_rows(given, "A3", A3_key)
+    A23_key = clean(matmul(A2, A3g))
+    A23 = given_rows(given, "A23", A23_key)
+    key = clean(matmul(A1, A23))
+    a, alpha, d, th = rows[0]
     return {
         "key": key,
         "slips": kept_slips(key, (
-            (clean(matmul(A23, A1g)), "That is A₂A₃ · A₁, the links in reverse order. Each link's transform "
-                                      "is in the frame of the link before: T = A₁ (A₂ A₃).", "dh-reversed"),
+            (clean(matmul(A23, A1)), "That is A₂A₃ · A₁, the links in reverse order. Each link's transform "
+                                     "is in the frame of the link before: T = A₁ (A₂ A₃).", "dh-reversed"),
             (clean(compose(*(dh_modified(*r) for r in rows))),
              "That reads the table as modified DH (Craig's Rot_x(α) Trans_x(a) Rot_z(θ) Trans_z(d)). The table is "
              "standard DH: Rot_z(θ) Trans_z(d) Trans_x(a) Rot_x(α).", "dh-read-as-modified"),
+            (clean(matmul(dh_standard(a, -alpha, d, th), A23)),
+             "That twists link 1 by α = −90°; the table's α₁ is +90° (it turns z₀ onto z₁ about x₁).",
+             "a1-alpha-sign"),
         )),
         "steps": {
-            "A1": {"key": A1_key, "slips": kept_slips(A1_key, (
-                (clean(dh_modified(*rows[0])), "That is the modified order, Rot_x(α) Trans_x(a) Rot_z(θ) "
-                                                "Trans_z(d). Standard DH turns about z first and about x last.",
-                 "a1-modified-order"),
-                (clean(dh_standard(rows[0][0], -rows[0][1], rows[0][2], rows[0][3])),
-                 "That twists by α = −90°; the table's α₁ is +90° (it turns z₀ onto z₁ about x₁).", "a1-alpha-sign"),
+            "A3": {"key": A3_key, "slips": kept_slips(A3_key, (
+                (clean(dh_modified(*rows[2])), "That is the modified order, Rot_x(α) Trans_x(a) Rot_z(θ) "
+                                                "Trans_z(d). Standard DH turns about z first and moves along x "
+                                                "after.", "a3-modified-order"),
+                (clean(dh_standard(0.0, *rows[2][1:])), "That leaves out the link length a₃: Trans_x(a₃) puts the "
+                                                         "frame at the link's far end.", "a3-no-length"),
             ))},
             "A23": {"key": A23_key, "slips": kept_slips(A23_key, (
-                (clean(matmul(A3, A2)), "That is A₃ A₂, the other order. Link 3 sits at the end of link 2: A₂ A₃.",
+                (clean(matmul(A3g, A2)), "That is A₃ A₂, the other order. Link 3 sits at the end of link 2: A₂ A₃.",
                  "a23-reversed"),
                 (clean(A2), "That is A₂ alone: link 3 is still to add.", "a3-left-out"),
             ))},
         },
-        "values": {**_arm_values(p), "A1": bmatrix(A1_key), "A2": bmatrix(clean(A2)), "A3": bmatrix(clean(A3)),
-                   "A1rel": relation_all(A1), "A2rel": relation_all(A2), "A3rel": relation_all(A3)},
+        "values": {**_arm_values(p), "A1": bmatrix(clean(A1)), "A2": bmatrix(clean(A2)),
+                   "A1rel": relation_all(A1), "A2rel": relation_all(A2)},
     }
 
 
@@ -150,7 +154,7 @@ def _dh_ok(p):
     if 0 in (p["t1"], p["t2"], p["t3"]):
         return False
     made = _dh(p)
-    return (len(made["slips"]) == 2 and len(made["steps"]["A1"]["slips"]) == 2
+    return (len(made["slips"]) == 3 and len(made["steps"]["A3"]["slips"]) == 2
             and len(made["steps"]["A23"]["slips"]) == 2)
 
 
@@ -168,7 +172,7 @@ EXERCISES = (
         title="The same arm in Denavit–Hartenberg parameters",
         spec=matrix(label="T = A₁ A₂ A₃, 4 × 4"),
         vary=Vary(_dh, *arm_params(), valid=_dh_ok),
-        steps=(Step("A1", "A₁", matrix(label="A₁, link 1's transform")),
+        steps=(Step("A3", "A₃", matrix(label="A₃, link 3's transform")),
                Step("A23", "A₂ A₃", matrix(label="A₂ A₃, links 2 and 3 together"))),
     ),
 )

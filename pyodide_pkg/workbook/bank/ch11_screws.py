@@ -1,5 +1,5 @@
 """Chapter 11 · Arm kinematics in 3-D: the screw axis of a revolute joint (11.1) and the exponential of
-its twist (11.2, in checked steps: Rodrigues' rotation, then G(θ)), which carries the learner's own S
+its twist (11.2, in checked steps: G(θ), then the shift G(θ) v), which carries the learner's own S
 from 11.1.
 
 >>> from workbook import bank
@@ -18,10 +18,12 @@ from ..answer_kinds.matrix import matrix
 from ..chains import Uses
 from ..kinds.derive import Derive
 from ..number_format import bmatrix, fmt, relation, relation_all, shown
-from ..reference.linalg import matmul, matvec, transpose
+from ..reference.linalg import matmul, matvec
 from ..reference.screw import cross, g_matrix, revolute_screw, rotation_exp, skew, terms
 from ..reference.se3 import pose
 from ..steps import Step
+from ..tolerance import agrees
+from ..tolerance import clean as clean_float
 from ..variants import Choice, Param, Vary
 from . import column, grid
 from .checks import kept_slips
@@ -34,6 +36,20 @@ def clean(rows):
     """A matrix (rows) with rounding noise taken off: entries within 1e-12 of a whole number are that number."""
     return grid([[float(round(v)) + 0.0 if abs(v - round(v)) < 1e-12 else round(v, 15) + 0.0 for v in row]
                  for row in rows])
+
+
+def given_rows(given, name, key):
+    """What make() carries for a step or an earlier answer: the learner's rows when given, but the key
+    itself when every entry of theirs agrees with it (as the grader accepted it), so that a product of
+    printed, rounded steps does not carry their rounding into the next step's key."""
+    value = chains.given(given, name, key)
+    if value is key:
+        return [list(r) for r in key]
+    rows = [list(r) for r in value]
+    if len(rows) == len(key) and all(len(r) == len(k) and all(agrees(a, clean_float(b)) for a, b in zip(r, k))
+                                     for r, k in zip(rows, key)):
+        return [list(r) for r in key]
+    return rows
 
 
 def flat(col):
@@ -90,56 +106,57 @@ def _carries_111(p):
 
 
 def _exp(p, given=None):
-    """11.2: e^{[S]θ} = [R  G(θ) v; 0 1], with the learner's S (from 11.1), R and G when given."""
+    """11.2: e^{[S]θ} = [R  G(θ) v; 0 1], with the learner's S (from 11.1), G(θ) and shift when given."""
     S_key = clean(column(revolute_screw(_axis(p), _q(p))))
-    S = flat(chains.given(given, "S", S_key))
+    S = flat(given_rows(given, "S", S_key))
     w, v = S[:3], S[3:]
     th = math.radians(p["theta"])
-    R_key = clean(rotation_exp(w, th))
-    R = [list(r) for r in chains.given(given, "R", R_key)]
-    G_key = clean(g_matrix(w, th))
-    G = [list(r) for r in chains.given(given, "G", G_key)]
-    key = clean(pose(R, matvec(G, v)))
     deg = float(p["theta"])
+    R = clean(rotation_exp(w, th))
+    G_key = clean(g_matrix(w, th))
+    G = given_rows(given, "G", G_key)
+    shift_key = clean(column(matvec(G, v)))
+    shift = flat(given_rows(given, "p", shift_key))
+    key = clean(pose(R, shift))
     return {
         "key": key,
         "slips": kept_slips(key, (
+            (clean(pose(rotation_exp(w, -th), shift)), "The rotation block turns by −θ: in I + sin θ [ω] + "
+                                                       "(1 − cos θ)[ω]², sin θ multiplies [ω] with its own sign.",
+             "r-minus-theta"),
+            (clean(pose(rotation_exp(w, deg), shift)), f"The rotation block uses the sine and cosine of {fmt(deg)} "
+                                                       "radians. θ is in degrees here.", "r-radians-not-degrees"),
+            (clean(pose(terms(1.0, math.sin(th), -(1 - math.cos(th)), w), shift)),
+             "The rotation block's [ω]² term has the wrong sign: Rodrigues' formula adds (1 − cos θ)[ω]².",
+             "r-square-sign"),
             (clean(pose(R, [c * th for c in v])), "That shifts by v θ, a prismatic joint's shift. This joint turns "
                                                   "(ω ≠ 0), so the shift is G(θ) v.", "v-theta-shift"),
-            (clean(pose(R, v)), "That shifts by v itself. The shift is G(θ) v, with G(θ) from the step before.",
-             "v-unmultiplied"),
-            (clean(pose(transpose(R), matvec(G, v))), "That has Rᵀ, the turn of −θ, in the top left. "
-                                                        "The rotation block is e^{[ω]θ} itself.", "r-transposed-in-t"),
         )),
         "steps": {
-            "R": {"key": R_key, "slips": kept_slips(R_key, (
-                (clean(rotation_exp(w, -th)), "That is the turn of −θ: in I + sin θ [ω] + (1 − cos θ)[ω]², "
-                                               "sin θ multiplies [ω] with its own sign.", "r-minus-theta"),
-                (clean(rotation_exp(w, deg)), f"Those are the sine and cosine of {fmt(deg)} radians. θ is in "
-                                              "degrees here.", "r-radians-not-degrees"),
-                (clean(terms(1.0, math.sin(th), -(1 - math.cos(th)), w)),
-                 "The [ω]² term has the wrong sign: Rodrigues' formula adds (1 − cos θ)[ω]².", "r-square-sign"),
-            ))},
             "G": {"key": G_key, "slips": kept_slips(G_key, (
                 (clean(terms(deg, 1 - math.cos(th), deg - math.sin(th), w)),
                  f"That puts θ = {fmt(deg)}, in degrees, into I θ and (θ − sin θ). There θ must be in radians, "
                  f"{fmt(th)}.", "g-degrees"),
                 (clean(terms(0.0, 1 - math.cos(th), th - math.sin(th), w)),
                  "The I θ term is missing: G(θ) = I θ + (1 − cos θ)[ω] + (θ − sin θ)[ω]².", "g-without-i-theta"),
-                (R_key, "That is e^{[ω]θ}, the rotation. G(θ) has I θ, (1 − cos θ)[ω] and (θ − sin θ)[ω]².",
-                 "g-is-r"),
+                (R, "That is e^{[ω]θ}, the rotation. G(θ) has I θ, (1 − cos θ)[ω] and (θ − sin θ)[ω]².", "g-is-r"),
+            ))},
+            "p": {"key": shift_key, "slips": kept_slips(shift_key, (
+                (clean(column([c * th for c in v])), "That is v θ, a prismatic joint's shift. This joint turns, so "
+                                                     "the shift is G(θ) v.", "p-v-theta"),
+                (clean(column(v)), "That is v itself: multiply it by G(θ) from the step before.", "p-v-unmultiplied"),
             ))},
         },
         "values": {
             "w": bmatrix(column(_axis(p))), "q": bmatrix(column(_q(p))), "theta": fmt(deg), "rad": fmt(th),
+            "axis": _AXIS_TEX[p["axis"]], "qx": fmt(p["qx"]), "qy": fmt(p["qy"]), "qz": fmt(p["qz"]),
             "radrel": relation(th), "S": bmatrix(S_key), "vcol": bmatrix(column(v)),
             "W": bmatrix(clean(skew(w))), "W2": bmatrix(clean(matmul(skew(w), skew(w)))),
             "sin": fmt(math.sin(th)), "cos": fmt(math.cos(th)), "one_cos": fmt(1 - math.cos(th)),
             "th_sin": fmt(th - math.sin(th)),
             "sinr": relation(math.sin(th)), "cosr": relation(math.cos(th)), "ocr": relation(1 - math.cos(th)),
             "tsr": relation(th - math.sin(th), shown(th) - shown(math.sin(th))),
-            "Rrel": relation_all(R_key), "Grel": relation_all(G_key),
-            "Gv": bmatrix(clean(column(matvec(G, v)))), "Gvrel": relation_all(matvec(G, v)),
+            "R": bmatrix(R), "Rrel": relation_all(R), "Grel": relation_all(G_key),
             "from111": ("exercise 11.1's answer" if _carries_111(p) == 0 else "found as in exercise 11.1"),
         },
     }
@@ -150,8 +167,8 @@ def _exp_ok(p):
     if not _screw_ok(p):
         return False
     made = _exp(p)
-    return (len(made["slips"]) == 3 and len(made["steps"]["R"]["slips"]) == 3
-            and len(made["steps"]["G"]["slips"]) == 3)
+    return (len(made["slips"]) == 4 and len(made["steps"]["G"]["slips"]) == 3
+            and len(made["steps"]["p"]["slips"]) == 2)
 
 
 _THETAS = (90, 30, 45, 60, 120, 135, 150, 180, -30, -45, -60, -90, -120, -135, -150)
@@ -171,7 +188,7 @@ EXERCISES = (
         vary=Vary(_exp, Choice("axis", "z", tuple(AXES)), Param("qx", 2, -3, 3, 1), Param("qy", 1, -3, 3, 1),
                   Param("qz", 0, -3, 3, 1), Choice("theta", 90, _THETAS), valid=_exp_ok),
         uses=(Uses("11.1", "S", "the screw axis S", variant=_carries_111),),
-        steps=(Step("R", "e^[ω]θ", matrix(label="R = e^[ω]θ, by Rodrigues' formula")),
-               Step("G", "G(θ)", matrix(label="G(θ) = Iθ + (1 − cos θ)[ω] + (θ − sin θ)[ω]²"))),
+        steps=(Step("G", "G(θ)", matrix(label="G(θ) = Iθ + (1 − cos θ)[ω] + (θ − sin θ)[ω]²")),
+               Step("p", "G(θ) v", matrix(label="the shift G(θ) v", names=("x", "y", "z")))),
     ),
 )

@@ -40,7 +40,11 @@ def skew(w) -> Matrix:
 
 
 def terms(theta_term: float, a: float, b: float, w) -> Matrix:
-    """theta_term·I + a·[ω] + b·[ω]²."""
+    """theta_term·I + a·[ω] + b·[ω]²: Rodrigues' formula and G(θ) are both of this form.
+
+    >>> terms(2.0, 1.0, 0.0, (0, 0, 1))
+    [[2.0, -1.0, 0.0], [1.0, 2.0, 0.0], [0.0, 0.0, 2.0]]
+    """
     W = skew(w)
     W2 = matmul(W, W)
     return [[theta_term * (i == j) + a * W[i][j] + b * W2[i][j] for j in range(3)] for i in range(3)]

@@ -23,7 +23,8 @@ def joints(M, S_list, theta) -> list[list[float]]:
     >>> joints([[1, 0, 0, 1], [0, 1, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]], [(0, 0, 1, 0, -1, 0)], [1.0])
     [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0]]
     """
-    out, before = [[0.0, 0.0, 0.0]], []
+    out: list[list[float]] = [[0.0, 0.0, 0.0]]
+    before: list[tuple] = []
     for S, th in zip(S_list, theta):
         w = [float(c) for c in S[:3]]
         if any(w):
