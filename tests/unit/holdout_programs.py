@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import holdout_programs_align
 import holdout_programs_ekf
+import holdout_programs_particles
 import holdout_programs_poe
 import holdout_programs_poses
 import holdout_programs_se2
@@ -358,4 +359,5 @@ WRONG["4.10"], RIGHT["4.10"] = holdout_programs_ekf.WRONG, holdout_programs_ekf.
 WRONG["5.10"], RIGHT["5.10"] = holdout_programs_se2.WRONG, holdout_programs_se2.RIGHT
 WRONG["10.8"], RIGHT["10.8"] = holdout_programs_poses.WRONG, holdout_programs_poses.RIGHT
 WRONG["11.8"], RIGHT["11.8"] = holdout_programs_poe.WRONG, holdout_programs_poe.RIGHT
+WRONG["12.8"], RIGHT["12.8"] = holdout_programs_particles.WRONG, holdout_programs_particles.RIGHT
 WRONG["13.9"], RIGHT["13.9"] = holdout_programs_align.WRONG, holdout_programs_align.RIGHT
