@@ -296,7 +296,7 @@ EXERCISES = (
         id="12.4",
         title="The effective sample size",
         spec=number(label="N_eff"),
-        vary=Vary(_neff, *(Param(n, v, 0.05, 0.85, 0.05) for n, v in zip(_W[:-1], _printed_123())), valid=_neff_ok),
+        vary=Vary(_neff, *(Param(n, v, 0.02, 0.85, 0.01) for n, v in zip(_W[:-1], _printed_123())), valid=_neff_ok),
         uses=(Uses("12.3", "w", "the weights w", variant=_carries_123),),
         steps=(Step("squares", "wᵢ²", matrix(label="(w₁², w₂², w₃², w₄²)ᵀ, the squared weights",
                                               names=tuple(f"s{i}" for i in range(1, N + 1)))),
@@ -305,6 +305,8 @@ EXERCISES = (
     Derive(
         id="12.5",
         title="Systematic resampling by hand",
+        same_answer=("Which of five particles each of five pointers picks, in order: at most 126 answers "
+                     "(five indices that never go down), so some students share one."),
         spec=matrix(label="the particle each pointer picks (j₁, …, j₅)ᵀ",
                     names=tuple(f"j{i}" for i in range(1, M + 1))),
         vary=Vary(_resample, *(Param(f"q{i}", _RW[i - 1], 0.05, 0.5, 0.05) for i in range(1, M)),
