@@ -200,6 +200,44 @@ def test_ch10_poses_3d_chain_and_both_quaternion_orders(tour):
     assert readout(page, "p") == text  # turning the view moves no frame
 
 
+def test_ch11_arm_3d_shoulder_from_the_keyboard_and_a_view_that_moves_nothing(tour):
+    """Chapter 11: the shoulder raised one step from the keyboard moves the tool where the product of
+    exponentials puts it (the figure's own draw, natively); turning the view redraws the picture and
+    moves no readout."""
+    from workbook.figures.arm_3d import draw
+
+    page = tour(11)
+    p = press(page, "t2", "ArrowRight", "p")
+    assert slider_value(page, "t2") == 45
+    want = draw({"t1": 30, "t2": 45, "t3": -60, "view": -55})["readouts"]
+    assert_close(p, numbers(want["p"]))
+    assert_close(readout(page, "J"), numbers(want["J"]))
+    before = figure(page).locator("svg").inner_html()
+    figure(page).locator('input[type="range"][data-param="view"]').focus()
+    page.keyboard.press("ArrowLeft")
+    page.wait_for_function("([selector, before]) => document.querySelector(selector).innerHTML !== before",
+                           arg=[role("figure") + " svg", before])
+    assert readout(page, "p") == p
+
+
+def test_ch12_bayes_grid_finds_the_robot_and_a_blind_sensor_leaves_it_lost(tour):
+    """Chapter 12: ten steps from the keyboard (End) and the belief's peak is the cell the figure's own
+    filter gives; with the sensor at its least reliable, the readouts are what that filter gives too."""
+    from workbook.figures.bayes_grid import draw
+
+    page = tour(12)
+    best = press(page, "steps", "End", "best")
+    assert slider_value(page, "steps") == 10
+    want = draw({"steps": 10, "noise": 0.2, "hit": 0.8})["readouts"]
+    assert best == want["best"]
+    assert_close(readout(page, "prob"), numbers(want["prob"]))
+    press(page, "hit", "Home", "prob")
+    assert slider_value(page, "hit") == 0.5
+    blind = draw({"steps": 10, "noise": 0.2, "hit": 0.5})["readouts"]
+    assert readout(page, "best") == blind["best"]
+    assert readout(page, "verdict") == blind["verdict"]
+
+
 def test_ch13_icp_steps_onto_the_map_from_a_good_start_and_not_from_a_poor_one(tour):
     """Chapter 13: one ICP iteration from the keyboard takes the scan from 15° and 0.3 m off onto the
     map; with the first guess turned to 60° off, twelve iterations leave it in a wrong pose."""
