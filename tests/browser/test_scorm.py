@@ -203,7 +203,9 @@ def test_launch_report_and_resume_on_another_computer(browser, lms, lms_server, 
 
 
 def test_a_full_workbook_of_records_fits_scorm12_suspend_data(browser, lms, lms_server):
-    """Every exercise solved three times, in the review queue, with a long last answer."""
+    """Every exercise solved three times, in the review queue, with a long last answer: more than
+    1.2's 4,096 characters hold (131 records at their widest take 4,722), so the launched chapter's
+    records travel whole and the others' as far as they fit, oldest dropped first."""
     ids = [e.id for e in bank.all_exercises()]
     lms.evaluate("""([key, ids]) => {
         const now = Date.now();
@@ -228,12 +230,16 @@ def test_a_full_workbook_of_records_fits_scorm12_suspend_data(browser, lms, lms_
         page2 = open_lms(other, lms_server)
         frame2 = launch(page2, "1.2", stored=stored)
         back = frame2.evaluate("() => window.workbook.progress.all()")
-        assert sorted(back) == sorted(ids)
+        own = [i for i in ids if i.split(".")[0] == "0"]
+        others = [i for i in ids if i not in own]  # oldest first, as made above
+        missing = [i for i in ids if i not in back]
+        assert set(own) <= set(back), "the launched chapter's records travel whole"
+        assert missing == others[:len(missing)], f"only other chapters' records are dropped, oldest first: {missing}"
+        assert len(back) > len(ids) // 2, len(back)
         assert all(len(r["clean"]) == 3 and r["box"] == 5 for r in back.values())  # mastered, in the top box: all of them
         # The answers travel too, as room allows: the launched chapter's (chapter 0's SCO) first, its newest kept.
-        kept = [i for i in ids if "last" in back[i]]
+        kept = [i for i in ids if "last" in back.get(i, {})]
         assert kept and all(i.split(".")[0] == "0" for i in kept), kept
-        own = [i for i in ids if i.split(".")[0] == "0"]
         assert kept == own[len(own) - len(kept):], kept
         assert back[kept[-1]]["last"].startswith(f"answer {ids.index(kept[-1])} ")
         finish(page2)

@@ -213,30 +213,42 @@ function compact(entries, withLast) {
 }
 
 /**
- * The compact text of `exercises` ({id: record}) within `limit` characters; the ids in `first` (the launched
- * chapter's) are dropped only after every other one. Returns {text, dropped: {answers: [ids], records: [ids]}}.
+ * The compact text of `exercises` ({id: record}) within `limit` characters; `first`: the launched chapter's ids.
+ * What does not fit is dropped in this order, each step only as far as needed, the record updated longest ago
+ * first: other chapters' last answers, then other chapters' records (their own SCOs carry them), then the
+ * launched chapter's last answers, and its records only if the chapter alone does not fit.
+ * Returns {text, dropped: {answers: [ids], records: [ids]}}.
  */
 export function encodeCompact(exercises, limit = LIMIT_12, first = []) {
   const entries = Object.entries(exercises).filter(([id, r]) => ID.test(id) && isObject(r));
   const own = new Set(first);
-  // Others before the launched chapter's, and in each the one updated longest ago first.
-  const dropOrder = (list) => [...list].sort(([a, x], [b, y]) =>
-    Number(own.has(a)) - Number(own.has(b)) || (x.updated ?? 0) - (y.updated ?? 0));
+  const oldest = (list) => [...list].sort(([, x], [, y]) => (x.updated ?? 0) - (y.updated ?? 0));
+  const others = oldest(entries.filter(([id]) => !own.has(id)));
+  const mine = oldest(entries.filter(([id]) => own.has(id)));
   const withLast = new Set(entries.filter(([, r]) => r.last !== undefined && r.last !== null).map(([id]) => id));
   const dropped = { answers: [], records: [] };
-  let text = compact(entries, withLast);
-  for (const [id] of dropOrder(entries)) {
-    if (text.length <= limit) break;
-    if (!withLast.delete(id)) continue;
-    dropped.answers.push(id);
-    text = compact(entries, withLast);
-  }
-  let kept = dropOrder(entries);
-  while (text.length > limit && kept.length) {
-    dropped.records.push(kept[0][0]);
-    kept = kept.slice(1);
-    text = compact(kept, withLast);
-  }
+  let kept = entries;
+  let text = compact(kept, withLast);
+  const answers = (list) => {
+    for (const [id] of list) {
+      if (text.length <= limit) return;
+      if (!withLast.delete(id)) continue;
+      dropped.answers.push(id);
+      text = compact(kept, withLast);
+    }
+  };
+  const records = (list) => {
+    for (const [id] of list) {
+      if (text.length <= limit) return;
+      dropped.records.push(id);
+      kept = kept.filter(([k]) => k !== id);
+      text = compact(kept, withLast);
+    }
+  };
+  answers(others);
+  records(others);
+  answers(mine);
+  records(mine);
   return { text, dropped };
 }
 
