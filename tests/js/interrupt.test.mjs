@@ -58,15 +58,26 @@ function advance(t, ms) {
   for (let i = 0; i < ms; i++) t.mock.timers.tick(1);
 }
 
-test("the time limit interrupts the run, and its reply is a timeout told as interrupted", async (t) => {
+/** A sandbox on the mocked clock, with a run started and its time limit just reached. */
+function atTheLimit(t) {
   t.mock.timers.enable({ apis: ["setTimeout"] });
   const s = sandbox();
   const run = s.start();
   advance(t, LIMIT);
-  assert.equal(Atomics.load(s.buffer, 0), SIGINT, "the signal is written at the limit");
+  return { s, run };
+}
+
+/** Python stops the run on the signal: it clears the signal, the run returns, the worker replies. */
+function stops(s, run) {
   s.pythonSees();
   s.runReturns();
   s.say({ id: run.id, type: "reply", reply: { ok: true, value: "{}" } });
+}
+
+test("the time limit interrupts the run, and its reply is a timeout told as interrupted", async (t) => {
+  const { s, run } = atTheLimit(t);
+  assert.equal(Atomics.load(s.buffer, 0), SIGINT, "the signal is written at the limit");
+  stops(s, run);
   await flush();
   assert.equal(run.reply().error.kind, "timeout");
   assert.match(run.reply().error.message, /interrupted/);
@@ -75,10 +86,7 @@ test("the time limit interrupts the run, and its reply is a timeout told as inte
 
 test("a run that has returned is not terminated when its reply comes after the grace period", async (t) => {
   // The page's thread was busy: the grace timer fires before the reply's message is handled.
-  t.mock.timers.enable({ apis: ["setTimeout"] });
-  const s = sandbox();
-  const run = s.start();
-  advance(t, LIMIT);
+  const { s, run } = atTheLimit(t);
   s.pythonSees();
   s.runReturns();
   advance(t, 3_000);
@@ -89,24 +97,16 @@ test("a run that has returned is not terminated when its reply comes after the g
 });
 
 test("a worker that has not yet seen the signal gets longer, then stops by the interrupt", async (t) => {
-  t.mock.timers.enable({ apis: ["setTimeout"] });
-  const s = sandbox();
-  const run = s.start();
-  advance(t, LIMIT);
+  const { s, run } = atTheLimit(t);
   advance(t, 6_000); // starved: the signal is still unseen
   assert.equal(s.spawned(), 1);
-  s.pythonSees();
-  s.runReturns();
-  s.say({ id: run.id, type: "reply", reply: { ok: true, value: "{}" } });
+  stops(s, run);
   await flush();
   assert.deepEqual([s.runtime.lastStop, s.runtime.interrupts, s.runtime.restarts], ["interrupt", 1, 0]);
 });
 
 test("code that swallows the interrupt is terminated two seconds after Python saw it", async (t) => {
-  t.mock.timers.enable({ apis: ["setTimeout"] });
-  const s = sandbox();
-  const run = s.start();
-  advance(t, LIMIT);
+  const { s, run } = atTheLimit(t);
   s.pythonSees(); // ... and the loop goes on: the id stays
   advance(t, 1_999);
   assert.equal(s.spawned(), 1);
@@ -118,10 +118,7 @@ test("code that swallows the interrupt is terminated two seconds after Python sa
 });
 
 test("a worker that never sees the signal is terminated ten seconds after it", async (t) => {
-  t.mock.timers.enable({ apis: ["setTimeout"] });
-  const s = sandbox();
-  const run = s.start();
-  advance(t, LIMIT);
+  const { s, run } = atTheLimit(t);
   advance(t, 9_999);
   assert.equal(s.spawned(), 1);
   advance(t, 1);

@@ -18,6 +18,7 @@ import random
 
 import pytest
 
+from oracle_draws import DRAWS, distinct_variants
 from workbook import bank
 from workbook.bank.ch11_code import _SOLUTION
 from workbook.bank.ch11_screws import AXES
@@ -40,7 +41,6 @@ np = pytest.importorskip("numpy")
 mr = pytest.importorskip("modern_robotics")
 smb = pytest.importorskip("spatialmath.base")
 
-DRAWS = 300
 TOL = 1e-9
 
 
@@ -122,20 +122,6 @@ def reference_gaps(seed: int = 11) -> dict[str, tuple[int, float]]:
     return {k: (len(v), max(v)) for k, v in out.items()}
 
 
-def _distinct(ex_id: str, count: int = DRAWS):
-    """Up to ``count`` variants with different numbers."""
-    seen, out = set(), []
-    for seed in range(count * 4):
-        v = bank.variant(ex_id, seed)
-        key = tuple(sorted(v.params.items()))
-        if key not in seen:
-            seen.add(key)
-            out.append(v)
-        if len(out) == count:
-            break
-    return out
-
-
 def _rad(p, *names):
     return [math.radians(p[n]) for n in names]
 
@@ -152,11 +138,11 @@ def key_gaps() -> dict[str, tuple[int, float]]:
     def add(name, got, want):
         gaps.setdefault(name, []).append(_gap(got, want))
 
-    for v in _distinct("11.1"):
+    for v in distinct_variants("11.1"):
         p = v.params
         add("11.1", v.answer.key, np.asarray(mr.ScrewToAxis(np.array([p["qx"], p["qy"], p["qz"]], float),
                                                             np.array(AXES[p["axis"]], float), 0))[:, None])
-    for v in _distinct("11.2"):
+    for v in distinct_variants("11.2"):
         p = v.params
         S = mr.ScrewToAxis(np.array([p["qx"], p["qy"], p["qz"]], float), np.array(AXES[p["axis"]], float), 0)
         T = _mr_exp(S, math.radians(p["theta"]))
@@ -164,20 +150,20 @@ def key_gaps() -> dict[str, tuple[int, float]]:
         add("11.2 step p", v.step_answers["p"].key, T[:3, 3:])
         q = np.array([p["qx"], p["qy"], p["qz"]], float)  # G(θ) v = (I − R) q, and G's columns from MR's
         add("11.2 step G", np.asarray(v.step_answers["G"].key) @ S[3:], (np.eye(3) - T[:3, :3]) @ q)
-    for v in _distinct("11.3"):
+    for v in distinct_variants("11.3"):
         M, S, th = _arm(v.params)
         add("11.3", v.answer.key, mr.FKinSpace(M, np.array(S).T, th))
         E3M = _mr_exp(S[2], th[2]) @ M
         add("11.3 step E3M", v.step_answers["E3M"].key, E3M)
         add("11.3 step E23M", v.step_answers["E23M"].key, _mr_exp(S[1], th[1]) @ E3M)
-    for v in _distinct("11.4"):
+    for v in distinct_variants("11.4"):
         p = v.params
         rows = arm_dh(p["L0"], p["L1"], p["L2"], _rad(p, "t1", "t2", "t3"))
         A = [_sm_dh(*r) for r in rows]
         add("11.4", v.answer.key, A[0] @ A[1] @ A[2])
         add("11.4 step A3", v.step_answers["A3"].key, A[2])
         add("11.4 step A23", v.step_answers["A23"].key, A[1] @ A[2])
-    for v in _distinct("11.6"):
+    for v in distinct_variants("11.6"):
         M, S, th = _arm(v.params)
         J = mr.JacobianSpace(np.array(S).T, th)
         add("11.6", v.answer.key, J)

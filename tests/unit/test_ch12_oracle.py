@@ -19,6 +19,7 @@ import random
 
 import pytest
 
+from oracle_draws import DRAWS, distinct_variants
 from workbook import bank
 from workbook.bank.ch12_bayes import _drawn_belief, _kernel, _likelihood
 from workbook.bank.ch12_code import _SOLUTION
@@ -29,7 +30,6 @@ np = pytest.importorskip("numpy")
 stats = pytest.importorskip("scipy.stats")
 resampling = pytest.importorskip("filterpy.monte_carlo.resampling")
 
-DRAWS = 300
 TOL = 1e-9
 
 
@@ -119,20 +119,6 @@ def weight_gaps(seed: int = 8) -> float:
     return gap
 
 
-def _distinct(ex_id: str, count: int = DRAWS):
-    """Up to ``count`` variants with different numbers."""
-    seen, out = set(), []
-    for seed in range(count * 4):
-        v = bank.variant(ex_id, seed)
-        key = tuple(sorted(v.params.items()))
-        if key not in seen:
-            seen.add(key)
-            out.append(v)
-        if len(out) == count:
-            break
-    return out
-
-
 def _flat(rows) -> np.ndarray:
     return np.asarray([r[0] for r in rows], float)
 
@@ -145,20 +131,20 @@ def key_gaps() -> dict[str, tuple[int, float]]:
     """Each Derive key and step of the chapter against the oracles, over its distinct variants: (draws, gap)."""
     out: dict[str, tuple[int, float]] = {}
     gaps = []
-    for v in _distinct("12.1"):
+    for v in distinct_variants("12.1"):
         bel = np.asarray(_drawn_belief(v.params, "b"), float)
         gaps += [_gap(_flat(v.answer.key), _fft_predict(bel, _kernel(v.params))),
                  _gap(_flat(v.step_answers["one"].key), np.roll(bel, 1)),
                  _gap(_flat(v.step_answers["two"].key), np.roll(bel, 2))]
     out["12.1"] = (len(gaps) // 3, max(gaps))
     gaps = []
-    for v in _distinct("12.2"):
+    for v in distinct_variants("12.2"):
         prod = np.asarray(_likelihood(v.params)) * np.asarray(_drawn_belief(v.params, "a"))
         gaps += [_gap(_flat(v.answer.key), prod / prod.sum()), _gap(_flat(v.step_answers["prod"].key), prod),
                  abs(v.step_answers["eta"].key - prod.sum())]
     out["12.2"] = (len(gaps) // 3, max(gaps))
     gaps = []
-    for v in _distinct("12.3"):
+    for v in distinct_variants("12.3"):
         s = v.params["sigma"]
         r, _ = _errors(v.params)
         dens = stats.norm.pdf(v.params["z"], loc=np.asarray(r), scale=s)
@@ -167,13 +153,13 @@ def key_gaps() -> dict[str, tuple[int, float]]:
                  abs(v.step_answers["total"].key - like.sum())]
     out["12.3"] = (len(gaps) // 3, max(gaps))
     gaps = []
-    for v in _distinct("12.4"):
+    for v in distinct_variants("12.4"):
         w = np.asarray(_w_of(v.params), float)
         gaps += [abs(v.answer.key - 1 / np.sum(w ** 2)), _gap(_flat(v.step_answers["squares"].key), w ** 2),
                  abs(v.step_answers["sq"].key - np.sum(w ** 2))]
     out["12.4"] = (len(gaps) // 3, max(gaps))
     gaps = []
-    for v in _distinct("12.5"):
+    for v in distinct_variants("12.5"):
         w, r = _resample_parts(v.params)
         picks = np.asarray(filterpy_resample(w, r * 5)) + 1  # Probabilistic Robotics' r in [0, 1/5) is u / 5
         gaps += [_gap(_flat(v.answer.key), picks), _gap(_flat(v.step_answers["cum"].key), np.cumsum(w)),

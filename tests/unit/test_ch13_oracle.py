@@ -18,6 +18,7 @@ import random
 
 import pytest
 
+from oracle_draws import DRAWS, distinct_variants
 from workbook import bank
 from workbook.bank.ch13_code import _SOLUTION
 from workbook.bank.ch13_points import point_sets
@@ -30,7 +31,6 @@ linalg = pytest.importorskip("scipy.linalg")
 spatial = pytest.importorskip("scipy.spatial")
 Rotation = transform.Rotation
 
-DRAWS = 300
 TOL = 1e-9
 
 
@@ -113,50 +113,36 @@ def nearest_mismatches(seed: int = 7) -> tuple[int, int]:
     return wrong, DRAWS
 
 
-def _distinct(ex_id: str, count: int = DRAWS):
-    """Up to ``count`` variants with different numbers."""
-    seen, out = set(), []
-    for seed in range(count * 4):
-        v = bank.variant(ex_id, seed)
-        key = tuple(sorted(v.params.items()))
-        if key not in seen:
-            seen.add(key)
-            out.append(v)
-        if len(out) == count:
-            break
-    return out
-
-
 def key_gaps() -> dict[str, tuple[int, float]]:
     """Each Derive key of the chapter against SciPy, over its distinct variants: (draws, largest gap)."""
     out: dict[str, tuple[int, float]] = {}
     gaps = []
-    for v in _distinct("13.2"):
+    for v in distinct_variants("13.2"):
         P, Q = point_sets(v.params)
         Pc = np.asarray(P, float) - np.mean(P, axis=0)
         Qc = np.asarray(Q, float) - np.mean(Q, axis=0)
         gaps.append(_gap(v.answer.key, Pc.T @ Qc))
     out["13.2"] = (len(gaps), max(gaps))
     gaps = []
-    for v in _distinct("13.3"):
+    for v in distinct_variants("13.3"):
         H = [[v.params["h11"], v.params["h12"]], [v.params["h21"], v.params["h22"]]]
         R = _scipy_svd_rotation(H)
         gaps.append(abs(math.remainder(v.answer.key - math.degrees(math.atan2(R[1, 0], R[0, 0])), 360)))
     out["13.3"] = (len(gaps), max(gaps))
     gaps = []
-    for v in _distinct("13.4"):
+    for v in distinct_variants("13.4"):
         H = _svd_parts(v.params)[2]  # SciPy's own SVD of the printed H, not the bank's factors
         gaps.append(_gap(v.answer.key, _scipy_svd_rotation(H)))
     out["13.4"] = (len(gaps), max(gaps))
     gaps = []
-    for v in _distinct("13.5"):
+    for v in distinct_variants("13.5"):
         p = v.params
         C = Rotation.from_euler("z", p["theta"], degrees=True).as_matrix()[:2, :2]
         t = np.asarray([p["qmx"], p["qmy"]], float) - C @ np.asarray([p["pmx"], p["pmy"]], float)
         gaps.append(_gap([r[0] for r in v.answer.key], t))
     out["13.5"] = (len(gaps), max(gaps))
     wrong = 0
-    draws = _distinct("13.6")
+    draws = distinct_variants("13.6")
     for v in draws:
         p = v.params
         S = np.asarray([[p[f"s{i}x"], p[f"s{i}y"]] for i in (1, 2, 3)], float)

@@ -58,6 +58,15 @@ def column(vector) -> tuple[tuple[float], ...]:
     return tuple((v,) for v in vector)
 
 
+def entries(rows) -> list[float]:
+    """A column's entries as numbers: :func:`column`'s inverse (for a key, or a learner's step).
+
+    >>> entries(((1.0,), (2,)))
+    [1.0, 2.0]
+    """
+    return [float(r[0]) for r in rows]
+
+
 def chapters() -> list[int]:
     return list(_chapter_modules())
 

@@ -21,15 +21,11 @@ from ..number_format import bmatrix, fmt
 from ..reference.particles import normalise, predict
 from ..steps import Step
 from ..variants import Choice, Param, Vary
-from . import column
+from . import column, entries
 from .checks import kept_slips
 
 CELLS = 5
 _NAMES = tuple(f"c{i}" for i in range(1, CELLS + 1))
-
-
-def _flat(rows) -> list[float]:
-    return [float(r[0]) for r in rows]
 
 
 def _column_or_none(values):
@@ -68,9 +64,9 @@ def _predict(p, given=None):
     bel = _drawn_belief(p, "b") or [0.2] * CELLS
     k = _kernel(p)
     one_key = _shift(bel, 1)
-    one = _flat(chains.given(given, "one", column(one_key)))
+    one = entries(chains.given(given, "one", column(one_key)))
     two_key = _shift(one, 1)
-    two = _flat(chains.given(given, "two", column(two_key)))
+    two = entries(chains.given(given, "two", column(two_key)))
     key = [k[0] * b + k[1] * o + k[2] * t for b, o, t in zip(bel, one, two)]
     back = predict(bel, {0: k[0], -1: k[1], -2: k[2]})
     no_wrap = [k[0] * bel[i] + k[1] * (bel[i - 1] if i >= 1 else 0.0) + k[2] * (bel[i - 2] if i >= 2 else 0.0)
@@ -140,10 +136,10 @@ def _spread(values) -> list[float] | None:
 def _update(p, given=None):
     """12.2: bel(i) ∝ p(door | i) bel′(i), with the learner's 12.1 answer, products and η when given."""
     prior_key = _drawn_belief(p, "a") or [0.2] * CELLS
-    prior = _flat(chains.given(given, "prior", column(prior_key)))
+    prior = entries(chains.given(given, "prior", column(prior_key)))
     like = _likelihood(p)
     prod_key = [a * b for a, b in zip(like, prior)]
-    prod = _flat(chains.given(given, "prod", column(prod_key)))
+    prod = entries(chains.given(given, "prod", column(prod_key)))
     eta_key = sum(prod)
     eta = float(chains.given(given, "eta", eta_key))
     key = [v / eta for v in prod] if eta else [0.0] * CELLS

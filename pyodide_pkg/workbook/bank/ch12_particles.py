@@ -26,15 +26,11 @@ from ..reference.domain import Undefined
 from ..reference.particles import cumulative, normalise, pointers, systematic_resample
 from ..steps import Step
 from ..variants import Choice, Param, Vary
-from . import column
+from . import column, entries
 from .checks import kept_slips
 
 N = 4
 _W = tuple(f"w{i}" for i in range(1, N + 1))
-
-
-def _flat(rows) -> list[float]:
-    return [float(r[0]) for r in rows]
 
 
 def _col(values) -> str:
@@ -57,7 +53,7 @@ def _weights(p, given=None):
     s = float(p["sigma"])
     r, e = _errors(p)
     like_key = [math.exp(-ei * ei / (2 * s * s)) for ei in e]
-    like = _flat(chains.given(given, "like", column(like_key)))
+    like = entries(chains.given(given, "like", column(like_key)))
     total_key = sum(like)
     total = float(chains.given(given, "total", total_key))
     key = [v / total for v in like] if total else [0.0] * N
@@ -100,8 +96,8 @@ def _weights_ok(p):
     if min(r) <= 0 or len({abs(v) for v in e}) < N:
         return False
     made = _weights(p)
-    w = _flat(made["key"])
-    return (min(_flat(made["steps"]["like"]["key"])) >= 0.005 and max(w) < 0.9 and len(made["slips"]) >= 3
+    w = entries(made["key"])
+    return (min(entries(made["steps"]["like"]["key"])) >= 0.005 and max(w) < 0.9 and len(made["slips"]) >= 3
             and len(made["steps"]["like"]["slips"]) >= 2)
 
 
@@ -109,7 +105,7 @@ def _weights_ok(p):
 
 def _printed_123() -> list[float]:
     """12.3's weights for its own numbers, as its page prints them."""
-    return [shown(v) for v in _flat(_weights(_DEFAULTS_123)["key"])]
+    return [shown(v) for v in entries(_weights(_DEFAULTS_123)["key"])]
 
 
 _DEFAULTS_123 = {"wall": 10, "z": 4.0, "sigma": 0.5, **{f"x{i}": _X[i - 1] for i in range(1, N + 1)}}
@@ -130,9 +126,9 @@ def _w_of(p) -> list[float]:
 
 def _neff(p, given=None):
     """12.4: N_eff = 1 / Σ wᵢ², with the learner's 12.3 weights and Σ w² when given."""
-    w = _flat(chains.given(given, "w", column(_w_of(p))))
+    w = entries(chains.given(given, "w", column(_w_of(p))))
     squares_key = [v * v for v in w]
-    squares = _flat(chains.given(given, "squares", column(squares_key)))
+    squares = entries(chains.given(given, "squares", column(squares_key)))
     sq_key = sum(squares)
     sq = float(chains.given(given, "sq", sq_key))
     key = 1.0 / sq if sq else 0.0
@@ -213,10 +209,10 @@ def _resample(p, given=None):
     w, r = _resample_parts(p)
     ptr = ptr_key_of(r)
     c_key = cumulative(w)
-    c = _flat(chains.given(given, "cum", column(c_key)))
+    c = entries(chains.given(given, "cum", column(c_key)))
     picked = _picks(c, ptr)
     copies_key = [float(picked.count(j)) for j in range(1, M + 1)]
-    copies = _flat(chains.given(given, "copies", column(copies_key)))
+    copies = entries(chains.given(given, "copies", column(copies_key)))
     key = _laid_out(copies)
     before = [0.0, *c_key[:-1]]
     plain = [float(1 + j) for j in systematic_resample(w, 0.0)]
@@ -277,7 +273,7 @@ def _resample_ok(p):
     if any(abs(pt - cj) < 0.005 for pt in ptr_key_of(r) for cj in c):
         return False
     made = _resample(p)
-    return (len(set(_flat(made["key"]))) < M and len(made["slips"]) == 3 and len(made["steps"]["cum"]["slips"]) == 2
+    return (len(set(entries(made["key"]))) < M and len(made["slips"]) == 3 and len(made["steps"]["cum"]["slips"]) == 2
             and len(made["steps"]["copies"]["slips"]) >= 1)
 
 
