@@ -338,12 +338,13 @@ def undefined_verdict(ex: Worked, value: Value | None, why: Undefined) -> Verdic
                    tag=TAG.undefined, data={"carried": _link(ex, value.place)})
 
 
-def _first_step(ex: Worked, mine: Mapping[str, Any]) -> str:
-    """The first step the learner has not got right, or the first step when none was tried."""
+def _first_step(ex: Worked, mine: Mapping[str, Any]) -> str | None:
+    """The first step the learner has not got right (the first step when none was tried); None
+    when every step is typed and right, so the slip is in the last line."""
     for s in ex.steps:
         if s.name not in mine or ex.step_answers[s.name].check(mine[s.name]).status != "correct":
             return s.name
-    return ex.steps[0].name
+    return None
 
 
 def grade(ex: Worked, answer: object, given: Mapping[str, Any], mine: Mapping[str, Any], step: str | None,
@@ -361,8 +362,8 @@ def grade(ex: Worked, answer: object, given: Mapping[str, Any], mine: Mapping[st
     if isinstance(found, Undefined) and verdict.tag in ("", TAG.close, TAG.sign):
         wrong = [v for v in values if v.wrong]
         return undefined_verdict(ex, _undefining(ex, step, answer, values, wrong), found)
-    if step is None and ex.steps:
-        first = _first_step(ex, mine)
+    first = _first_step(ex, mine) if step is None and ex.steps else None
+    if first is not None:
         data = {"first": first, "number": _number(ex, first), "label": _label(ex, first)}
         return Verdict(verdict.status, verdict.message, tag=verdict.tag, data={**verdict.data, "steps": data})
     return verdict

@@ -15,6 +15,8 @@ from pathlib import Path
 
 import pytest
 
+from tracked import tracked
+
 ROOT = Path(__file__).resolve().parents[2]
 VENV_TEST = ".venv/bin/.test"
 GOALS = ("site/.stamp", VENV_TEST)
@@ -86,12 +88,11 @@ def test_a_change_remakes_exactly_what_depends_on_it(up_to_date, source):
 
 def test_every_kind_of_source_is_covered():
     """Each folder of sources has a case above, so a new kind of source gets one."""
-    tracked = subprocess.run(["git", "ls-files", "docs", "pyodide_pkg", "scripts"], cwd=ROOT,
-                             capture_output=True, text=True, check=True).stdout.split()
+    files = tracked("docs", "pyodide_pkg", "scripts")
     # scripts/scorm: the templates of `make scorm`, whose zips (dist/) are not among the goals built here;
     # scripts/typecheck: the settings of `make typecheck` (part of `make lint`), which builds nothing
     skipped = ("scripts/bench", "scripts/scorm", "scripts/typecheck", "docs/assets/vendor")
-    folders = {str(Path(p).parent) for p in tracked if not p.startswith(skipped)}
+    folders = {str(Path(p).parent) for p in files if not p.startswith(skipped)}
     covered = {str(Path(p).parent) for p in CASES}
     # Folders of the same kind as a covered one: the recursive source lists take them all.
     same_kind = re.compile(r"^(pyodide_pkg/workbook/.+|pyodide_pkg/workbook_sandbox/.+|docs/assets/js/.+|docs/chapters|docs/assets)$")

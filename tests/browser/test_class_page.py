@@ -21,6 +21,7 @@ from playwright.sync_api import Page
 from class_files import a_class, answer, derive_ids, hand_in, record
 from site_audit import COLOUR_RULES, OVERFLOW, audit, load_axe, set_scheme
 from workbook import bank, version
+from workbook.assignment import assigned_variant
 
 SLOW = 300_000
 CODE = "ROB101"
@@ -237,3 +238,37 @@ def test_a_class_over_a_hundred_is_paged_and_every_student_reaches_the_gradebook
     assert page.locator("[data-wb-action='next-students']").is_disabled()
     book = list(csv.reader(io.StringIO(download(page, "gradebook"), newline="")))
     assert {r[1] for r in book[1:]} == first | rest and len(book) == 121
+
+
+def test_which_step_went_wrong_first(page, site_url):
+    """Per step, over answers worked in steps: the step each wrong answer first went wrong at, by
+    its label, with how many students and answers. A right step after a wrong one, and two wrong
+    steps, count at the first; a right answer, one typed without steps, or one whose steps are
+    right as far as the student went (all of them, with the slip in the last line), counts at none."""
+    ex_id = "4.1"  # steps d (the offset) then q (its squared length)
+    first_step, second = (s.name for s in bank.get(ex_id).steps)
+    plans = [("bad d", 4), ("both bad", 1), ("bad q", 2), ("right", 4), ("no steps", 1), ("half", 2), ("slip at the end", 1)]
+    files, worked = [], 0
+    for plan, n in plans:
+        for k in range(n):
+            s = f"{plan.replace(' ', '-')}-{k}"
+            ex = bank.variant(ex_id, assigned_variant(CODE, s, ex_id))
+            ok = {st.name: ex.step_answers[st.name].worked_text() for st in ex.steps}
+            wrong = {first_step: "[97; 98]", second: "12345"}
+            steps = {"bad d": {**ok, first_step: wrong[first_step]}, "both bad": wrong,
+                     "bad q": {**ok, second: wrong[second]}, "right": ok, "slip at the end": ok,
+                     "half": {first_step: ok[first_step]}}.get(plan)
+            final = ex.answer.typed(ex.answer.key) if plan == "right" else "12345"
+            rec = record(ex_id, CODE, s, [(final, "correct" if plan == "right" else "incorrect")], NOW)
+            if steps:
+                rec["assigned"][CODE]["attempts"][0]["steps"] = steps
+                worked += 1
+            files.append((f"{s}.json", hand_in(CODE, s, [ex_id], {ex_id: rec})))
+    give(page, site_url, files)
+    page.wait_for_function("() => document.querySelector('[data-wb-class]').dataset.wbStatsMs !== undefined", timeout=SLOW)
+    row = page.locator(f"tr[data-wb-stats='{ex_id}']")
+    label = {st.name: st.label for st in bank.get(ex_id).steps}
+    assert f"over {worked} answers worked in steps" in row.text_content()
+    assert row.locator(f"[data-wb-step='{first_step}']").text_content() == f"{label[first_step]} (5 students, 5 answers)"
+    assert row.locator(f"[data-wb-step='{second}']").text_content() == f"{label[second]} (2 students, 2 answers)"
+    assert row.locator("[data-wb-step]").count() == 2

@@ -5,22 +5,21 @@ the Makefile and the scripts). Not counted: Markdown pages, data (JSON, locks) a
 
 from __future__ import annotations
 
-import subprocess
 from pathlib import Path
+
+from tracked import tracked
 
 ROOT = Path(__file__).resolve().parents[2]
 LIMIT = 400
 SOURCE = (".py", ".js", ".mjs", ".ts", ".css", ".j2", ".html", ".sh")
 
 
-def tracked() -> list[Path]:
-    out = subprocess.run(["git", "ls-files", "-z"], cwd=ROOT, capture_output=True, check=True).stdout
-    names = [n for n in out.decode().split("\0") if n]
-    return [ROOT / n for n in names if n.endswith(SOURCE) or Path(n).name in ("Makefile", "run")]
+def sources() -> list[Path]:
+    return [ROOT / n for n in tracked() if n.endswith(SOURCE) or Path(n).name in ("Makefile", "run")]
 
 
 def test_no_source_file_is_over_400_lines():
-    files = [p for p in tracked() if p.is_file()]
+    files = [p for p in sources() if p.is_file()]
     assert len(files) > 100, len(files)
     long = {str(p.relative_to(ROOT)): n for p in files
             if (n := len(p.read_text(encoding="utf-8", errors="replace").splitlines())) > LIMIT}

@@ -143,3 +143,28 @@ def test_a_step_request_that_names_no_step_of_the_exercise_is_refused_in_words()
     assert reply["error"]["kind"] == "bad-request" and "no steps" in reply["error"]["message"]
     reply = json.loads(handle(json.dumps({"op": "grade", "exercise": ex.id, "answer": "1", "steps": [1]})))
     assert reply["error"]["kind"] == "bad-request"
+
+
+def _far_off(v):
+    """A final answer to ``v`` that no step leads to: a named slip's value, else the key moved by 7."""
+    a = v.answer
+    if a.slips:
+        return a.typed(a.slips[0].value)
+    key = a.key
+    if isinstance(key, (int, float)):
+        return a.typed(key + 7)
+    return a.typed([[x + 7 for x in row] for row in key])
+
+
+@pytest.mark.parametrize("ex", STEPPED, ids=[ex.id for ex in STEPPED])
+def test_a_wrong_final_points_at_the_first_step_not_yet_right(ex):
+    """After a wrong final, ``data.steps`` names the step to look at: the first when none was typed,
+    the first untyped one after right ones, and none when every step is typed and right (the slip
+    is in the last line: no step is wrong, and the class page counts none as the first wrong one)."""
+    for v in list(_variants(ex))[:20]:
+        typed = {s.name: v.step_answers[s.name].worked_text() for s in v.steps}
+        wrong = _far_off(v)
+        assert grade(v, wrong)["data"]["steps"]["first"] == v.steps[0].name, v.seed
+        assert grade(v, wrong, sent={v.steps[0].name: typed[v.steps[0].name]})["data"]["steps"]["first"] == v.steps[1].name
+        verdict = grade(v, wrong, sent=typed)
+        assert verdict["status"] == "incorrect" and "steps" not in verdict["data"], (v.seed, verdict)

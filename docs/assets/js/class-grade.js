@@ -132,8 +132,13 @@ async function gradeAttempts(cell, runtime, id, v, attempts) {
       // the name the student's page recorded it by
       if (typeof slip.name === "string") cell.slipNames[slip.name] = slip.key;
     }
-    const first = verdict.status === "incorrect" ? verdict.data?.steps?.first : null;
-    if (typeof first === "string") cell.firstWrongStep[first] = (cell.firstWrongStep[first] ?? 0) + 1;
+    // data.steps names the step to look at first: counted only where the student typed that step
+    const wrong = verdict.status === "incorrect" ? verdict.data?.steps : null;
+    const typed = attempts[i].steps?.[wrong?.first];
+    if (typeof wrong?.first === "string" && typed !== undefined && typed !== null && typed !== "") {
+      cell.firstWrongStep[wrong.first] = (cell.firstWrongStep[wrong.first] ?? 0) + 1;
+      cell.stepLabels[wrong.first] ??= typeof wrong.label === "string" ? wrong.label : wrong.first;
+    }
     if (attempts[i].steps) cell.withSteps += 1;
   });
 }
@@ -143,7 +148,7 @@ async function gradeAttempts(cell, runtime, id, v, attempts) {
  * attempt that first grades correct now), changed (a re-graded verdict differs from the one the
  * student's page recorded; `changes` lists them), hinted, revealed, stepped, carried,
  * slips: {key: n} (re-graded; `slipText` the words for each), recordedSlips,
- * firstWrongStep: {step: n}, withSteps, note}.
+ * firstWrongStep: {step: n} (`stepLabels` the step's label for each), withSteps, note}.
  * `drawing`: the ids that draw variants (Derive); `runtime`: the grader with Build runs
  * through the sandbox (withSandbox); `onRun(id, text)`: a Build run starts (text null) or
  * reports progress.
@@ -160,7 +165,8 @@ async function gradeCell(learner, id, drawing, runtime, onRun) {
   const r = learner.records[id] ?? {};
   const cell = { attempts: 0, claimed: false, verified: false, changed: false, changes: [], toSolve: null,
     hinted: Boolean(r.hinted), slips: {}, slipText: {}, slipNames: {},
-    recordedSlips: isSlips(r.slips) ? r.slips : {}, firstWrongStep: {}, withSteps: 0, note: "" };
+    recordedSlips: isSlips(r.slips) ? r.slips : {}, firstWrongStep: {}, stepLabels: {}, withSteps: 0,
+    note: "" };
   if (learner.kind === "hand-in") {
     const v = drawing.has(id) ? await assignedVariant(learner.code, learner.student, id) : 0;
     const entry = isAssigned(r.assigned) ? r.assigned[learner.code] : undefined;

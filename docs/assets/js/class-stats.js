@@ -63,7 +63,12 @@ export function exerciseStats(rows, ids, id) {
       slips.set(key, m);
     }
     withSteps += c.withSteps;
-    for (const [step, n] of Object.entries(c.firstWrongStep)) steps.set(step, (steps.get(step) ?? 0) + n);
+    for (const [step, n] of Object.entries(c.firstWrongStep)) {
+      const m = steps.get(step) ?? { learners: 0, answers: 0, label: c.stepLabels[step] ?? step };
+      m.learners += 1;
+      m.answers += n;
+      steps.set(step, m);
+    }
   }
   const ul = upperLower(hits, rest);
   return {
@@ -75,7 +80,9 @@ export function exerciseStats(rows, ids, id) {
     slips: [...slips].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1))
       .slice(0, 3)
       .map(([key, m]) => ({ key, ...m })),
-    withSteps, steps: [...steps].sort((a, b) => b[1] - a[1]).map(([step, n]) => ({ step, n })),
+    withSteps,
+    steps: [...steps].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1))
+      .map(([step, m]) => ({ step, ...m })),
   };
 }
 
@@ -109,9 +116,15 @@ export function statsTable(stats) {
       li.dataset.wbSlip = m.key;
       return li;
     })) : "—";
-    const steps = s.steps.length ? el("p", { className: "wb-class-detail",
-      textContent: `First wrong step, of ${s.withSteps} answers worked in `
-      + `steps: ${s.steps.map((x) => `${x.step} ${x.n}`).join(", ")}` }) : "";
+    const steps = s.steps.length ? el("div", { className: "wb-class-detail" },
+      el("p", { textContent: `The first wrong step, over ${s.withSteps} answer${s.withSteps === 1 ? "" : "s"} `
+        + "worked in steps:" }),
+      el("ul", {}, ...s.steps.map((m) => {
+        const li = el("li", { textContent: `${m.label} (${m.learners} student${m.learners === 1 ? "" : "s"}, `
+          + `${m.answers} answer${m.answers === 1 ? "" : "s"})` });
+        li.dataset.wbStep = m.step;
+        return li;
+      }))) : "";
     const tr = el("tr", {}, name, ...[String(s.set), pct(s.solved), s.toSolve === null ? "—" : String(s.toSolve),
       pct(s.hinted), pct(s.revealed),
       num(s.pointBiserial), num(s.upperLower)].map((t) => el("td", { textContent: t })), el("td", {}, slips, steps));
