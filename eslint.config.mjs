@@ -30,6 +30,7 @@ export default [
       sourceType: "script",
       globals: {
         ...globals.serviceworker, __WB_VERSION__: "readonly", __WB_FILES__: "readonly", __WB_WIRE_BYTES__: "readonly",
+        __WB_LATER__: "readonly",
       },
     },
   },

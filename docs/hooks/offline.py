@@ -13,7 +13,12 @@ and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
   site gives a new version (and a new cache);
 * ``WIRE_BYTES``: what the whole copy downloads, each file gzipped as GitHub
   Pages sends it (text types and wasm, level 6; archives as they are), for the
-  notice that announces the copy (the stored size counts the snapshot inflated).
+  notice that announces the copy (the stored size counts the snapshot inflated);
+* ``LATER``: files kept when they are first fetched, not copied with the rest
+  (their entries as in ``FILES``). The sandbox's memory snapshot is one: 5 MB
+  that only a Build run's quick start needs, and without it the sandbox boots
+  plainly from files the copy has. It is stored once a Build exercise started
+  the sandbox while online, for a learner who wants the copy.
 
 Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
 and so are the search's word splitters and stemmers for other languages when the
@@ -44,6 +49,7 @@ OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map",)
 SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml", "assets/vendor/pyodide/python_stdlib.core.compiled.zip"}
 INFLATED = ".snapshot.gz"  # stored inflated by the service worker
+LATER = ("assets/vendor/pyodide/sandbox.snapshot.gz",)  # kept when first fetched, not with the copy
 LUNR_LANGUAGES = "assets/javascripts/lunr/"
 # What GitHub Pages gzips on the way (by type), and what it never does (archives, images, fonts).
 GZIP_TYPES = ("text/", "application/javascript", "application/json", "application/xml", "image/svg+xml",
@@ -122,15 +128,18 @@ def on_post_build(config, **kwargs):
         (site / OUTPUT).write_text(UNREGISTER)
         return
     template = (Path(config.docs_dir) / TEMPLATE).read_text()
-    wire: list[int] = []
-    files = precache_list(site, _english_only(config), wire)
+    sizes: list[int] = []
+    every = precache_list(site, _english_only(config), sizes)
+    files = [e for e in every if e[0] not in LATER]
+    later = [e for e in every if e[0] in LATER]
+    wire = [n for e, n in zip(every, sizes, strict=True) if e[0] not in LATER]
     h = hashlib.sha256(template.encode())
-    for url, digest, *_ in files:
+    for url, digest, *_ in every:
         h.update(f"\n{url} {digest}".encode())
     version = h.hexdigest()[:16]
     listing = "[\n" + ",\n".join(json.dumps(entry) for entry in files) + "\n]"
     text = template.replace("__WB_VERSION__", json.dumps(version)).replace("__WB_FILES__", listing)
-    text = text.replace("__WB_WIRE_BYTES__", str(sum(wire)))
+    text = text.replace("__WB_LATER__", json.dumps(later)).replace("__WB_WIRE_BYTES__", str(sum(wire)))
     (site / OUTPUT).write_text(text)
     total = sum(entry[-1] for entry in files)
     log.info("offline: sw.js version %s: a manifest of %d files, %d bytes stored, %d on the wire", version,

@@ -5,3 +5,5 @@ declare const __WB_VERSION__: string;
 declare const __WB_FILES__: Array<[string, string, number, string?, number?]>;
 /** The whole copy's download, gzip as the host sends it. */
 declare const __WB_WIRE_BYTES__: number;
+/** Files kept when first fetched, not with the copy: entries as in the manifest. */
+declare const __WB_LATER__: Array<[string, string, number, string?, number?]>;

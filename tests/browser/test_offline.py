@@ -66,6 +66,15 @@ def precache_list(sw_text: str) -> list[list[str]]:
     return json.loads(re.search(r"const FILES = (\[.*?\n\]);", sw_text, re.S).group(1))
 
 
+def kept_later(sw_text: str) -> list[list[str]]:
+    """The files kept when first fetched, not copied with the rest (offline.py's LATER)."""
+    return json.loads(re.search(r"const LATER = (\[.*?\]);", sw_text).group(1))
+
+
+SANDBOX_SNAPSHOT = "assets/vendor/pyodide/sandbox.snapshot.gz"
+KEPT = "async (u) => Boolean(await caches.match(new URL(u, window.__workbookBase).href))"
+
+
 def test_everything_works_offline_after_one_visit(page, context, site_url):
     open_chapter(page, site_url, 0)
     wait_offline_ready(page)
@@ -74,7 +83,7 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     for needed in ("./", "chapters/00-rotations-2d/", "progress/", "search/search_index.json", "assets/exercises.json",
                    "assets/vendor/pyodide/pyodide.asm.wasm", "assets/vendor/pyodide/pyodide-lock.json",
                    "assets/vendor/pyodide/workbook.snapshot.gz", "assets/vendor/pyodide/python_stdlib.core.zip",
-                   "assets/vendor/pyodide/python_stdlib.rest.zip", "assets/vendor/pyodide/sandbox.snapshot.gz",
+                   "assets/vendor/pyodide/python_stdlib.rest.zip",
                    "assets/vendor/pyodide/python_stdlib.sandbox.zip", "assets/vendor/pyodide/pyodide-lock.sandbox.json",
                    "assets/vendor/katex/katex.min.js", "assets/dist/workbook.js", "assets/dist/worker.js",
                    "assets/workbook.css"):
@@ -82,6 +91,13 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     assert any(re.match(r"assets/vendor/pyodide/numpy-.*\.whl$", u) for u in urls)
     assert any(re.match(r"assets/vendor/pyodide/robotics_workbook-.*\.whl$", u) for u in urls)
     assert any(u.startswith("assets/dist/chunks/editor-") for u in urls)
+    # The sandbox's snapshot is not copied (5 MB a plain start does without): it is kept once the
+    # sandbox has started from it online, as the first Build run here does.
+    assert [u for u, *_ in kept_later((SITE / "sw.js").read_text())] == [SANDBOX_SNAPSHOT] and SANDBOX_SNAPSHOT not in urls
+    build = exercise(page, "0.5")
+    set_editor(page, build, ROTATE_NUMPY)
+    assert run_build(build, timeout=LONG) == "correct", feedback(build)
+    page.wait_for_function(KEPT, arg=SANDBOX_SNAPSHOT, timeout=LONG)
 
     context.set_offline(True)
     fresh = context.new_page()
@@ -97,8 +113,10 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     assert answer_derive(exercise(fresh, "0.1"), "3") == "correct"
     build = exercise(fresh, "0.5")
     set_editor(fresh, build, ROTATE_NUMPY)
+    started = time.perf_counter()
     assert run_build(build, timeout=LONG) == "correct", feedback(build)
-    assert fresh.evaluate("workbook.sandbox.startStages.from") == "snapshot"  # the sandbox's own, stored too
+    print(f"offline: first Build run, the sandbox from its kept snapshot, {time.perf_counter() - started:.1f} s")
+    assert fresh.evaluate("workbook.sandbox.startStages.from") == "snapshot"  # the sandbox's own, kept too
 
     # Every precached file is served with the network gone.
     missing = fresh.evaluate("""async (urls) => {
@@ -120,6 +138,18 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     assert fresh.url.endswith("chapters/04-ekf-update/")
     exercise(fresh, "4.1").wait_for()
     wait_runtime(fresh, timeout=LONG)
+    # A learner whose sandbox never started online: offline, it boots plainly from the copy's files.
+    fresh.evaluate("""async (u) => { for (const name of await caches.keys())
+      await (await caches.open(name)).delete(new URL(u, window.__workbookBase).href); }""", SANDBOX_SNAPSHOT)
+    assert not fresh.evaluate(KEPT, SANDBOX_SNAPSHOT)
+    fresh.goto(site_url + "chapters/00-rotations-2d/")
+    wait_runtime(fresh, timeout=LONG)
+    build = exercise(fresh, "0.5")
+    set_editor(fresh, build, ROTATE_NUMPY)
+    started = time.perf_counter()
+    assert run_build(build, timeout=LONG) == "correct", feedback(build)
+    print(f"offline: first Build run, the sandbox booted plainly, {time.perf_counter() - started:.1f} s")
+    assert fresh.evaluate("workbook.sandbox.startStages.from") == "boot"
     assert errors == []
     fresh.close()
     context.set_offline(False)

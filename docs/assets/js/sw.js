@@ -22,6 +22,8 @@
 // - install, first visit: nothing is stored (the page asks later); an update
 //   (an earlier version active, the copy wanted): the new version is copied
 //   whole before it can take over, unchanged files from the old cache.
+// - LATER (the sandbox's snapshot): not part of the copy; kept, in the same
+//   cache, when it is first fetched for a learner who wants the copy.
 // - sitemap.xml (which mkdocs-material's instant navigation reads) is written
 //   here from the manifest's pages, for this scope: right at any address.
 // - pages and workers get COOP/COEP headers (cross-origin isolation: a long run
@@ -33,6 +35,7 @@
 const VERSION = __WB_VERSION__;
 const FILES = __WB_FILES__;
 const WIRE_BYTES = __WB_WIRE_BYTES__; // the whole copy's download, gzip as the host sends it (offline.py)
+const LATER = __WB_LATER__; // kept when first fetched, not with the copy (offline.py): the sandbox's snapshot
 
 // The global scope, as what it is: a service worker's (the type checker's lib names it a worker's).
 const sw = /** @type {ServiceWorkerGlobalScope} */ (/** @type {unknown} */ (self));
@@ -42,10 +45,11 @@ const CACHE = PREFIX + VERSION;
 const STATE = PREFIX + "state"; // not versioned: whether the learner wants the copy
 const WANTED = new URL("__wb__/wanted", SCOPE).href;
 const SEAL = new URL("__wb__/verified", SCOPE).href;
-const ENTRIES = new Map(FILES.map(([path, integrity, size, storedIntegrity, storedSize]) => [
-  new URL(path, SCOPE).href,
-  { path, integrity, size, hashes: [integrity, storedIntegrity].filter(Boolean), storedSize: storedSize || size },
-]));
+/** @returns {[string, {path: string, integrity: string, size: number, hashes: string[], storedSize: number}]} */
+const entryOf = ([path, integrity, size, storedIntegrity, storedSize]) => [new URL(path, SCOPE).href,
+  { path, integrity, size, hashes: [integrity, storedIntegrity].filter(Boolean), storedSize: storedSize || size }];
+const ENTRIES = new Map(FILES.map(entryOf));
+const LATER_ENTRIES = new Map(LATER.map(entryOf));
 const TOTAL_BYTES = [...ENTRIES.values()].reduce((n, e) => n + e.storedSize, 0);
 const NOT_FOUND = new URL("404.html", SCOPE).href;
 const SITEMAP = new URL("sitemap.xml", SCOPE).href;
@@ -135,7 +139,7 @@ function inflated(response) {
 }
 
 async function fetchChecked(url, entry, mode) {
-  const request = new Request(url, { cache: mode, integrity: entry.integrity, credentials: "same-origin" });
+  const request = new Request(url, { cache: mode, integrity: entry.integrity, mode: "same-origin" });
   const response = await fetch(request);
   if (!response.ok) throw new Error(`${entry.path}: HTTP ${response.status}`);
   return response;
@@ -198,6 +202,31 @@ async function copyAll() {
   const complete = [...ENTRIES.keys()].every((url) => keys.has(url) && verified.has(url));
   if (!complete) throw new Error("the copy is incomplete");
   await cache.put(SEAL, new Response(JSON.stringify({ version: VERSION, count: ENTRIES.size, bytes: TOTAL_BYTES })));
+  for (const [url, entry] of LATER_ENTRIES) { // kept by the last version, or in the HTTP cache: no download
+    if (await cache.match(url)) continue;
+    const older = await fromOlder(url, entry);
+    const had = older || (await fetchChecked(url, entry, "only-if-cached").catch(() => null));
+    if (had) await keepLater(url, entry, had, !older);
+  }
+}
+
+/** Keep a file of LATER that came from the network, if its bytes are the manifest's. */
+async function keepLater(url, entry, response, raw = true) {
+  const cache = await caches.open(CACHE);
+  await cache.put(url, raw && INFLATE.test(entry.path) ? inflated(response) : response);
+  const kept = await cache.match(url);
+  if (!kept || !(await genuine(kept, entry))) await cache.delete(url);
+}
+
+/** A file of LATER: the stored copy while genuine, else the network's (kept when the copy is wanted). */
+async function later(key, request, event) {
+  const entry = LATER_ENTRIES.get(key);
+  const hit = await (await caches.open(CACHE)).match(key);
+  const same = hit && (await genuine(hit, entry));
+  if (same) return same;
+  const response = await fetch(request);
+  if (response.ok && (await wanted())) event.waitUntil(keepLater(key, entry, response.clone()).catch(() => {}));
+  return response;
 }
 
 function copy() {
@@ -232,26 +261,18 @@ async function decline() {
 }
 
 // ---- Life cycle ---------------------------------------------------------------------
-sw.addEventListener("install", (event) => {
-  event.waitUntil(
-    (async () => {
-      // An update of a stored site: whole before it takes over. Otherwise nothing yet.
-      if (sw.registration.active && (await wanted())) await copyAll();
-      else await sw.skipWaiting();
-    })(),
-  );
-});
+sw.addEventListener("install", (event) => event.waitUntil((async () => {
+  // An update of a stored site: whole before it takes over. Otherwise nothing yet.
+  if (sw.registration.active && (await wanted())) await copyAll();
+  else await sw.skipWaiting();
+})()));
 
-sw.addEventListener("activate", (event) => {
-  event.waitUntil(
-    (async () => {
-      for (const name of await caches.keys()) {
-        if (name.startsWith(PREFIX) && name !== CACHE && name !== STATE) await caches.delete(name);
-      }
-      if (await sealed()) await sw.clients.claim();
-    })(),
-  );
-});
+sw.addEventListener("activate", (event) => event.waitUntil((async () => {
+  for (const name of await caches.keys()) {
+    if (name.startsWith(PREFIX) && name !== CACHE && name !== STATE) await caches.delete(name);
+  }
+  if (await sealed()) await sw.clients.claim();
+})()));
 
 sw.addEventListener("message", (event) => {
   const reply = async (message) => event.source?.postMessage(await message);
@@ -259,12 +280,10 @@ sw.addEventListener("message", (event) => {
   if (type === "activate-update") sw.skipWaiting();
   else if (type === "status") event.waitUntil(reply(status()).then(resume));
   else if (type === "store") {
-    event.waitUntil(
-      (async () => {
-        await (await caches.open(STATE)).put(WANTED, new Response("yes"));
-        await copy().catch(() => {});
-      })(),
-    );
+    event.waitUntil((async () => {
+      await (await caches.open(STATE)).put(WANTED, new Response("yes"));
+      await copy().catch(() => {});
+    })());
   } else if (type === "decline") event.waitUntil(decline().then(() => reply(status())));
 });
 
@@ -277,13 +296,13 @@ function isolate(response) {
   return new Response(response.body, { status: response.status, statusText: response.statusText, headers });
 }
 
-/** The manifest URL a request stands for, or null. */
-function cacheKey(url) {
+/** The URL in `entries` (the manifest's, or LATER's) a request stands for, or null. */
+function cacheKey(url, entries = ENTRIES) {
   url = new URL(url);
   url.search = "";
   url.hash = "";
   if (url.pathname.endsWith("/index.html")) url.pathname = url.pathname.slice(0, -"index.html".length);
-  return ENTRIES.has(url.href) ? url.href : null;
+  return entries.has(url.href) ? url.href : null;
 }
 
 /** The stored response for `key` if it is genuine; a tampered one is deleted (and the seal with it). */
@@ -315,6 +334,8 @@ async function respond(request, event) {
   const key = cacheKey(request.url);
   if (new URL(request.url).pathname === new URL(SITEMAP).pathname) return sitemap();
   if (key === NOT_FOUND && request.mode === "navigate") return (await notFound()) || isolate(await fetch(request));
+  const kept = key ? null : cacheKey(request.url, LATER_ENTRIES);
+  if (kept) return later(kept, request, event);
   if (key) {
     const hit = await stored(key);
     // Only documents and workers need the isolation headers; everything else is
