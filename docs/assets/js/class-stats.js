@@ -45,6 +45,25 @@ export function upperLower(hits, scores) {
   return share(order.slice(n - k)) - share(order.slice(0, k));
 }
 
+/** Add one student's counts ({key: answers}) to `tally` (key -> {learners, answers, ...words(key)}). */
+function count(tally, counts, words) {
+  for (const [key, n] of Object.entries(counts)) {
+    const m = tally.get(key) ?? { learners: 0, answers: 0, ...words(key) };
+    m.learners += 1;
+    m.answers += n;
+    tally.set(key, m);
+  }
+}
+
+/** A tally's entries, the most students first (then the most answers, then by key), as {key, ...}. */
+const byReach = (tally) => [...tally]
+  .sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1))
+  .map(([key, m]) => ({ key, ...m }));
+
+/** "(3 students, 4 answers)" */
+const reach = (m) => `(${m.learners} student${m.learners === 1 ? "" : "s"}, `
+  + `${m.answers} answer${m.answers === 1 ? "" : "s"})`;
+
 /** The statistics of one exercise over `rows` (the shown file of each student). */
 export function exerciseStats(rows, ids, id) {
   const set = rows.map((r) => r.learner).filter((l) => l.cells[id]);
@@ -56,19 +75,9 @@ export function exerciseStats(rows, ids, id) {
   const steps = new Map();
   let withSteps = 0;
   for (const c of cells) {
-    for (const [key, n] of Object.entries(c.slips)) {
-      const m = slips.get(key) ?? { learners: 0, answers: 0, text: c.slipText[key] ?? key };
-      m.learners += 1;
-      m.answers += n;
-      slips.set(key, m);
-    }
+    count(slips, c.slips, (key) => ({ text: c.slipText[key] ?? key }));
     withSteps += c.withSteps;
-    for (const [step, n] of Object.entries(c.firstWrongStep)) {
-      const m = steps.get(step) ?? { learners: 0, answers: 0, label: c.stepLabels[step] ?? step };
-      m.learners += 1;
-      m.answers += n;
-      steps.set(step, m);
-    }
+    count(steps, c.firstWrongStep, (step) => ({ label: c.stepLabels[step] ?? step }));
   }
   const ul = upperLower(hits, rest);
   return {
@@ -77,12 +86,8 @@ export function exerciseStats(rows, ids, id) {
     hinted: share((c) => c.hinted), revealed: share((c) => c.revealed), pointBiserial: pointBiserial(hits, rest),
     upperLower: ul,
     flagged: ul !== null && ul < 0,
-    slips: [...slips].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1))
-      .slice(0, 3)
-      .map(([key, m]) => ({ key, ...m })),
-    withSteps,
-    steps: [...steps].sort(([a, x], [b, y]) => y.learners - x.learners || y.answers - x.answers || (a < b ? -1 : 1))
-      .map(([step, m]) => ({ step, ...m })),
+    slips: byReach(slips).slice(0, 3),
+    withSteps, steps: byReach(steps),
   };
 }
 
@@ -111,8 +116,7 @@ export function statsTable(stats) {
       name.append(flag);
     }
     const slips = s.slips.length ? el("ul", {}, ...s.slips.map((m) => {
-      const li = el("li", { textContent: `${m.text} (${m.learners} student${m.learners === 1 ? "" : "s"}, ${m.answers} `
-        + `answer${m.answers === 1 ? "" : "s"})` });
+      const li = el("li", { textContent: `${m.text} ${reach(m)}` });
       li.dataset.wbSlip = m.key;
       return li;
     })) : "—";
@@ -120,9 +124,8 @@ export function statsTable(stats) {
       el("p", { textContent: `The first wrong step, over ${s.withSteps} answer${s.withSteps === 1 ? "" : "s"} `
         + "worked in steps:" }),
       el("ul", {}, ...s.steps.map((m) => {
-        const li = el("li", { textContent: `${m.label} (${m.learners} student${m.learners === 1 ? "" : "s"}, `
-          + `${m.answers} answer${m.answers === 1 ? "" : "s"})` });
-        li.dataset.wbStep = m.step;
+        const li = el("li", { textContent: `${m.label} ${reach(m)}` });
+        li.dataset.wbStep = m.key;
         return li;
       }))) : "";
     const tr = el("tr", {}, name, ...[String(s.set), pct(s.solved), s.toSolve === null ? "—" : String(s.toSolve),

@@ -210,7 +210,7 @@ async function copyAll() {
   }
 }
 
-/** Keep a file of LATER that came from the network, if its bytes are the manifest's. */
+/** Keep a file of LATER (`raw`: as the host sends it, not yet inflated), if its bytes are the manifest's. */
 async function keepLater(url, entry, response, raw = true) {
   const cache = await caches.open(CACHE);
   await cache.put(url, raw && INFLATE.test(entry.path) ? inflated(response) : response);
