@@ -22,6 +22,12 @@ _AXES = {"x": (1, 0, 0), "y": (0, 1, 0), "z": (0, 0, 1)}
 SAME_ROTATION = "−q is the same rotation as q (the double cover), so both signs are right."
 
 
+def _two_lines(terms):
+    """A four-term sum in an aligned display, broken after its second term (one line is wider
+    than a phone)."""
+    return " + ".join(terms[:2]) + " \\\\\n&\\quad + " + " + ".join(terms[2:])
+
+
 def _q(deg, axis, sign=1):
     """The unit quaternion of ``deg`` degrees about a coordinate axis, times ``sign``, with the
     rounding noise of cos 90° and sin 180° removed (so a component that is 0 is exactly 0)."""
@@ -137,7 +143,7 @@ def _angle(p, given=None):
         },
         "values": {
             "a": fmt(p["a"]), "b": fmt(p["b"]), "B": p["B"], "q0": _qtext(q0), "q1": _qtext(q1),
-            "terms": " + ".join(f"{paren(a)} \\cdot {paren(b)}" for a, b in zip(q0, q1)),
+            "terms": _two_lines([f"{paren(a)} \\cdot {paren(b)}" for a, b in zip(q0, q1)]),
             "dot_rel": relation(d, sd), "abs": fmt(abs(d)),
         },
     }

@@ -203,8 +203,9 @@ def _quat_product(p):
             "w1": fmt(q1[0]), "w2": fmt(q2[0]), "u1": ", ".join(map(fmt, u1)), "u2": ", ".join(map(fmt, u2)),
             "dot_terms": " + ".join(f"{paren(a)} \\cdot {paren(b)}" for a, b in zip(u1, u2)),
             "dot": fmt(dot), "pdot": paren(dot), "ww": fmt(q1[0] * q2[0]),
-            "cross_terms": ",\\ ".join(f"{paren(u1[i])} \\cdot {paren(u2[j])} - {paren(u1[j])} \\cdot {paren(u2[i])}"
-                                       for i, j in pairs),
+            # one component per line: the three on one line are wider than a phone
+            "cross_terms": ", \\\\ &\\qquad ".join(
+                f"{paren(u1[i])} \\cdot {paren(u2[j])} - {paren(u1[j])} \\cdot {paren(u2[i])}" for i, j in pairs),
             "cross": ", ".join(map(fmt, cross)),
             "a": ", ".join(fmt(q1[0] * b) for b in u2), "b": ", ".join(fmt(q2[0] * a) for a in u1),
             "w": fmt(key[0]), "v": ", ".join(map(fmt, key[1:])),
