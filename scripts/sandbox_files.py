@@ -5,15 +5,18 @@ The sandbox (``docs/assets/js/sandbox.js``) runs learner code, so it must not
 hold ``workbook`` (its keys, its reference implementations). From the vendored
 files this writes, next to them:
 
-* ``python_stdlib.sandbox.zip``: the whole standard library and
-  ``workbook_sandbox``: the core the grader starts with
-  (``scripts/split_stdlib.py``) minus ``workbook/``, and the rest. (The grader
-  mounts the rest on first use with a finder of its own, ``workbook/lazy_stdlib.py``;
-  the sandbox takes it whole, 1.6 MB more on the wire once, so that it needs no
-  finder and no fetch for it.)
+* ``python_stdlib.sandbox.zip``: the core the grader starts with
+  (``scripts/split_stdlib.py``) minus ``workbook/``: the standard library's
+  core, ``workbook_sandbox`` and the index of the rest. The rest of the standard
+  library is the grader's own ``python_stdlib.rest.zip``, which the sandbox
+  mounts on first use with the same finder (``workbook_sandbox/lazy_stdlib.py``):
+  ahead of a run whose imports need it, or when an import no one saw asks. So a
+  first Build run on a first visit waits for 0.4 MB, not for the whole 2 MB
+  standard library (issue 48).
 * ``pyodide-lock.sandbox.json``: the lock file without the package that provides
   ``workbook``; it is the sandbox's manifest too: the only files its guarded
-  fetch will get are the ones this lock names.
+  fetch will get are the ones this lock names (and its finder fetches only the
+  rest).
 
 Entries keep the core's order and dates, so the same core gives the same bytes.
 """
@@ -27,23 +30,20 @@ from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 VENDOR = ROOT / "docs" / "assets" / "vendor" / "pyodide"
-CORE, REST, SANDBOX = "python_stdlib.core.zip", "python_stdlib.rest.zip", "python_stdlib.sandbox.zip"
-INDEX = "stdlib-rest.txt"  # the core's list of the rest, for the grader's finder
+CORE, SANDBOX = "python_stdlib.core.zip", "python_stdlib.sandbox.zip"
 LOCK, SANDBOX_LOCK = "pyodide-lock.json", "pyodide-lock.sandbox.json"
 GRADER = "workbook"  # the top-level package the sandbox must not hold
 
 
-def sandbox_zip(core: Path, rest: Path, out: Path) -> int:
-    """``core`` without the grading package, then ``rest``; the number of entries written."""
+def sandbox_zip(core: Path, out: Path) -> int:
+    """``core`` without the grading package; the number of entries written."""
     written = 0
-    with zipfile.ZipFile(out, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as zout:
-        for part in (core, rest):
-            with zipfile.ZipFile(part) as zin:
-                for info in zin.infolist():
-                    if info.filename.split("/")[0] == GRADER or info.filename == INDEX:
-                        continue
-                    zout.writestr(info, zin.read(info))
-                    written += 1
+    with zipfile.ZipFile(out, "w", compression=zipfile.ZIP_DEFLATED, compresslevel=9) as zout, \
+            zipfile.ZipFile(core) as zin:
+        for info in zin.infolist():
+            if info.filename.split("/")[0] != GRADER:
+                zout.writestr(info, zin.read(info))
+                written += 1
     return written
 
 
@@ -56,7 +56,7 @@ def sandbox_lock(lock: dict) -> dict:
 def main(vendor: Path = VENDOR) -> None:
     if not (vendor / CORE).exists():
         sys.exit("sandbox_files: run scripts/split_stdlib.py first (make does)")
-    count = sandbox_zip(vendor / CORE, vendor / REST, vendor / SANDBOX)
+    count = sandbox_zip(vendor / CORE, vendor / SANDBOX)
     lock = sandbox_lock(json.loads((vendor / LOCK).read_text()))
     (vendor / SANDBOX_LOCK).write_text(json.dumps(lock, indent=2, sort_keys=True) + "\n")
     print(f"sandbox: {SANDBOX} {count} files, {(vendor / SANDBOX).stat().st_size / 1e6:.2f} MB; "

@@ -11,7 +11,7 @@ worker starts from
   (so no package loader runs at start-up; their docstrings, doctests included,
   stay in the repository and the wheel), and ``stdlib-rest.txt``, the names of
   the modules left out;
-* ``python_stdlib.rest.zip``: everything else, which ``workbook/lazy_stdlib.py``
+* ``python_stdlib.rest.zip``: everything else, which ``workbook_sandbox/lazy_stdlib.py``
   mounts the first time an import asks for it (the page fetches it ahead of a
   Build run that imports anything).
 
@@ -50,7 +50,7 @@ OUT = ROOT / "docs" / "assets" / "vendor" / "pyodide"
 CORE, REST = "python_stdlib.core.zip", "python_stdlib.rest.zip"
 COMPILED = "python_stdlib.core.compiled.zip"
 ZIP_PATH = "/lib/python312.zip"  # where Pyodide 0.27 puts the standard library's zip (on sys.path)
-INDEX = "stdlib-rest.txt"  # workbook/lazy_stdlib.py reads it
+INDEX = "stdlib-rest.txt"  # workbook_sandbox/lazy_stdlib.py reads it
 
 
 def _source_name(name: str) -> str:

@@ -7,7 +7,7 @@
 // that pass, fail, raise and do not compile (run in process, as the sandbox runs them), draws, splits, readings and every
 // figure. The modules then loaded from the standard library are the core
 // (scripts/split_stdlib.py); the rest is fetched on first use
-// (workbook/lazy_stdlib.py).
+// (workbook_sandbox/lazy_stdlib.py).
 //
 // Usage: node scripts/stdlib_probe.mjs [vendor-dir]  -> build/stdlib-used.json
 import { mkdirSync, readdirSync, readFileSync, statSync, writeFileSync } from "node:fs";
@@ -63,7 +63,7 @@ for ex in bank.all_exercises():
         ask(op="read", exercise=ex.id, answer="L1*cos(theta1)")
 for name in figures.names():
     ask(op="figure", figure=name, params={})
-from workbook import lazy_stdlib
+from workbook_sandbox import lazy_stdlib
 lazy_stdlib.install("probe")
 from pyodide.code import find_imports
 find_imports("import numpy\\nx = 1")

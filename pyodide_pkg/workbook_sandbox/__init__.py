@@ -12,6 +12,8 @@ verdict. Natively the grader runs :func:`runner.run` in its own process.
   runs its reference through the same driver.
 * :mod:`.runner`: compile, load, drive every case, report; ``print`` captured.
 * :mod:`.restore`: put back what a run changed in loaded modules.
+* :mod:`.lazy_stdlib`: the rest of the standard library, mounted on first use (in both
+  workers: the grader's Python holds this package too).
 
 It must import nothing from ``workbook`` (``tests/unit/test_sandbox_package.py``).
 """

@@ -1,4 +1,4 @@
-"""The rest of the standard library, mounted on first use (workbook/lazy_stdlib.py).
+"""The rest of the standard library, mounted on first use (workbook_sandbox/lazy_stdlib.py).
 
 A fake "rest" zip holds a package and a module; the finder must fetch it only
 when an import names one of them, exactly once, and then let the normal import
@@ -13,7 +13,7 @@ import zipfile
 
 import pytest
 
-from workbook import lazy_stdlib
+from workbook_sandbox import lazy_stdlib
 
 
 @pytest.fixture
@@ -62,3 +62,31 @@ def test_a_failed_fetch_is_an_import_error_with_a_reason(rest):
         import wbtest_rest_mod  # noqa: F401
     assert not finder.mounted
 
+
+
+def test_a_run_needs_the_rest_when_it_imports_from_it_or_loads_a_package(rest):
+    """The sandbox mounts the rest ahead of a run (so its time limit never pays for the download)
+    exactly when the run imports a module of the rest, or a package of the lock (NumPy, whose own
+    imports reach into the rest); not for the core, a builtin, a typo, or once mounted."""
+    finder, calls = rest
+    assert lazy_stdlib.needs(["wbtest_rest_mod"])
+    assert lazy_stdlib.needs(["math", "numpy"], ["numpy"])
+    assert not lazy_stdlib.needs(["math", "json", "no_such_module"], ["numpy"])
+    assert not lazy_stdlib.needs([])
+    finder.mount()
+    assert not lazy_stdlib.needs(["wbtest_rest_mod"], ["numpy"]) and calls == ["https://example.invalid/rest.zip"]
+
+
+def test_a_typed_array_from_the_page_is_written_as_bytes(rest):
+    """In the sandbox the finder's fetch is the page's, and returns a JS typed array (to_bytes)."""
+    finder, _ = rest
+    data = finder.fetch("x")
+
+    class TypedArray:
+        def to_bytes(self):
+            return data
+
+    finder.fetch = lambda url: TypedArray()
+    import wbtest_rest_mod
+
+    assert wbtest_rest_mod.VALUE == 42

@@ -3,9 +3,11 @@
 // The page starts it from a blob: URL (sandbox-client.js), so the browser
 // applies the page's Content-Security-Policy here too: no eval or Function from
 // strings, and nothing fetched, imported or connected outside the site's origin.
-// Its Python holds no grading package: the whole standard library and
-// workbook_sandbox only (python_stdlib.sandbox.zip, scripts/sandbox_files.py);
-// its lock file names NumPy and nothing else. It starts from a memory snapshot
+// Its Python holds no grading package: the standard library's core and
+// workbook_sandbox only (python_stdlib.sandbox.zip, scripts/sandbox_files.py),
+// and the rest of the standard library (the grader's python_stdlib.rest.zip)
+// mounted on first use (workbook_sandbox/lazy_stdlib.py); its lock file names
+// NumPy and nothing else. It starts from a memory snapshot
 // of its own (sandbox.snapshot.gz, scripts/build_snapshot.mjs --sandbox: that
 // Python with workbook_sandbox imported and one run made) when it is stored or
 // the link is fast enough (boot.js decides, with the link speed the grader
@@ -15,7 +17,8 @@
 // postMessage or close, no code from strings. Two capabilities stay, held in
 // this file's closures: `post`, the only way to the page, and `vendorFetch`, the
 // fetch Pyodide loads NumPy with, which gets the files of the sandbox's lock
-// and nothing else. Learner code reaches neither, so a message from here is only
+// and nothing else. The finder of the rest holds `restSync`, which fetches that one
+// file and takes no address. Learner code reaches neither, so a message from here is only
 // ever this file's: the report of a run, which the grader reads as data.
 //
 // Messages in: {type: "wasm-module", module} first, when the page has the grader's compiled
@@ -32,6 +35,7 @@ import { BOOT_STEP } from "./boot-steps.js";
 
 const post = self.postMessage.bind(self);
 const networkFetch = self.fetch.bind(self);
+const NetworkRequest = self.XMLHttpRequest;
 /** @type {SandboxSettings} */
 const settings = self.WB_SANDBOX || { indexURL: new URL("../vendor/pyodide/", self.location.href).href };
 delete self.WB_SANDBOX;
@@ -39,6 +43,8 @@ const { indexURL } = settings;
 const STDLIB = indexURL + "python_stdlib.sandbox.zip";
 const LOCK = indexURL + "pyodide-lock.sandbox.json";
 const SNAPSHOT = indexURL + "sandbox.snapshot.gz";
+const STDLIB_REST = indexURL + "python_stdlib.rest.zip"; // the grader's too (scripts/split_stdlib.py)
+const REST_PATH = "/lib/python_stdlib.rest.zip"; // where lazy_stdlib mounts it (REST)
 
 // Failures are told by this file's own messages ("failed", or a reply): the browser's
 // report of an uncaught error here (Pyodide's, when a download fails) would reach the
@@ -47,6 +53,8 @@ for (const type of ["error", "unhandledrejection"]) self.addEventListener(type, 
 
 let requests = null; // messages that came before start-up ended
 let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the request running
+let lazy = null; // workbook_sandbox.lazy_stdlib
+let packageImports = []; // what the lock's packages provide (numpy): loading one mounts the rest first
 let takeModule = null; // resolves the compiled WebAssembly the page sends first (settings.module)
 const given = settings.module ? new Promise((resolve) => (takeModule = resolve)) : Promise.resolve(null);
 
@@ -103,10 +111,14 @@ const ready = (async () => {
   stages.from = from;
   stages.wasm = bootStages.wasm; // "shared": started from the grader's compiled WebAssembly
   step(BOOT_STEP.import);
+  lazy = py.pyimport("workbook_sandbox.lazy_stdlib");
+  lazy.install(STDLIB_REST, null, restSync).destroy();
   const runner = py.pyimport("workbook_sandbox.runner");
   warmUp(runner.run_in_sandbox);
   mark("warm");
-  const allowed = new Set(Object.values((await lock).packages).map((p) => new URL(p.file_name, indexURL).href));
+  const packages = Object.values((await lock).packages);
+  const allowed = new Set(packages.map((p) => new URL(p.file_name, indexURL).href));
+  packageImports = packages.flatMap((p) => p.imports || []);
   tame(self, guardedFetch(allowed));
   mark("ready");
   stages.wasmBytes = py._module.HEAPU8.byteLength; // the interpreter's memory, for the benchmark
@@ -203,6 +215,34 @@ function tame(scope, fetch) {
   Object.defineProperty(scope, "fetch", { value: fetch, writable: false, configurable: false });
 }
 
+// ---- The rest of the standard library ---------------------------------------------
+/** The rest, synchronously (allowed in a worker), for an import no one saw coming: that one file only. */
+function restSync() {
+  const request = new NetworkRequest();
+  request.open("GET", STDLIB_REST, false);
+  request.responseType = "arraybuffer";
+  request.send(null);
+  if (request.status !== 200) throw new Error(`HTTP ${request.status}`);
+  return new Uint8Array(request.response);
+}
+
+/** Mount the rest ahead of a run whose imports need it, so the run's time limit never pays for it. */
+async function mountRestFor(py, id, code) {
+  const names = py.pyodide_py.code.find_imports(code);
+  try {
+    if (!lazy.needs(names, packageImports)) return;
+  } finally {
+    names.destroy();
+  }
+  if (!/^\s*(?:import|from)\s+numpy\b/m.test(code)) {
+    post({ id, type: "progress", message: "Loading Python's standard library…" });
+  }
+  const response = await networkFetch(STDLIB_REST);
+  if (!response.ok) throw new Error(`HTTP ${response.status}`);
+  py.FS.writeFile(REST_PATH, new Uint8Array(await response.arrayBuffer()));
+  lazy.mount();
+}
+
 // ---- Runs ------------------------------------------------------------------------
 async function serve(msg) {
   let reply;
@@ -225,6 +265,7 @@ async function runOnce({ id, op, job, code }) {
   if (/\bimport\b/.test(code)) {
     if (/^\s*(?:import|from)\s+numpy\b/m.test(code)) post({ id, type: "progress", message: "Loading NumPy…" });
     try {
+      await mountRestFor(py, id, code);
       await py.loadPackagesFromImports(code);
     } catch (err) {
       return failure(ERROR.package,

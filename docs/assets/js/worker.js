@@ -12,7 +12,7 @@ const indexURL = new URL("../vendor/pyodide/", self.location.href).href;
 let handle = null;
 let pyodide = null;
 let interruptBuffer = null; // [0]: signal written by the page, [1]: id of the request running
-let lazyStdlib = null; // workbook.lazy_stdlib
+let lazyStdlib = null; // workbook_sandbox.lazy_stdlib
 
 // ---- Start-up -----------------------------------------------------------------
 // boot.js starts Pyodide: it restores the memory snapshot made at build time
@@ -20,7 +20,7 @@ let lazyStdlib = null; // workbook.lazy_stdlib
 // not worth it or fails. Either way Python's standard library is the small
 // core, which holds the grading package too (compiled for a plain start on a
 // link fast enough to bring its extra bytes: boot.js); the rest is mounted on first use
-// (scripts/split_stdlib.py, workbook/lazy_stdlib.py). Its progress (bytes of
+// (scripts/split_stdlib.py, workbook_sandbox/lazy_stdlib.py). Its progress (bytes of
 // the runtime files, then Python's start) goes to the page as it happens.
 
 const STDLIB_CORE = indexURL + "python_stdlib.core.zip";
@@ -50,7 +50,7 @@ const ready = (async () => {
     snapshotURL: SNAPSHOT, onProgress: reportBoot });
   pyodide = started.py;
   started.step(BOOT_STEP.import); // the grading package and this page's exercises
-  lazyStdlib = pyodide.pyimport("workbook.lazy_stdlib");
+  lazyStdlib = pyodide.pyimport("workbook_sandbox.lazy_stdlib");
   lazyStdlib.install(STDLIB_REST).destroy();
   handle = pyodide.pyimport("workbook.api").handle;
   mark("handle");

@@ -1,15 +1,20 @@
 """The rest of the standard library, fetched the first time it is needed (in the page).
 
-The worker starts Pyodide with a *core* standard library: the modules Pyodide's
-start-up and the grader import, and this package (``scripts/split_stdlib.py``
-writes it from the official ``python_stdlib.zip``). Everything else is in a
-second zip, the *rest*, which a learner's code rarely needs (``import
+Both workers start Pyodide with a *core* standard library: the grader's holds the
+modules Pyodide's start-up and the grader import, and the grading package
+(``scripts/split_stdlib.py`` writes it from the official ``python_stdlib.zip``);
+the sandbox's is the same core without the grading package
+(``scripts/sandbox_files.py``). Both hold this module, in ``workbook_sandbox``,
+the one package they share. Everything else is in a second zip, the *rest*,
+which grading never needs and a learner's code rarely does (``import
 statistics``, or NumPy's loader). ``install`` puts a finder at the end of
 ``sys.meta_path``: when an import names a module of the rest (its names are
 listed in the core zip, so a typo costs nothing), the rest is fetched once,
-written next to the core and mounted, and the import goes on as usual. The page
-fetches it ahead of a Build run that imports something (``mount``), so a run's
-time limit never pays for the download.
+written next to the core and mounted, and the import goes on as usual. The
+sandbox writes it there itself ahead of a Build run whose imports need it
+(:func:`needs`, then :func:`mount`), so a run's time limit never pays for the
+download; the finder's own fetch is for imports no one saw coming
+(``__import__``).
 
 Natively nothing is installed; the tests drive the finder with a fake fetch.
 """
@@ -19,7 +24,7 @@ from __future__ import annotations
 import importlib.machinery
 import sys
 import zipfile
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 
 INDEX = "stdlib-rest.txt"  # in the core zip: one module name per line
 REST = "/lib/python_stdlib.rest.zip"
@@ -61,7 +66,7 @@ class RestOfStdlib:
                 raise ImportError(f"this module is in the part of Python's standard library that is loaded "
                                   f"on first use, and it could not be loaded ({err})") from None
             with open(self.dest, "wb") as f:
-                f.write(data)
+                f.write(data.to_bytes() if hasattr(data, "to_bytes") else data)  # a JS typed array, in the sandbox
         sys.path.append(self.dest)
         self.mounted = True
         importlib.invalidate_caches()
@@ -107,6 +112,17 @@ def install(url: str, names: set[str] | None = None, fetch: Callable[[str], byte
         sys.meta_path.append(found)
     found.url = url
     return found
+
+
+def needs(names: Iterable[str], packages: Iterable[str] = ()) -> bool:
+    """Whether a run that imports these top-level modules needs the rest first (not yet mounted):
+    one of them is in the rest, or is one of ``packages`` (what the lock's packages provide:
+    NumPy imports modules of the rest as it loads)."""
+    found = finder()
+    if found is None or found.mounted:
+        return False
+    loaded = set(packages)
+    return any(name in found.names or name in loaded for name in names)
 
 
 def mount() -> None:
