@@ -21,7 +21,9 @@ JOB = {"function": "f", "harness": "call", "cases": [[1], [2]]}
 
 
 def test_it_imports_nothing_but_the_standard_library_and_itself():
-    allowed = set(sys.stdlib_module_names) | {"workbook_sandbox"}
+    # and Pyodide's `js` (the worker's global scope, tamed in the sandbox): lazy_stdlib's default
+    # fetch imports it, in the grader; the sandbox hands the finder a fetch of its own
+    allowed = set(sys.stdlib_module_names) | {"workbook_sandbox", "js"}
     for path in PACKAGE.glob("*.py"):
         for node in ast.walk(ast.parse(path.read_text())):
             names = [a.name for a in node.names] if isinstance(node, ast.Import) else \
