@@ -66,9 +66,22 @@ SCHEME = {"light": "default", "dark": "slate"}  # the OS preference -> mkdocs-ma
 
 
 def set_scheme(page: Page, scheme: str) -> None:
-    """Switch the palette as the theme's toggle does (no reload)."""
+    """Switch the palette as the theme's toggle does (no reload), and wait until the page shows it.
+
+    The theme answers a change of the OS preference with a palette of its own choosing, in a task
+    of its own after the change is reported (in the next rendering step). Setting the palette at
+    once raced with that task, which then put the light palette back: the "dark" audits ran on
+    the light page (the class page's dark screenshot was light). So the theme's answer is awaited
+    first, then the palette is set, and the page's background is checked to be that palette's."""
     page.emulate_media(color_scheme=scheme)
+    frames = "() => new Promise(r => requestAnimationFrame(() => requestAnimationFrame(() => setTimeout(r, 0))))"
+    page.evaluate(frames)
     page.evaluate("s => document.body.setAttribute('data-md-color-scheme', s)", SCHEME[scheme])
+    page.evaluate(frames)
+    shown = page.evaluate("""() => [document.body.getAttribute('data-md-color-scheme'),
+      getComputedStyle(document.body).backgroundColor.match(/\\d+/g).slice(0, 3).map(Number)]""")
+    dark = sum(shown[1]) < 3 * 128
+    assert shown[0] == SCHEME[scheme] and dark == (scheme == "dark"), f"the page did not take the {scheme} palette: {shown}"
 
 
 OVERFLOW = ("""() => {
