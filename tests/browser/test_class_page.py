@@ -92,6 +92,12 @@ def test_eighty_students_by_twelve_exercises_read_at_a_glance(page, site_url, wi
     assert opener.get_attribute("aria-expanded") == "true"
     pop = cell.locator(".wb-class-pop")
     assert pop.is_visible() and "attempt" in pop.text_content()
+    # ...wholly on screen and on top: each of its corners is the details' own (at 360 px they opened
+    # past the screen's right edge, clipped by the table's sideways scroll).
+    corners = pop.evaluate("""p => { const r = p.getBoundingClientRect();
+      return [[r.left + 2, r.top + 2], [r.right - 2, r.top + 2], [r.left + 2, r.bottom - 2], [r.right - 2, r.bottom - 2]]
+        .map(([x, y]) => x >= 0 && y >= 0 && x <= innerWidth && y <= innerHeight && p.contains(document.elementFromPoint(x, y))); }""")
+    assert corners == [True] * 4, corners
     load_axe(page)
     found = {}
     for scheme in ("light", "dark"):

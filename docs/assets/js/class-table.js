@@ -112,8 +112,9 @@ function detailsOf(row, ids, id) {
 }
 
 /**
- * Open (or close) the details of the cell whose button is `button`, in a box under it; one at
- * a time (Escape closes it: tableRegion).
+ * Open (or close) the details of the cell whose button is `button`, in a box under it (on a phone, a
+ * sheet along the screen's bottom: course.css), brought into view; one at a time (Escape closes it:
+ * tableRegion).
  */
 export function toggleCell(button, row, ids) {
   const cell = button.parentElement;
@@ -124,6 +125,7 @@ export function toggleCell(button, row, ids) {
   cell.classList.add("wb-class-opened");
   cell.append(pop);
   button.setAttribute("aria-expanded", "true");
+  pop.scrollIntoView({ block: "nearest", inline: "nearest" }); // a cell low in the table opened below the screen
 }
 
 function closeCell(pop) {
