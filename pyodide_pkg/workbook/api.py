@@ -50,9 +50,9 @@ import sys
 from typing import Any
 
 from . import bank, chains, steps, version
-from .assignment import slip_name
 from .build_plain import plain
 from .contract import LIMIT, OPS
+from .slip_names import slip_name
 from .variants import VariantError, check_seed, fill
 from .verdict import GradingError, Verdict, fail, ok, quote
 

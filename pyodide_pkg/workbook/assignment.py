@@ -1,4 +1,4 @@
-"""Assignments: each learner's own numbers, and the names of the slips a class makes.
+"""Assignments: each learner's own numbers.
 
 An assignment link (the site's ``teach/`` page) sets exercises for a class code; a
 learner who opens it gives a name or student number once, and every Derive
@@ -23,19 +23,6 @@ True
 ('émile strasse', 'fi')
 >>> 1 <= assigned_variant("x", "y", "9.7") <= MAX_SEED
 True
-
-A wrong answer that matches a named slip says which in its verdict's
-``data.slip`` (:func:`slip_name`): the tag for the slips every answer can make
-(``sign``, ``degrees``, ``transpose``...), and for an exercise's own slips
-``slip: `` and its message with every number written as ``#``, so the same
-mistake has the same name in every variant:
-
->>> slip_name("slip", "That is the y-coordinate, 2.5 m, not x = −1.25.")
-'slip: That is the y-coordinate, # m, not x = #.'
->>> slip_name("sign", "The size is right but the sign is wrong.")
-'sign'
->>> slip_name("", "Not quite.") is None
-True
 """
 
 from __future__ import annotations
@@ -44,18 +31,9 @@ import hashlib
 import re
 import unicodedata
 
-from .contract import LIMIT
 from .variants import MAX_SEED
 
 SALT = "robotics-math-workbook/assignment/1"
-# The tags that name a mistake (contract.json "tags"): the exercise's own slips, and those every answer kind knows.
-NAMED = ("slip", "close", "radians", "degrees", "sign", "transpose", "inverse", "sine-sign", "rows-swapped",
-         "columns-swapped", "negated")
-NAME_CAP = LIMIT.slipName  # characters of a slip's name (contract.json, the page's limit too)
-# A number the variant chose; not a digit that is part of a name (θ1, atan2, e[k−1]) or an
-# entry's place (J(1,2), "the (2,2) entry"), which every variant shares.
-_NUMBER = re.compile(r"(?<![\w\[−\-])[−\-+]?\d+(?:[.,]\d+)*(?:e[−\-+]?\d+)?(?!\w)")
-_PLACE = re.compile(r"\((\d(?:,\d)*)\)")
 _SPACE = re.compile(r"\s+")
 
 
@@ -77,19 +55,3 @@ def assigned_variant(class_code: str, student: str, exercise_id: str) -> int:
     text = "\n".join((SALT, tidy(class_code), fold(student), exercise_id))
     digest = hashlib.sha256(text.encode("utf-8")).digest()
     return 1 + int.from_bytes(digest[:8], "big") % MAX_SEED
-
-
-def slip_name(tag: str, message: str) -> str | None:
-    """The stable name of the named slip a wrong answer hit (its verdict's tag and message), or None."""
-    if tag not in NAMED:
-        return None
-    if tag != "slip":
-        return tag
-    places = _PLACE.findall(message)
-    text = _NUMBER.sub("#", _PLACE.sub("(@)", message))
-    for place in places:
-        text = text.replace("(@)", f"({place})", 1)
-    text = _SPACE.sub(" ", text).strip()
-    if len(text) > NAME_CAP - 6:
-        text = text[: NAME_CAP - 7].rsplit(" ", 1)[0] + "…"
-    return f"slip: {text}"

@@ -14,7 +14,8 @@ from pathlib import Path
 import pytest
 
 from workbook import api, bank
-from workbook.assignment import MAX_SEED, NAMED, assigned_variant, fold, slip_name, tidy
+from workbook.assignment import MAX_SEED, assigned_variant, fold, tidy
+from workbook.slip_names import NAMED, slip_name
 from workbook.variants import check_seed
 
 ROOT = Path(__file__).resolve().parents[2]

@@ -22,7 +22,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (  # top first
     ("figures", "carried", "build_plain"),
     ("answer_kinds", "steps", "chains", "build_judge"),
     ("expr", "reference", "markup", "math_text", "variants", "registry", "tolerance", "number_format",
-     "verdict", "units", "contract", "run_caches", "typed_rounding", "__init__"),
+     "verdict", "units", "contract", "run_caches", "typed_rounding", "slip_names", "__init__"),
 )
 RANK = {part: depth for depth, parts in enumerate(LAYERS) for part in parts}
 
