@@ -14,7 +14,8 @@
 import { ATTR, COURSE, ROLE, RUNTIME, ownRole } from "./contract.js";
 import { initExercise } from "./exercise.js";
 import { showExerciseCard } from "./exercise-card.js";
-import { el, listPage } from "./progress-view.js";
+import { el } from "./dom.js";
+import { listPage } from "./exercise-list.js";
 import { assignedVariant, learnerKey, studentTag, tidy } from "./assignment-hash.js";
 import { addAttempt } from "./assignment-schema.js";
 import { onAttempt } from "./attempt.js";

@@ -12,7 +12,8 @@ import { groupRows } from "./class-rows.js";
 import { legend, rowElement, sortRows, tableRegion } from "./class-table.js";
 import { classStats, statsTable } from "./class-stats.js";
 import { toCSV, toGradebook } from "./class-csv.js";
-import { el, listPage } from "./progress-view.js";
+import { el } from "./dom.js";
+import { listPage } from "./exercise-list.js";
 import { download } from "./notice.js";
 import { withSandbox } from "./sandbox-client.js";
 

@@ -8,7 +8,7 @@
 // how often each step was the first wrong one. Computed an exercise at a time, giving the
 // event loop back in between (no long task, whatever the class's size).
 
-import { el } from "./progress-view.js";
+import { el } from "./dom.js";
 
 const giveWay = () => (globalThis.scheduler?.yield ? globalThis.scheduler.yield()
   : new Promise((r) => setTimeout(r, 0)));

@@ -4,7 +4,7 @@
 // (each mark a button: its box is built when pressed, so 1,000 rows stay light). The header row and the first column
 // stay in view while the table scrolls inside its own focusable region.
 
-import { el } from "./progress-view.js";
+import { el } from "./dom.js";
 
 export const MARKS = {
   verified: { symbol: "✓", text: "solved, verified" },

@@ -5,7 +5,7 @@
 
 import { ATTR } from "./contract.js";
 import { renderMath } from "./math.js";
-import { el } from "./progress-view.js";
+import { el } from "./dom.js";
 
 const pages = new Map(); // chapter address -> Promise<Document>
 

@@ -9,7 +9,7 @@
 //   script-written storage.
 
 import { ATTR, ROLE } from "./contract.js";
-import { el } from "./progress-view.js";
+import { el } from "./dom.js";
 
 const MB = 1_000_000;
 

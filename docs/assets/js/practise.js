@@ -5,7 +5,9 @@
 import { ATTR } from "./contract.js";
 import { initExercise } from "./exercise.js";
 import { showExerciseCard } from "./exercise-card.js";
-import { dueLine, el, listPage, reviewedIds } from "./progress-view.js";
+import { el } from "./dom.js";
+import { listPage, reviewedIds } from "./exercise-list.js";
+import { dueLine } from "./progress-view.js";
 import { dueIds, inQueue } from "./review.js";
 import { freshVariant } from "./variants.js";
 

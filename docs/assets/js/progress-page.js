@@ -5,7 +5,8 @@
 
 import { MAX_IMPORT_BYTES, parseImport } from "./progress.js";
 import { exportProgress } from "./notice.js";
-import { el, plural, reviewText, tally } from "./progress-view.js";
+import { el } from "./dom.js";
+import { plural, reviewText, tally } from "./progress-view.js";
 import { groupDigits } from "./number-text.js";
 
 /** A table cell: "3 of 7" (and more words) above a bar filled to value/max. */

@@ -8,7 +8,9 @@
 // (the first and each instant navigation) and is idempotent.
 
 import { progressPanel } from "./progress-page.js";
-import { MASTERY_RULE, countBars, dueLine, el, loadManifest, plural, reviewText, tally } from "./progress-view.js";
+import { el } from "./dom.js";
+import { loadManifest } from "./exercise-list.js";
+import { MASTERY_RULE, countBars, dueLine, plural, reviewText, tally } from "./progress-view.js";
 
 let listening = false;
 let current = { progress: null, siteRoot: null };

@@ -1,14 +1,10 @@
 // What the progress displays share: the counts of a set of exercises (solved, mastered, due), and
 // labelled bars that say what they count. Used by progress-ui.js (at a glance), progress-page.js
-// (the "Your progress" page) and practise.js. The exercise list lives in exercise-list.js and `el`
-// in dom.js; they are re-exported here for the modules that still import them from this one.
+// (the "Your progress" page) and practise.js. The exercise list is exercise-list.js's; `el` is dom.js's.
 
 import { el } from "./dom.js";
 import { reviewedIds } from "./exercise-list.js";
 import { MASTERED, dueIds, isMastered, isSolved, isSolvedAfterReveal, nextDue } from "./review.js";
-
-export { el } from "./dom.js";
-export { listPage, loadManifest, reviewedIds } from "./exercise-list.js";
 
 /**
  * The counts of `ids`. Solved: one variant answered before its derivation was

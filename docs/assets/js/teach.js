@@ -6,7 +6,8 @@
 
 import { assignmentHref, CLASS_CAP, isDate } from "./assignment-link.js";
 import { COURSE } from "./contract.js";
-import { el, listPage } from "./progress-view.js";
+import { el } from "./dom.js";
+import { listPage } from "./exercise-list.js";
 
 const { attr: A, field: FIELD } = COURSE;
 const LOCAL_HOSTS = new Set(["localhost", "127.0.0.1", "[::1]"]);
