@@ -225,8 +225,12 @@ def test_the_grader_is_named_and_a_changed_mark_is_marked(page, site_url):
     assert page.locator("[data-wb-grader]").text_content() == f"Re-graded here by the workbook's grader version {v['version']}, bank {v['bank']}."
     flags = page.locator("tr[data-wb-student='fixed'] th")
     assert flags.get_attribute("data-wb-flags") == "other-grader"
+    assert "†" in flags.locator("button").text_content()
     flags.locator("button").click()
     assert f"by grader 0.0.9, bank 000000000000; re-graded here by {v['version']}, bank {v['bank']}" in flags.text_content()
+    # One meaning per symbol in the key (Δ once meant both "changed since hand-in" and "another grader").
+    key = page.evaluate("() => [...document.querySelectorAll('.wb-class-legend li > [aria-hidden]')].map(s => s.textContent)")
+    assert len(key) >= 10 and len(key) == len(set(key)), key
     text = page.locator("article").text_content()
     assert "not re-run here" not in text and "run again here" in text
 

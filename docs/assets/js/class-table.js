@@ -20,7 +20,7 @@ function symbol(text, className = "wb-class-symbol") {
   return span;
 }
 const FLAG_SYMBOL = { duplicate: "⊕", "same-file-name": "≡", "other-class": "≠", progress: "⤓", late: "!",
-  "other-grader": "Δ" };
+  "other-grader": "†" }; // not Δ, which marks a cell changed since hand-in
 
 /** The table's cell text and its state, for a learner's exercise. */
 export function cellState(c) {
