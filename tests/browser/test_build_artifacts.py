@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import ast
 import base64
+import dis
 import gzip
 import hashlib
 import importlib.util
@@ -137,10 +138,28 @@ def test_the_sandbox_holds_no_grading_package():
     assert all("workbook" not in entry["imports"] for entry in sandbox_lock["packages"].values())
 
 
+def _code_objects(code):
+    yield code
+    for const in code.co_consts:
+        if hasattr(const, "co_code"):
+            yield from _code_objects(const)
+
+
+def _program(code) -> list:
+    """Every instruction of ``code`` and of the code inside it: operation and argument (a code object's by its
+    name and program), whatever the constants' order."""
+    def argument(value):
+        if hasattr(value, "co_code"):
+            return _program(value)
+        return sorted(map(repr, value)) if isinstance(value, frozenset) else repr(value)  # a set's order is the process's
+    return [(code.co_name, i.opname, argument(i.argval)) for i in dis.get_instructions(code)]
+
+
 def test_the_compiled_core_is_the_core_compiled():
     """A plain start on a fast enough link imports the core compiled (scripts/split_stdlib.py): every
     module of the core and nothing else, each compiled by Python 3.12 (Pyodide's) from the core's own
-    source, naming the source's place; every other file (the rest's index, the package's data) as is.
+    source, naming the source's place, with line numbers and without column positions (a fifth of its
+    bytes: ``-X no_debug_ranges``); every other file (the rest's index, the package's data) as is.
     The offline copy leaves it out: a stored site starts from its snapshot, with the sources."""
     assert sys.version_info[:2] == (3, 12)  # the venv's, as the build's: the magic number below is 3.12's
     with zipfile.ZipFile(VENDOR / "python_stdlib.core.zip") as core, \
@@ -156,6 +175,10 @@ def test_the_compiled_core_is_the_core_compiled():
             assert pyc[:4] == importlib.util.MAGIC_NUMBER, name
             code = marshal.loads(pyc[16:])
             assert code.co_filename == f"/lib/python312.zip/{name}", name
-            assert code.co_code == compile(core.read(name), code.co_filename, "exec", dont_inherit=True).co_code, name
+            source = compile(core.read(name), code.co_filename, "exec", dont_inherit=True)
+            assert _program(code) == _program(source), name  # (equal code objects may share one constant)
+            positions = [p for c in _code_objects(code) for p in c.co_positions()]
+            assert all(p[2] is None and p[3] is None for p in positions), name  # no columns
+            assert not positions or any(p[0] is not None for p in positions), name  # lines kept
     manifest = (SITE / "sw.js").read_text()
     assert "python_stdlib.core.compiled.zip" not in manifest and '"assets/vendor/pyodide/python_stdlib.core.zip"' in manifest

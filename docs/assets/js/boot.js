@@ -166,14 +166,16 @@ function checkSnapshot(bytes) {
 // A plain start (the snapshot skipped on a slow first visit) imports the core,
 // and compiling its sources was most of that start: in Node, booting and
 // importing took 2.7 s from the sources and 1.2 s compiled; at 10 Mbps ready
-// came 0.5 s sooner compiled although the compiled core is 1.1 MB larger. On
+// came 0.5 s sooner compiled although the compiled core was 1.1 MB larger (0.7 MB
+// since it keeps no column positions: scripts/split_stdlib.py). On
 // a slower link (a phone's) those bytes cost more than they save: there, and
 // for a snapshot start (which imports nothing, and whose zip importer knows the
 // sources' file), the sources. Pyodide asks for the zip as it starts but waits
 // for it only once Python starts, after the snapshot is decided: its request is
 // held until then (`choose`), or until the snapshot is found stored.
-// Bytes per ms of pyodide.asm.js's share of the link (335 at 10 Mbps; the break-even is near 6 Mbps).
-const COMPILED_MIN_SPEED = 200;
+// Bytes per ms of pyodide.asm.js's share of the link (335 at 10 Mbps). The 0.7 MB more cost the 1.5 s
+// they save on a link near 3.6 Mbps (a share near 120; it was 6 Mbps for 1.1 MB).
+const COMPILED_MIN_SPEED = 120;
 
 function coreChoice(sourceURL, compiledURL, meter) {
   let choose;
