@@ -54,6 +54,8 @@ PACKAGES = (ROOT / "pyodide_pkg" / "workbook", ROOT / "pyodide_pkg" / "workbook_
 OUT = ROOT / "docs" / "assets" / "vendor" / "pyodide"
 CORE, REST = "python_stdlib.core.zip", "python_stdlib.rest.zip"
 COMPILED = "python_stdlib.core.compiled.zip"
+CHAPTER_COMPILED = "python_stdlib.core.compiled.ch{}.zip"  # chapter N's page: its part of the package only
+PACKAGE_INDEX = "package-rest.txt"  # in a chapter's compiled core: the package's modules it leaves out
 ZIP_PATH = "/lib/python312.zip"  # where Pyodide 0.27 puts the standard library's zip (on sys.path)
 INDEX = "stdlib-rest.txt"  # workbook_sandbox/lazy_stdlib.py reads it
 
@@ -135,6 +137,37 @@ def package_files() -> list[tuple[str, bytes]]:
             for p in sorted(package.rglob("*")) if p.suffix in (".py", ".json") and "__pycache__" not in p.parts]
 
 
+def _package_module(name: str) -> str | None:
+    """The package's module an entry of the compiled core is (``workbook/bank/ch0_x.pyc``), else None."""
+    module = _module(_source_name(name))
+    return module if module and module.split(".")[0] in ("workbook", "workbook_sandbox") else None
+
+
+def chapter_cores(compiled_entries: list[tuple[str, bytes]], out: Path) -> dict[int, int]:
+    """Write chapter N's compiled core for every chapter of the bank: the compiled core without the
+    package's modules its page does not use (scripts/chapter_modules.py), whose names it lists in
+    PACKAGE_INDEX. Returns each one's size."""
+    import chapter_modules  # scripts/, beside this file
+
+    package = {m for m in map(_package_module, (n for n, _ in compiled_entries)) if m}
+    heads = {m.split(".")[2].partition("_")[0][2:] for m in package if m.startswith("workbook.bank.ch")}
+    numbers = sorted(int(h) for h in heads if h.isdigit())  # the bank's chN_* modules
+    old = set(out.glob(CHAPTER_COMPILED.format("*")))
+    sizes: dict[int, int] = {}
+    for n in numbers:
+        keep = chapter_modules.chapter_modules(n, package)
+        left_out = sorted(package - keep)
+        entries = [(name, data) for name, data in compiled_entries if _package_module(name) in keep | {None}]
+        entries.append((PACKAGE_INDEX, ("\n".join(left_out) + "\n").encode()))
+        path = out / CHAPTER_COMPILED.format(n)
+        _write(path, entries)
+        old.discard(path)
+        sizes[n] = path.stat().st_size
+    for stale in old:
+        stale.unlink()
+    return sizes
+
+
 def split(source: Path, used: list[str], out: Path) -> dict:
     with zipfile.ZipFile(source) as z:
         files = {i.filename: z.read(i) for i in z.infolist() if not i.is_dir()}
@@ -146,10 +179,13 @@ def split(source: Path, used: list[str], out: Path) -> dict:
     core_entries.append((INDEX, ("\n".join(rest_modules) + "\n").encode()))
     out.mkdir(parents=True, exist_ok=True)
     _write(out / CORE, core_entries)
-    _write(out / COMPILED, compiled_without_columns(core_entries))
+    compiled_entries = compiled_without_columns(core_entries)
+    _write(out / COMPILED, compiled_entries)
+    chapters = chapter_cores(compiled_entries, out)
     _write(out / REST, [(n, files[n]) for n in rest])
     return {"core_files": len(core_entries), "rest_files": len(rest), "core_bytes": (out / CORE).stat().st_size,
-            "compiled_bytes": (out / COMPILED).stat().st_size, "rest_bytes": (out / REST).stat().st_size}
+            "compiled_bytes": (out / COMPILED).stat().st_size, "rest_bytes": (out / REST).stat().st_size,
+            "chapter_bytes": chapters}
 
 
 def main() -> None:
@@ -163,7 +199,9 @@ def main() -> None:
     info = split(SOURCE, json.loads(USED.read_text()), OUT)
     print(f"stdlib: core {info['core_files']} files, {info['core_bytes'] / 1e6:.2f} MB"
           f" (without docstrings and comments; compiled {info['compiled_bytes'] / 1e6:.2f} MB); "
-          f"rest {info['rest_files']} files, {info['rest_bytes'] / 1e6:.2f} MB (fetched on first use)")
+          f"rest {info['rest_files']} files, {info['rest_bytes'] / 1e6:.2f} MB (fetched on first use); "
+          f"compiled per chapter {min(info['chapter_bytes'].values()) / 1e6:.2f}-"
+          f"{max(info['chapter_bytes'].values()) / 1e6:.2f} MB")
 
 
 if __name__ == "__main__":

@@ -22,8 +22,8 @@ and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
 
 Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
 and so are the search's word splitters and stemmers for other languages when the
-search is in English only (it then never loads them). So is the compiled core of
-the standard library: only a first visit over a link that is not fast takes it
+search is in English only (it then never loads them). So are the compiled cores of
+the standard library (the whole package's and each chapter's): only a first visit over a link that is not fast takes it
 (docs/assets/js/boot.js); a stored site starts from its snapshot, and a start
 without one takes the sources. ``sitemap.xml`` is left
 out too: it holds absolute URLs that hosts and test servers rewrite, so the
@@ -40,6 +40,7 @@ import hashlib
 import json
 import logging
 import mimetypes
+import re
 from pathlib import Path
 
 log = logging.getLogger("mkdocs.hooks.offline")
@@ -48,6 +49,7 @@ TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map",)
 SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml", "assets/vendor/pyodide/python_stdlib.core.compiled.zip"}
+COMPILED_CORES = re.compile(r"assets/vendor/pyodide/python_stdlib\.core\.compiled\.ch\d+\.zip")  # each chapter's
 INFLATED = ".snapshot.gz"  # stored inflated by the service worker
 LATER = ("assets/vendor/pyodide/sandbox.snapshot.gz",)  # kept when first fetched, not with the copy
 LUNR_LANGUAGES = "assets/javascripts/lunr/"
@@ -104,7 +106,8 @@ def precache_list(site: Path, english_only: bool = True, wire: list[int] | None 
     out = []
     for path in sorted(site.rglob("*")):
         rel = path.relative_to(site).as_posix()
-        if not path.is_file() or rel == OUTPUT or rel.endswith(SKIP_SUFFIXES) or rel in SKIP_FILES:
+        if not path.is_file() or rel == OUTPUT or rel.endswith(SKIP_SUFFIXES) or rel in SKIP_FILES \
+                or COMPILED_CORES.fullmatch(rel):
             continue
         if english_only and rel.startswith(LUNR_LANGUAGES):
             continue

@@ -31,6 +31,7 @@ from __future__ import annotations
 import functools
 import importlib
 import pkgutil
+import sys
 from dataclasses import dataclass
 from typing import Any
 
@@ -43,9 +44,16 @@ def _found(package: str, helpers: tuple[str, ...], prefix: str) -> tuple[str, ..
     """The modules of ``package`` (not its sub-packages or ``helpers``) named with ``prefix``, as names,
     sorted. Looked up once: a package's files do not change while it runs, and in the page every
     lookup lists a folder of the zipped library (a judge of a Build run asked twice)."""
-    found = pkgutil.iter_modules(importlib.import_module(package).__path__)
-    return tuple(sorted(info.name.replace("_", "-") for info in found
-                        if not info.ispkg and info.name not in helpers and info.name.startswith(prefix)))
+    found = {info.name for info in pkgutil.iter_modules(importlib.import_module(package).__path__) if not info.ispkg}
+    found |= _loaded_on_first_use(package)
+    return tuple(sorted(name.replace("_", "-") for name in found if name not in helpers and name.startswith(prefix)))
+
+
+def _loaded_on_first_use(package: str) -> set[str]:
+    """The modules (not packages) of ``package`` that a finder on ``sys.meta_path`` says it imports on first
+    use (``modules_of``): in the page, the parts of the package a chapter's start leaves out
+    (workbook_sandbox/lazy_stdlib.py). None natively."""
+    return {name for finder in sys.meta_path for name in getattr(finder, "modules_of", lambda _package: ())(package)}
 
 
 @dataclass(frozen=True)

@@ -16,6 +16,12 @@ sandbox writes it there itself ahead of a Build run whose imports need it
 download; the finder's own fetch is for imports no one saw coming
 (``__import__``).
 
+A chapter's page may start the grader from a compiled core that holds only its
+own part of the grading package (``scripts/split_stdlib.py``); the names of the
+package's other modules are listed in that core, and :func:`install_package_rest`
+puts a second finder for them, which mounts the sources' core (the whole package)
+the same way on first use.
+
 Natively nothing is installed; the tests drive the finder with a fake fetch.
 """
 
@@ -28,6 +34,8 @@ from collections.abc import Callable, Iterable
 
 INDEX = "stdlib-rest.txt"  # in the core zip: one module name per line
 REST = "/lib/python_stdlib.rest.zip"
+PACKAGE_INDEX = "package-rest.txt"  # in a chapter's compiled core: the grading package's modules it leaves out
+SOURCES = "/lib/python_stdlib.core.zip"  # where the sources' core (the whole package) is written
 
 
 def _fetch_sync(url: str) -> bytes:
@@ -46,6 +54,8 @@ def _fetch_sync(url: str) -> bytes:
 class RestOfStdlib:
     """A meta path finder for the modules in the rest of the standard library."""
 
+    what = "the part of Python's standard library that is loaded on first use"
+
     def __init__(self, names: set[str], url: str | None, fetch: Callable[[str], bytes] = _fetch_sync,
                  dest: str = REST) -> None:
         self.names, self.url, self.fetch, self.dest = names, url, fetch, dest
@@ -63,13 +73,17 @@ class RestOfStdlib:
             try:
                 data = self.fetch(self.url)
             except Exception as err:  # offline without the stored copy, a server error, ...
-                raise ImportError(f"this module is in the part of Python's standard library that is loaded "
-                                  f"on first use, and it could not be loaded ({err})") from None
+                raise ImportError(f"this module is in {self.what}, and it could not be loaded ({err})") from None
             with open(self.dest, "wb") as f:
                 f.write(data.to_bytes() if hasattr(data, "to_bytes") else data)  # a JS typed array, in the sandbox
         sys.path.append(self.dest)
         self.mounted = True
         importlib.invalidate_caches()
+
+    def modules_of(self, package: str) -> list[str]:
+        """The modules (not packages) of ``package`` this finder imports, by their own names."""
+        return [name.rpartition(".")[2] for name in self.names if name.rpartition(".")[0] == package
+                and not any(other.startswith(name + ".") for other in self.names)]
 
     def find_spec(self, fullname: str, path=None, target=None):
         if fullname not in self.names:
@@ -89,19 +103,26 @@ class RestOfStdlib:
         return importlib.machinery.PathFinder.find_spec(fullname, search, target)
 
 
-def _core_index() -> set[str]:
+class RestOfPackage(RestOfStdlib):
+    """A meta path finder for the grading package's modules that a chapter's compiled core leaves out."""
+
+    what = "the part of the grader that is loaded on first use"
+
+
+def _core_index(index: str = INDEX) -> set[str]:
+    """The names listed in ``index`` of the core (the first zip on ``sys.path``)."""
     for entry in sys.path:
         if entry.endswith(".zip"):
             try:
                 with zipfile.ZipFile(entry) as z:
-                    return set(z.read(INDEX).decode("utf-8").split())
+                    return set(z.read(index).decode("utf-8").split())
             except (OSError, KeyError, zipfile.BadZipFile):
                 continue
     return set()
 
 
 def finder() -> RestOfStdlib | None:
-    return next((f for f in sys.meta_path if isinstance(f, RestOfStdlib)), None)
+    return next((f for f in sys.meta_path if type(f) is RestOfStdlib), None)
 
 
 def install(url: str, names: set[str] | None = None, fetch: Callable[[str], bytes] = _fetch_sync) -> RestOfStdlib:
@@ -112,6 +133,17 @@ def install(url: str, names: set[str] | None = None, fetch: Callable[[str], byte
         sys.meta_path.append(found)
     found.url = url
     return found
+
+
+def install_package_rest(url: str, fetch: Callable[[str], bytes] = _fetch_sync) -> bool:
+    """When the core leaves out modules of the grading package (it lists them), add a finder that
+    imports them from the sources' core at ``url``, fetched on first use. Whether it did."""
+    names = _core_index(PACKAGE_INDEX)
+    if not names:
+        return False
+    if not any(isinstance(f, RestOfPackage) for f in sys.meta_path):
+        sys.meta_path.append(RestOfPackage(names, url, fetch, dest=SOURCES))
+    return True
 
 
 def needs(names: Iterable[str], packages: Iterable[str] = ()) -> bool:

@@ -182,3 +182,32 @@ def test_the_compiled_core_is_the_core_compiled():
             assert not positions or any(p[0] is not None for p in positions), name  # lines kept
     manifest = (SITE / "sw.js").read_text()
     assert "python_stdlib.core.compiled.zip" not in manifest and '"assets/vendor/pyodide/python_stdlib.core.zip"' in manifest
+
+
+def test_each_chapter_s_compiled_core_is_the_compiled_core_less_what_it_lists():
+    """Chapter N's compiled core (scripts/split_stdlib.py, scripts/chapter_modules.py) is the compiled core
+    without some modules of the grading package, and lists exactly those (the sources' core holds them:
+    the page imports them from there on first use); it keeps the chapter's own bank modules and the
+    package's modules outside the bank, the figures and the references. Each chapter's page names its
+    own (docs/hooks/exercises.py), and the offline copy holds none of them."""
+    manifest = (SITE / "sw.js").read_text()
+    with zipfile.ZipFile(VENDOR / "python_stdlib.core.compiled.zip") as z:
+        full = {n: z.read(n) for n in z.namelist()}
+    with zipfile.ZipFile(VENDOR / "python_stdlib.core.zip") as z:
+        sources = set(z.namelist())
+    chapters = sorted(SITE.glob("chapters/[0-9][0-9]-*/index.html"))
+    assert len(chapters) >= 14
+    for page in chapters:
+        n = int(page.parent.name[:2])
+        name = f"python_stdlib.core.compiled.ch{n}.zip"
+        assert f'<meta name="wb-grader-core" content="{name}">' in page.read_text(), page
+        assert name not in manifest
+        with zipfile.ZipFile(VENDOR / name) as z:
+            own = {m: z.read(m) for m in z.namelist()}
+        left_out = own.pop("package-rest.txt").decode().split()
+        assert own.items() <= full.items(), name  # the same bytes, fewer files
+        gone = {m[:-4].replace("/__init__", "").replace("/", ".") for m in set(full) - set(own)}
+        assert gone == set(left_out) and gone, name
+        assert all(m.startswith(("workbook.bank.", "workbook.figures.", "workbook.reference.")) for m in gone), name
+        assert not any(m.startswith(f"workbook.bank.ch{n}_") for m in gone), name
+        assert all(m.replace(".", "/") + ".py" in sources for m in gone), name

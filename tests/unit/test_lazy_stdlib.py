@@ -90,3 +90,45 @@ def test_a_typed_array_from_the_page_is_written_as_bytes(rest):
     import wbtest_rest_mod
 
     assert wbtest_rest_mod.VALUE == 42
+
+
+def test_a_chapter_core_lists_the_package_s_other_modules_and_they_import_and_register(tmp_path, monkeypatch):
+    """A chapter's compiled core leaves out the grading package's other modules and lists them
+    (scripts/split_stdlib.py); install_package_rest puts a finder for them, which fetches the sources'
+    core on first use. The registries see those modules before they are fetched (registry.py asks the
+    finder, ``modules_of``), so another chapter's exercise is known, and grades, from a chapter's page."""
+    from workbook import registry
+
+    core = tmp_path / "core.zip"
+    with zipfile.ZipFile(core, "w") as z:
+        z.writestr("wbtest_pkg/__init__.py", "")
+        z.writestr("wbtest_pkg/ch0_here.py", "EXERCISES = ('ch0_here',)\n")
+        z.writestr(lazy_stdlib.PACKAGE_INDEX, "wbtest_pkg.ch5_there\nwbtest_pkg.ch9_far\n")
+    sources = io.BytesIO()
+    with zipfile.ZipFile(sources, "w") as z:
+        z.writestr("wbtest_pkg/__init__.py", "")
+        for name in ("ch0_here", "ch5_there", "ch9_far"):
+            z.writestr(f"wbtest_pkg/{name}.py", f"EXERCISES = ({name!r},)\n")
+    calls = []
+    monkeypatch.setattr(sys, "path", [str(core), *sys.path])
+    monkeypatch.setattr(sys, "meta_path", list(sys.meta_path))
+    monkeypatch.setattr(lazy_stdlib, "SOURCES", str(tmp_path / "sources.zip"))
+    try:
+        assert lazy_stdlib.install_package_rest("https://example.invalid/core.zip",
+                                                fetch=lambda url: calls.append(url) or sources.getvalue())
+        assert lazy_stdlib.finder() is None  # the standard library's finder is another one
+        chapters = registry.Registry("wbtest_pkg", "EXERCISES", "chapter module", prefix="ch", own="")
+        assert chapters.names() == ["ch0-here", "ch5-there", "ch9-far"] and calls == []
+        assert chapters.get("ch0-here") == ("ch0_here",) and calls == []
+        assert chapters.get("ch5-there") == ("ch5_there",) and chapters.get("ch9-far") == ("ch9_far",)
+        assert calls == ["https://example.invalid/core.zip"]  # once
+    finally:
+        for name in [m for m in sys.modules if m.split(".")[0] == "wbtest_pkg"]:
+            sys.modules.pop(name)
+        registry._found.cache_clear()
+
+
+def test_a_core_that_leaves_nothing_out_installs_no_package_finder(monkeypatch):
+    monkeypatch.setattr(sys, "meta_path", list(sys.meta_path))
+    assert not lazy_stdlib.install_package_rest("https://example.invalid/core.zip")
+    assert not any(isinstance(f, lazy_stdlib.RestOfPackage) for f in sys.meta_path)

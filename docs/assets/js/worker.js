@@ -24,7 +24,12 @@ let lazyStdlib = null; // workbook_sandbox.lazy_stdlib
 // the runtime files, then Python's start) goes to the page as it happens.
 
 const STDLIB_CORE = indexURL + "python_stdlib.core.zip";
-const STDLIB_CORE_COMPILED = indexURL + "python_stdlib.core.compiled.zip"; // for a plain start on a fast enough link
+const STDLIB_CORE_COMPILED = "python_stdlib.core.compiled.zip"; // for a plain start on a fast enough link
+// A chapter's page names its own compiled core as this worker's name (docs/overrides/main.html): the
+// same, with only that chapter's part of the grading package; the package's other modules then come
+// from the sources' core on first use (lazy_stdlib.py).
+const CHAPTER_CORE = /^python_stdlib\.core\.compiled\.ch\d+\.zip$/;
+const chapterCore = CHAPTER_CORE.test(self.name) ? self.name : null;
 const STDLIB_REST = indexURL + "python_stdlib.rest.zip";
 const SNAPSHOT = indexURL + "workbook.snapshot.gz";
 
@@ -46,12 +51,14 @@ const answer = (request) => JSON.parse(handle(JSON.stringify(request)));
 // ---- Requests ------------------------------------------------------------------
 const ready = (async () => {
   const t0 = performance.now();
-  const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE, compiledStdLibURL: STDLIB_CORE_COMPILED,
-    snapshotURL: SNAPSHOT, onProgress: reportBoot });
+  const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE,
+    compiledStdLibURL: () => indexURL + (chapterCore ?? STDLIB_CORE_COMPILED), snapshotURL: SNAPSHOT,
+    onProgress: reportBoot });
   pyodide = started.py;
   started.step(BOOT_STEP.import); // the grading package and this page's exercises
   lazyStdlib = pyodide.pyimport("workbook_sandbox.lazy_stdlib");
   lazyStdlib.install(STDLIB_REST).destroy();
+  lazyStdlib.install_package_rest(STDLIB_CORE);
   handle = pyodide.pyimport("workbook.api").handle;
   mark("handle");
   const api = pyodide.pyimport("workbook.api");

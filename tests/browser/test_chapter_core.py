@@ -1,0 +1,53 @@
+"""A chapter's page starts its grader with that chapter's part of the grading package.
+
+On a plain start (a first visit over a link where the snapshot is not worth it), the grader takes
+the standard library's core compiled (scripts/split_stdlib.py). A chapter's page names its own
+compiled core (docs/overrides/main.html, the worker's name): the same core with only the modules
+of the package that the chapter's requests use (scripts/chapter_modules.py), the names of the
+others listed in it. A request that needs one of those others (an exercise of another chapter, as
+the practice and class pages send) still gets its answer: the first such import fetches the
+sources' core once and imports from it (workbook_sandbox/lazy_stdlib.py); later ones fetch nothing.
+"""
+
+from __future__ import annotations
+
+from helpers import CHAPTERS, wait_runtime
+from test_stdlib_on_demand import requests_for
+
+FULL = "python_stdlib.core.compiled.zip"
+CHAPTER_1 = "python_stdlib.core.compiled.ch1.zip"
+SOURCES = "python_stdlib.core.zip"
+LONG = 180_000
+
+
+def grade(page, exercise: str, answer: str) -> dict:
+    return page.evaluate("([e, a]) => workbook.runtime.request({op: 'grade', exercise: e, answer: a})",
+                         [exercise, answer])
+
+
+def test_a_chapter_starts_with_its_own_part_and_imports_the_rest_on_first_use(browser, slow_site):
+    context = browser.new_context(service_workers="block")  # the worker's own requests only
+    page = context.new_page()
+    try:
+        full, own, sources = (requests_for(page, name) for name in (FULL, CHAPTER_1, SOURCES))
+        page.goto(slow_site.url + CHAPTERS[1])
+        wait_runtime(page, timeout=LONG)
+        stages = page.evaluate("workbook.runtime.startStages")
+        assert stages["snapshot"] == "skipped: a slow link" and stages["stdlib"] == "compiled", stages
+        assert (len(own), full, sources) == (1, [], []), (own, full, sources)
+
+        # The chapter's own exercises grade from its part: nothing more is fetched.
+        mine = grade(page, "1.1", "1")
+        assert mine["ok"] and mine["value"]["status"] in ("correct", "incorrect"), mine
+        assert sources == []
+
+        # Another chapter's exercise: its module is not in chapter 1's core; the sources' core is
+        # fetched once, and the verdict is the one the whole package gives.
+        other = grade(page, "5.1", "1")
+        assert other["ok"] and other["value"]["status"] in ("correct", "incorrect"), other
+        assert len(sources) == 1, sources
+        again = grade(page, "9.2", "1")
+        assert again["ok"], again
+        assert len(sources) == 1 and full == [], (sources, full)
+    finally:
+        context.close()
