@@ -228,7 +228,8 @@ def components() -> list[Component]:
 
 
 # ---- The workbook's own files --------------------------------------------------------------
-GENERATED = ("sitemap.xml", "sitemap.xml.gz", "sw.js", "search/search_index.json", "assets/exercises.json",
+GENERATED = ("sitemap.xml", "sitemap.xml.gz", "sw.js", "search/search_index.json", "search/search_index.docs.json",
+             "assets/exercises.json",
              "404.html", "notices/index.html", "assets/vendor/pyodide/robotics_workbook-*.whl",
              "assets/dist/*", "assets/dist/chunks/*",
              "manifest.webmanifest", "assets/icons/*")  # the app (docs/hooks/app.py: icons drawn in code)

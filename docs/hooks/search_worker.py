@@ -9,6 +9,12 @@ theme's own worker file named after the ``#``. That worker holds the index until
 the page says search is wanted (``docs/assets/js/search-start.js``), then loads
 the theme's worker and hands it on.
 
+The theme's page also fetches the index as it loads (97 kB gzipped, more than
+any of the page's own files), so the index's documents move to
+``search/search_index.docs.json`` and ``search/search_index.json`` keeps only its
+configuration: the page fetches those few bytes, and the waiting worker fetches
+the documents when search is wanted, and puts them in the index it hands on.
+
 The build fails (PluginError) if a page's configuration names no search worker,
 or another one than the theme's: the swap would otherwise be silently lost.
 """
@@ -17,12 +23,15 @@ from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
 from mkdocs.exceptions import PluginError
 
 CONFIG = re.compile(r'(<script id="__config" type="application/json">)(.*?)(</script>)', re.S)
 THEME_WORKER = re.compile(r"^(?P<base>.*)assets/javascripts/workers/(?P<name>search\.[0-9a-f]+\.min\.js)$")
 OURS = "assets/dist/search-worker.js"
+INDEX = "search/search_index.json"  # the theme's page fetches it as it loads
+DOCS = "search/search_index.docs.json"  # search-worker.js fetches it when search is wanted
 
 
 def searched_later(html: str, where: str) -> str:
@@ -49,3 +58,16 @@ def on_post_page(output, page, config, **kwargs):
 def on_post_template(output_content, template_name, config, **kwargs):
     """The 404 page, rendered without a ``page``, has the theme's configuration too."""
     return searched_later(output_content, template_name) if template_name.endswith(".html") else output_content
+
+
+def on_post_build(config, **kwargs):
+    """Move the index's documents to DOCS, leaving the theme's page an index without them."""
+    index = Path(config["site_dir"]) / INDEX
+    if not index.is_file():
+        raise PluginError(f"no {INDEX} to split: is the search plugin on, and before this hook?")
+    data = json.loads(index.read_text(encoding="utf-8"))
+    if not isinstance(data.get("docs"), list):
+        raise PluginError(f"{INDEX} has no list of documents")
+    (index.parent / Path(DOCS).name).write_text(json.dumps(data["docs"], ensure_ascii=False, separators=(",", ":")),
+                                                encoding="utf-8")
+    index.write_text(json.dumps({**data, "docs": []}, separators=(",", ":")), encoding="utf-8")

@@ -80,7 +80,8 @@ def test_everything_works_offline_after_one_visit(page, context, site_url):
     wait_offline_ready(page)
     files = precache_list((SITE / "sw.js").read_text())
     urls = [u for u, *_ in files]
-    for needed in ("./", "chapters/00-rotations-2d/", "progress/", "search/search_index.json", "assets/exercises.json",
+    for needed in ("./", "chapters/00-rotations-2d/", "progress/", "search/search_index.json",
+                   "search/search_index.docs.json", "assets/exercises.json",
                    "assets/vendor/pyodide/pyodide.asm.wasm", "assets/vendor/pyodide/pyodide-lock.json",
                    "assets/vendor/pyodide/workbook.snapshot.gz", "assets/vendor/pyodide/python_stdlib.core.zip",
                    "assets/vendor/pyodide/python_stdlib.rest.zip",

@@ -48,12 +48,25 @@ def test_the_index_is_built_a_while_after_ready_without_the_learner_asking(page,
 
 
 def test_opening_the_search_builds_it_at_once_even_before_the_grader_is_ready(page, site_url):
+    """The page fetches an index without its documents (a few hundred bytes, not 97 kB gzipped); the
+    documents come when the search is opened, once, and a query typed while they come is answered."""
     page.add_init_script(RECORD)
     page.route("**/vendor/pyodide/**", lambda route: None)  # the grader's files never come: it never gets ready
+    fetched: dict[str, list[int]] = {"search_index.json": [], "search_index.docs.json": []}
+
+    def note(response):
+        name = response.url.rsplit("/", 1)[-1]
+        if name in fetched:
+            fetched[name].append(len(response.body()))
+    page.context.on("response", note)
     page.goto(site_url + CHAPTERS[0])
     expect(page.locator(META)).to_have_text(re.compile("Initializing search"))
+    page.wait_for_timeout(500)
+    assert len(fetched["search_index.json"]) == 1 and fetched["search_index.json"][0] < 1_000, fetched
+    assert fetched["search_index.docs.json"] == [], fetched
     page.locator(".md-search__input").click()
     page.keyboard.type("quaternion")
     expect(page.locator(".md-search-result__item").first).to_be_visible(timeout=30_000)
+    assert len(fetched["search_index.docs.json"]) == 1 and fetched["search_index.docs.json"][0] > 100_000, fetched
     assert page.evaluate("() => document.documentElement.getAttribute('data-workbook-runtime')") == "loading"
     assert "wanted" in [m["said"] for m in page.evaluate("() => window.__searchSaid")]

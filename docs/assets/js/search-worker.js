@@ -18,23 +18,44 @@ const name = decodeURIComponent(self.location.hash.slice(1));
 let setup = null;
 let wanted = typeof BroadcastChannel === "undefined"; // no way to be told: build at once, as the theme does
 let started = false;
+const later = []; // the page's other messages (queries) before the theme's worker is loaded, in order
 const channel = wanted ? null : new BroadcastChannel(SEARCH_CHANNEL);
 
 function hold(event) {
   if (event.data?.type === SETUP) {
     setup = event.data;
     start();
+  } else if (started) {
+    later.push(event.data); // while the documents are fetched
   }
 }
 
-function start() {
+// The page's index has no documents (docs/hooks/search_worker.py moved them): they are fetched
+// here, once search is wanted. If they cannot be (offline, and the site was never stored), the
+// theme gets the index without them and finds nothing, as it would with no index.
+const DOCS = new URL("../../search/search_index.docs.json", self.location.href).href;
+
+async function documents() {
+  try {
+    const response = await fetch(DOCS);
+    if (!response.ok) return [];
+    const docs = await response.json();
+    return Array.isArray(docs) ? docs : [];
+  } catch {
+    return [];
+  }
+}
+
+async function start() {
   if (started || !wanted || !setup) return;
   started = true;
   channel?.close();
-  self.removeEventListener("message", hold);
   if (!THEME_WORKER.test(name)) throw new Error(`search: not the theme's search worker: ${name}`);
+  const index = setup.data;
+  if (index && Array.isArray(index.docs) && index.docs.length === 0) index.docs = await documents();
+  self.removeEventListener("message", hold);
   importScripts(new URL(`../javascripts/workers/${name}`, self.location.href).href);
-  self.dispatchEvent(new MessageEvent("message", { data: setup }));
+  for (const data of [setup, ...later.splice(0)]) self.dispatchEvent(new MessageEvent("message", { data }));
 }
 
 self.addEventListener("message", hold);
