@@ -57,6 +57,10 @@ for kind, ex in sorted(kinds.items()):
     reply = json.loads(api.handle(json.dumps(request)))
     assert reply["ok"], reply
 assert json.loads(api.handle(json.dumps({"op": "version"})))["ok"]  # the sources' hash, worked out once (workbook/version.py)
+# The finder of the rest of the standard library, installed here so that a restore reads no zip for it:
+# the worker gives it its address (worker.js).
+from workbook_sandbox import lazy_stdlib
+lazy_stdlib.install(None)
 # Leave no trace of this machine or this script: loadPyodide puts "" back on
 # sys.path after a restore, and Node's "_" names the build script.
 import gc, os, sys

@@ -125,8 +125,10 @@ def finder() -> RestOfStdlib | None:
     return next((f for f in sys.meta_path if type(f) is RestOfStdlib), None)
 
 
-def install(url: str, names: set[str] | None = None, fetch: Callable[[str], bytes] = _fetch_sync) -> RestOfStdlib:
-    """Add the finder (once; a second call updates the address). Returns it."""
+def install(url: str | None, names: set[str] | None = None,
+            fetch: Callable[[str], bytes] = _fetch_sync) -> RestOfStdlib:
+    """Add the finder (once; a second call updates the address: the snapshot has it installed with none).
+    Returns it."""
     found = finder()
     if found is None:
         found = RestOfStdlib(_core_index() if names is None else names, url, fetch)

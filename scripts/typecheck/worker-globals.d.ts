@@ -1,6 +1,8 @@
 // What the workers find in their global scope without importing it (declarations only).
 /** File name -> bytes of the runtime's files, defined by the bundler (scripts/bundle.mjs). */
 declare const BOOT_SIZES: Record<string, number> | undefined;
+/** File name -> "sha256-..." of the bytes the service worker stores for it, defined by the bundler (scripts/bundle.mjs). */
+declare const STORED_INTEGRITY: Record<string, string> | undefined;
 /** Pyodide's loader, from pyodide.js (loaded with importScripts). */
 declare function loadPyodide(options: object): Promise<any>;
 interface WorkerGlobalScope {

@@ -173,3 +173,52 @@ def test_a_file_planted_into_cache_storage_is_never_served(browser, site_url):
         expect(page.locator("body")).to_contain_text("not stored in this browser, or its stored copy was damaged")
     finally:
         context.close()
+
+
+PLANT_SNAPSHOT = """async ([url, other]) => {
+  // A real snapshot, of another interpreter (the sandbox's: no grading package), stored as the
+  // grader's would be (inflated), in every cache that holds the grader's.
+  const inflated = (await fetch(other, { cache: 'no-store' })).body.pipeThrough(new DecompressionStream('gzip'));
+  const bytes = await new Response(inflated).arrayBuffer();
+  for (const name of await caches.keys()) {
+    if (name.endsWith(':state')) continue;
+    const cache = await caches.open(name);
+    if (await cache.match(url)) await cache.put(url, new Response(bytes));
+  }
+}"""
+
+
+def test_the_grader_reads_its_largest_files_from_the_copy_and_never_a_planted_one(browser, site_url):
+    """On a revisit the grader's worker reads the WebAssembly and the memory snapshot from the stored
+    copy itself (stored-copy.js), checked against the build's sha256: it asks neither the service worker
+    nor the network for them. A snapshot planted in their place (a real one, of the sandbox's Python) is
+    not used: the worker asks the service worker instead, which fetches the real one and stores it again."""
+    vendor = site_url + "assets/vendor/pyodide/"
+    context = browser.new_context()
+    page = context.new_page()
+    asked: list[str] = []
+    context.on("request", lambda r: asked.append(r.url) if r.url.startswith(vendor) else None)
+    try:
+        page.goto(site_url + CHAPTERS[0])
+        page.wait_for_function(f"() => document.documentElement.getAttribute('{ATTR.offline}') === 'ready'",
+                               timeout=LONG)
+        asked.clear()
+        page.goto(site_url + CHAPTERS[0])
+        wait_runtime(page, timeout=LONG)
+        assert page.evaluate("workbook.runtime.startedFrom") == "snapshot"
+        assert grades_through_the_runtime(page)
+        big = [u for u in asked if u.endswith(("pyodide.asm.wasm", "workbook.snapshot.gz"))]
+        assert big == [], big
+
+        page.evaluate(PLANT_SNAPSHOT, [vendor + "workbook.snapshot.gz", vendor + "sandbox.snapshot.gz"])
+        asked.clear()
+        page.goto(site_url + CHAPTERS[0])
+        wait_runtime(page, timeout=LONG)
+        assert grades_through_the_runtime(page)  # the sandbox's Python holds no grader: not the planted one
+        assert vendor + "workbook.snapshot.gz" in asked
+        held = page.evaluate("async (u) => (await (await caches.match(u)).arrayBuffer()).byteLength",
+                             vendor + "workbook.snapshot.gz")
+        entry = next(e for e in MANIFEST if e[0] == "assets/vendor/pyodide/workbook.snapshot.gz")
+        assert held == entry[4]  # the real inflated snapshot, stored again
+    finally:
+        context.close()

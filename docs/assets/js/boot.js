@@ -19,6 +19,8 @@
 // - `module`: Pyodide's WebAssembly already compiled, to start from instead of
 //   compiling it again (the sandbox: the grader's, which the page passes on). The
 //   result's `module` is the one this start used, for the caller to share.
+// - `controlled`: the page is under the service worker, so its stored copy is
+//   likely (the WebAssembly is then looked up there before it is downloaded).
 // - `onProgress({phase, loaded, total, step})`: phase "download" (bytes of the runtime
 //   files, counted as they arrive), "start" (Python starting), then the caller
 //   says "ready"; `step` (boot-steps.js) what is happening now: the start's steps
@@ -36,6 +38,7 @@
 import internals from "./pyodide-internals.json";
 import { BOOT_STEP } from "./boot-steps.js";
 import { fileIn, progressMeter } from "./boot-meter.js";
+import { storedBytes, storedResponse } from "./stored-copy.js";
 
 export const PYODIDE_INTERNALS = Object.freeze(internals.internals.map((entry) => entry.name));
 
@@ -47,14 +50,10 @@ export const mark = (name) => {
   stages[name] = Math.round(performance.now());
 };
 
-/** Whether the service worker's stored copy holds `url` (its bytes are read through the service worker, which
- *  checks them). */
-async function isStored(url) {
-  try {
-    return Boolean(await self.caches?.match(url));
-  } catch {
-    return false; // no Cache Storage here (an insecure origin)
-  }
+/** The bytes of the stored copy of `url` (stored-copy.js) when it is the build's; else the file through the
+ *  service worker, which checks its copy (and repairs it) or fetches it. */
+async function fromStored(url, hit, name) {
+  return (await storedBytes(hit, name)) ?? networkFetch(url);
 }
 
 // ---- The memory snapshot ------------------------------------------------------------
@@ -88,15 +87,20 @@ function snapshotDownload(url, indexURL, meter, knownSpeed) {
   let fromCache = null;
   let decide;
   const decided = new Promise((resolve) => (decide = resolve)); // the response, or null: skipped
-  // Stored: read it at once (through the service worker, which checks its bytes).
-  const stored = isStored(url);
-  stored.then((hit) => {
-    fromCache = hit;
-    if (hit) decide(networkFetch(url));
+  // Stored: read it at once, from the stored copy when it is the build's.
+  const hitResponse = storedResponse(url);
+  const stored = hitResponse.then(Boolean);
+  hitResponse.then((hit) => {
+    fromCache = Boolean(hit);
+    if (hit) decide(fromStored(url, hit, meter.fileName(url)));
   });
   const bytes = (async () => {
     const response = await decided;
     if (!response) throw new Error("the snapshot was skipped");
+    if (response instanceof Uint8Array) {
+      meter.done(meter.fileName(url));
+      return response;
+    }
     if (!response.ok) throw new Error(`snapshot: HTTP ${response.status}`);
     const data = new Uint8Array(await response.arrayBuffer());
     meter.done(meter.fileName(url));
@@ -114,7 +118,11 @@ function snapshotDownload(url, indexURL, meter, knownSpeed) {
       this.speed = speed;
       use = speed === null || SNAPSHOT_BYTES / speed < BOOT_COST_MS;
       if (!use) meter.drop(meter.fileName(url));
-      else if (!fromCache) decide(networkFetch(url).then((r) => meter.watch(meter.fileName(url), r)));
+      // Not stored (or not known yet: the stored copy, when there is one, decides itself above).
+      else if (!fromCache) {
+        const fetched = () => networkFetch(url).then((r) => meter.watch(meter.fileName(url), r));
+        hitResponse.then((hit) => hit || decide(fetched()));
+      }
       return use;
     },
   };
@@ -219,7 +227,7 @@ function coreChoice(sourceURL, compiledURL, meter) {
 // nothing is fetched or compiled, and the compiled code (with what the browser has
 // optimised of it since) is shared, not made again. `used.module` is the module
 // the start instantiated, however it came.
-function patchWasm(url, meter, compiledStep, given, used, core) {
+function patchWasm(url, meter, compiledStep, given, used, core, controlled) {
   const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
   const counted = (resource, init) => {
@@ -230,18 +238,29 @@ function patchWasm(url, meter, compiledStep, given, used, core) {
   // service worker answers it from its copy when it has one). Its bytes are counted for the
   // progress bar on a first visit only: counting reads a copy of the stream and reports every
   // piece to the page, which a revisit (the whole file from the cache at once) felt.
-  const fresh = () => realFetch(url, { credentials: "same-origin" });
-  let download = given ? null : fresh();
+  // Under a service worker (`controlled`, which the page knows) the stored copy is likely: it is asked for
+  // first, and read from Cache Storage when it is the build's, so the download does not start.
+  const abort = new AbortController();
+  const fresh = () => realFetch(url, { credentials: "same-origin", signal: abort.signal });
+  let download = given || controlled ? null : fresh();
   download?.catch(() => {}); // reported where it is used
   const takeDownload = () => {
     const mine = download ?? fresh();
     download = null;
     return mine;
   };
-  const stored = given ? Promise.resolve(true) : isStored(url);
+  const hitResponse = given ? Promise.resolve(null) : storedResponse(url);
+  const stored = given ? Promise.resolve(true) : hitResponse.then(Boolean);
   const compiled = given
     ? Promise.resolve(given)
-    : stored.then((hit) => (hit ? WebAssembly.compileStreaming(takeDownload()) : null));
+    : hitResponse.then(async (hit) => {
+      if (!hit) return null;
+      const bytes = await storedBytes(hit, meter.fileName(url));
+      if (!bytes) return WebAssembly.compileStreaming(takeDownload());
+      if (download) abort.abort(); // started before the copy was found: not needed
+      download = null;
+      return WebAssembly.compile(bytes);
+    });
   compiled.catch(() => {}); // handled below
   const standIn = new Response(null);
   const restore = () => {
@@ -282,8 +301,8 @@ function patchWasm(url, meter, compiledStep, given, used, core) {
 
 // ---- The start ----------------------------------------------------------------------------
 export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = null, snapshotURL = null,
-  onProgress = null,
-  lockFileURL = null, quiet = false, linkSpeed: knownSpeed = null, module: given = null }) {
+  onProgress = null, lockFileURL = null, quiet = false, linkSpeed: knownSpeed = null, module: given = null,
+  controlled = false }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
   const lock = lockFileURL ? fileIn(indexURL, lockFileURL) : "pyodide-lock.json"; // the lock this start reads
   const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", lock, fileIn(indexURL, stdLibURL)];
@@ -298,7 +317,8 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
   const used = { module: null };
   const core = coreChoice(stdLibURL, compiledStdLibURL, meter);
   download?.stored.then((hit) => hit && core.choose(false, null)); // a stored snapshot is used: the sources, at once
-  const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore), given, used, core);
+  const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore), given, used, core,
+    controlled);
   importScripts(indexURL + "pyodide.js");
   meter.done("pyodide.js");
   mark("pyodide.js");

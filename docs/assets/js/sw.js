@@ -11,6 +11,10 @@
 // - serving: a stored response is served only if its bytes still hash to the
 //   manifest's value. A mismatch is deleted, and the file fetched from the
 //   network (checked by the same hash); offline it is refused, never served.
+//   The grader's worker, itself served this way, reads the WebAssembly and the
+//   memory snapshot from Cache Storage directly, and checks them against the
+//   same hashes, built into it (stored-copy.js); any other bytes it leaves to
+//   this worker, which fetches and stores them again.
 // - the copy: started by the page once the learner agreed (offline.js); the
 //   wish is kept in the "state" cache, so any later event (a navigation, a
 //   reload, a message) resumes it from what is already stored and verified.

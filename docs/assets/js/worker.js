@@ -25,11 +25,13 @@ let lazyStdlib = null; // workbook_sandbox.lazy_stdlib
 
 const STDLIB_CORE = indexURL + "python_stdlib.core.zip";
 const STDLIB_CORE_COMPILED = "python_stdlib.core.compiled.zip"; // for a plain start on a fast enough link
-// A chapter's page names its own compiled core as this worker's name (docs/overrides/main.html): the
-// same, with only that chapter's part of the grading package; the package's other modules then come
-// from the sources' core on first use (lazy_stdlib.py).
+// The page tells this worker two things in its name (docs/overrides/main.html), which it reads before
+// anything: `core`, a chapter page's own compiled core (the same, with only that chapter's part of the
+// grading package; the package's other modules then come from the sources' core on first use:
+// lazy_stdlib.py), and `sw`, whether the page is under the service worker.
 const CHAPTER_CORE = /^python_stdlib\.core\.compiled\.ch\d+\.zip$/;
-const chapterCore = CHAPTER_CORE.test(self.name) ? self.name : null;
+const told = new URLSearchParams(self.name);
+const chapterCore = CHAPTER_CORE.test(told.get("core") ?? "") ? told.get("core") : null;
 const STDLIB_REST = indexURL + "python_stdlib.rest.zip";
 const SNAPSHOT = indexURL + "workbook.snapshot.gz";
 
@@ -53,7 +55,7 @@ const ready = (async () => {
   const t0 = performance.now();
   const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE,
     compiledStdLibURL: () => indexURL + (chapterCore ?? STDLIB_CORE_COMPILED), snapshotURL: SNAPSHOT,
-    onProgress: reportBoot });
+    onProgress: reportBoot, controlled: told.get("sw") === "1" });
   pyodide = started.py;
   started.step(BOOT_STEP.import); // the grading package and this page's exercises
   lazyStdlib = pyodide.pyimport("workbook_sandbox.lazy_stdlib");
