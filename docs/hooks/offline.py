@@ -22,8 +22,9 @@ and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
 
 Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
 and so are the search's word splitters and stemmers for other languages when the
-search is in English only (it then never loads them). So are the compiled cores of
-the standard library (the whole package's and each chapter's): only a first visit over a link that is not fast takes it
+search is in English only (it then never loads them). So are the compiled cores
+of the standard library (the whole package's, each chapter's and the sandbox's):
+only a first visit over a link that is fast but not very fast takes one
 (docs/assets/js/boot.js); a stored site starts from its snapshot, and a start
 without one takes the sources. ``sitemap.xml`` is left
 out too: it holds absolute URLs that hosts and test servers rewrite, so the
@@ -48,7 +49,8 @@ log = logging.getLogger("mkdocs.hooks.offline")
 TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map",)
-SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml", "assets/vendor/pyodide/python_stdlib.core.compiled.zip"}
+SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml", "assets/vendor/pyodide/python_stdlib.core.compiled.zip",
+              "assets/vendor/pyodide/python_stdlib.sandbox.compiled.zip"}
 COMPILED_CORES = re.compile(r"assets/vendor/pyodide/python_stdlib\.core\.compiled\.ch\d+\.zip")  # each chapter's
 INFLATED = ".snapshot.gz"  # stored inflated by the service worker
 LATER = ("assets/vendor/pyodide/sandbox.snapshot.gz",)  # kept when first fetched, not with the copy

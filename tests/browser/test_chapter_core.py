@@ -51,3 +51,34 @@ def test_a_chapter_starts_with_its_own_part_and_imports_the_rest_on_first_use(br
         assert len(sources) == 1 and full == [], (sources, full)
     finally:
         context.close()
+
+
+SANDBOX_COMPILED = "python_stdlib.sandbox.compiled.zip"
+PLAIN = (
+    "import math\n\n\n"
+    "def rotate_2d(x, y, theta):\n"
+    "    c, s = math.cos(theta), math.sin(theta)\n"
+    "    return (c * x - s * y, s * x + c * y)\n"
+)
+
+
+def test_on_a_plain_start_the_sandbox_starts_compiled_too(browser, slow_site):
+    """The sandbox's Python takes the same rule as the grader's (boot.js): on a link where its snapshot
+    is not worth it but the compiled files are, it starts from python_stdlib.sandbox.compiled.zip (the
+    grader's compiled core without the grading package: scripts/sandbox_files.py), and runs code."""
+    from helpers import exercise, run_build, set_editor
+
+    context = browser.new_context(service_workers="block")
+    page = context.new_page()
+    try:
+        asked = requests_for(page, SANDBOX_COMPILED)
+        page.goto(slow_site.url + CHAPTERS[0])
+        wait_runtime(page, timeout=LONG)
+        ex = exercise(page, "0.5")
+        set_editor(page, ex, PLAIN)
+        assert run_build(ex, timeout=LONG) == "correct"
+        stages = page.evaluate("window.workbook.sandbox.startStages")
+        assert stages["from"] == "boot" and stages["stdlib"] == "compiled", stages
+        assert len(asked) == 1, asked
+    finally:
+        context.close()

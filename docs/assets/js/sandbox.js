@@ -41,6 +41,7 @@ const settings = self.WB_SANDBOX || { indexURL: new URL("../vendor/pyodide/", se
 delete self.WB_SANDBOX;
 const { indexURL } = settings;
 const STDLIB = indexURL + "python_stdlib.sandbox.zip";
+const STDLIB_COMPILED = indexURL + "python_stdlib.sandbox.compiled.zip"; // a plain start on a fast enough link
 const LOCK = indexURL + "pyodide-lock.sandbox.json";
 const SNAPSHOT = indexURL + "sandbox.snapshot.gz";
 const STDLIB_REST = indexURL + "python_stdlib.rest.zip"; // the grader's too (scripts/split_stdlib.py)
@@ -105,11 +106,13 @@ const mark = (name) => (stages[name] = Math.round(performance.now() - started));
 const ready = (async () => {
   const lock = networkFetch(LOCK).then((r) => r.json());
   const reportBoot = (progress) => post({ type: "boot", ...progress });
-  const { py, from, step } = await startPyodide({ indexURL, stdLibURL: STDLIB, lockFileURL: LOCK, snapshotURL: SNAPSHOT,
-    quiet: true, onProgress: reportBoot, linkSpeed: settings.linkSpeed, module: await given });
+  const { py, from, step } = await startPyodide({ indexURL, stdLibURL: STDLIB, compiledStdLibURL: () => STDLIB_COMPILED,
+    lockFileURL: LOCK, snapshotURL: SNAPSHOT, quiet: true, onProgress: reportBoot, linkSpeed: settings.linkSpeed,
+    module: await given });
   mark("booted");
   stages.from = from;
   stages.wasm = bootStages.wasm; // "shared": started from the grader's compiled WebAssembly
+  stages.stdlib = bootStages.stdlib; // "compiled" on a plain start over a fast enough link
   step(BOOT_STEP.import);
   lazy = py.pyimport("workbook_sandbox.lazy_stdlib");
   lazy.install(STDLIB_REST, null, restSync).destroy();
