@@ -6,15 +6,12 @@
 // for the memory snapshot (stored inflated), the sha256 and size as stored.
 //
 // The manifest in this script is the one thing on the origin that page script
-// cannot rewrite; Cache Storage can be written by anything running on the origin.
-// So:
+// cannot rewrite; Cache Storage can be written by anything on the origin. So:
 // - serving: a stored response is served only if its bytes still hash to the
 //   manifest's value. A mismatch is deleted, and the file fetched from the
 //   network (checked by the same hash); offline it is refused, never served.
-//   The grader's worker, itself served this way, reads the WebAssembly and the
-//   memory snapshot from Cache Storage directly, and checks them against the
-//   same hashes, built into it (stored-copy.js); any other bytes it leaves to
-//   this worker, which fetches and stores them again.
+//   (The grader's worker reads its two largest files from Cache Storage itself,
+//   checked against the same hashes: stored-copy.js.)
 // - the copy: started by the page once the learner agreed (offline.js); the
 //   wish is kept in the "state" cache, so any later event (a navigation, a
 //   reload, a message) resumes it from what is already stored and verified.
