@@ -101,7 +101,7 @@ build/wheel.stamp: build/vendor.stamp scripts/build_wheel.py $(PKG_SOURCES)
 # The standard library cut in two: the core the worker starts with (what start-up and
 # the grader import, found by running them in Node, plus the package; also compiled, for a plain
 # start on a first visit) and the rest.
-build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_stdlib.py scripts/chapter_modules.py scripts/sandbox_files.py $(PKG_SOURCES) $(wildcard docs/chapters/*.md)
+build/stdlib.stamp: build/wheel.stamp scripts/stdlib_probe.mjs scripts/split_stdlib.py scripts/chapter_modules.py scripts/sandbox_files.py $(PKG_SOURCES)
 	node scripts/stdlib_probe.mjs
 	$(BIN)/python scripts/split_stdlib.py
 	$(BIN)/python scripts/sandbox_files.py  # the sandbox's Python: the core without the grading package

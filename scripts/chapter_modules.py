@@ -17,7 +17,6 @@ first time it is imported (``workbook_sandbox/lazy_stdlib.py``).
 from __future__ import annotations
 
 import json
-import re
 import subprocess
 import sys
 from pathlib import Path
@@ -25,15 +24,7 @@ from typing import Any
 
 ROOT = Path(__file__).resolve().parent.parent
 PACKAGE = ROOT / "pyodide_pkg"
-CHAPTERS = ROOT / "docs" / "chapters"
 BY_TOPIC = ("workbook.bank.", "workbook.figures.", "workbook.reference.")  # one module per topic: only the page's
-FIGURE_BLOCK = re.compile(r"^::: *figure +(\S+)", re.M)
-
-
-def chapter_figures(n: int) -> list[str]:
-    """The figures that chapter N's page places (``::: figure NAME``)."""
-    pages = sorted(CHAPTERS.glob(f"{n:02d}-*.md"))
-    return [name for page in pages for name in FIGURE_BLOCK.findall(page.read_text(encoding="utf-8"))]
 
 
 def _requests(n: int) -> None:
@@ -58,7 +49,7 @@ def _requests(n: int) -> None:
                 runs.get(run_figure)
         for request in asks:
             api.handle(json.dumps(request))
-    for name in chapter_figures(n):
+    for name in figures.names():  # every figure (see above)
         figures.render(name, None)
 
 
