@@ -46,6 +46,7 @@ import zipfile
 from pathlib import Path
 
 from workbook.version import strip_docstrings  # the grader's version hash strips them the same way
+from workbook_sandbox.lazy_stdlib import INDEX, PACKAGE_INDEX  # the indexes the finders read
 
 ROOT = Path(__file__).resolve().parent.parent
 SOURCE = ROOT / "build" / "stdlib" / "python_stdlib.zip"
@@ -55,9 +56,7 @@ OUT = ROOT / "docs" / "assets" / "vendor" / "pyodide"
 CORE, REST = "python_stdlib.core.zip", "python_stdlib.rest.zip"
 COMPILED = "python_stdlib.core.compiled.zip"
 CHAPTER_COMPILED = "python_stdlib.core.compiled.ch{}.zip"  # chapter N's page: its part of the package only
-PACKAGE_INDEX = "package-rest.txt"  # in a chapter's compiled core: the package's modules it leaves out
 ZIP_PATH = "/lib/python312.zip"  # where Pyodide 0.27 puts the standard library's zip (on sys.path)
-INDEX = "stdlib-rest.txt"  # workbook_sandbox/lazy_stdlib.py reads it
 
 
 def _source_name(name: str) -> str:

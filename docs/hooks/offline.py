@@ -49,9 +49,9 @@ log = logging.getLogger("mkdocs.hooks.offline")
 TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map",)
-SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml", "assets/vendor/pyodide/python_stdlib.core.compiled.zip",
-              "assets/vendor/pyodide/python_stdlib.sandbox.compiled.zip"}
-COMPILED_CORES = re.compile(r"assets/vendor/pyodide/python_stdlib\.core\.compiled\.ch\d+\.zip")  # each chapter's
+SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml"}
+# The compiled cores: the whole package's, each chapter's (.chN) and the sandbox's.
+COMPILED_CORES = re.compile(r"assets/vendor/pyodide/python_stdlib\.(core|sandbox)\.compiled(\.ch\d+)?\.zip")
 INFLATED = ".snapshot.gz"  # stored inflated by the service worker
 LATER = ("assets/vendor/pyodide/sandbox.snapshot.gz",)  # kept when first fetched, not with the copy
 LUNR_LANGUAGES = "assets/javascripts/lunr/"

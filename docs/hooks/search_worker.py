@@ -62,12 +62,12 @@ def on_post_template(output_content, template_name, config, **kwargs):
 
 def on_post_build(config, **kwargs):
     """Move the index's documents to DOCS, leaving the theme's page an index without them."""
-    index = Path(config["site_dir"]) / INDEX
+    site = Path(config["site_dir"])
+    index = site / INDEX
     if not index.is_file():
         raise PluginError(f"no {INDEX} to split: is the search plugin on, and before this hook?")
     data = json.loads(index.read_text(encoding="utf-8"))
     if not isinstance(data.get("docs"), list):
         raise PluginError(f"{INDEX} has no list of documents")
-    (index.parent / Path(DOCS).name).write_text(json.dumps(data["docs"], ensure_ascii=False, separators=(",", ":")),
-                                                encoding="utf-8")
+    (site / DOCS).write_text(json.dumps(data["docs"], ensure_ascii=False, separators=(",", ":")), encoding="utf-8")
     index.write_text(json.dumps({**data, "docs": []}, separators=(",", ":")), encoding="utf-8")

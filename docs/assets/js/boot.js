@@ -10,8 +10,7 @@
 // - `stdLibURL`: the standard library zip to start with (the grader: the small
 //   core of scripts/split_stdlib.py, which holds the grading package too);
 //   `compiledStdLibURL`: the same compiled, for a plain start where the link
-//   brings its extra bytes in less time than compiling the sources takes (a
-//   function, asked when the choice is made).
+//   brings its extra bytes in less time than compiling the sources takes.
 // - `snapshotURL`: a memory snapshot made at build time (scripts/build_snapshot.mjs)
 //   to restore instead of booting; null boots plainly.
 // - `linkSpeed`: the link's speed in bytes per ms when the caller knows it (the
@@ -202,9 +201,8 @@ function coreChoice(sourceURL, compiledURL, meter) {
       stored.then((hit) => {
         const compiled = plain && speed >= COMPILED_MIN_SPEED && !hit;
         stages.stdlib = compiled ? "compiled" : "sources";
-        const url = compiled ? compiledURL() : sourceURL;
-        if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(url));
-        choose(url);
+        if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL));
+        choose(compiled ? compiledURL : sourceURL);
       });
     },
   };

@@ -106,7 +106,7 @@ const mark = (name) => (stages[name] = Math.round(performance.now() - started));
 const ready = (async () => {
   const lock = networkFetch(LOCK).then((r) => r.json());
   const reportBoot = (progress) => post({ type: "boot", ...progress });
-  const { py, from, step } = await startPyodide({ indexURL, stdLibURL: STDLIB, compiledStdLibURL: () => STDLIB_COMPILED,
+  const { py, from, step } = await startPyodide({ indexURL, stdLibURL: STDLIB, compiledStdLibURL: STDLIB_COMPILED,
     lockFileURL: LOCK, snapshotURL: SNAPSHOT, quiet: true, onProgress: reportBoot, linkSpeed: settings.linkSpeed,
     module: await given });
   mark("booted");

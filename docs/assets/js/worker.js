@@ -54,13 +54,14 @@ const answer = (request) => JSON.parse(handle(JSON.stringify(request)));
 const ready = (async () => {
   const t0 = performance.now();
   const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE,
-    compiledStdLibURL: () => indexURL + (chapterCore ?? STDLIB_CORE_COMPILED), snapshotURL: SNAPSHOT,
+    compiledStdLibURL: indexURL + (chapterCore ?? STDLIB_CORE_COMPILED), snapshotURL: SNAPSHOT,
     onProgress: reportBoot, controlled: told.get("sw") === "1" });
   pyodide = started.py;
   started.step(BOOT_STEP.import); // the grading package and this page's exercises
   lazyStdlib = pyodide.pyimport("workbook_sandbox.lazy_stdlib");
   lazyStdlib.install(STDLIB_REST).destroy();
-  lazyStdlib.install_package_rest(STDLIB_CORE);
+  // Only a chapter's compiled core leaves modules of the package out (and lists them).
+  if (chapterCore && stages.stdlib === "compiled") lazyStdlib.install_package_rest(STDLIB_CORE);
   handle = pyodide.pyimport("workbook.api").handle;
   mark("handle");
   const api = pyodide.pyimport("workbook.api");
