@@ -231,6 +231,7 @@ def components() -> list[Component]:
 GENERATED = ("sitemap.xml", "sitemap.xml.gz", "sw.js", "search/search_index.json", "search/search_index.docs.json",
              "assets/exercises.json",
              "404.html", "notices/index.html", "assets/vendor/pyodide/robotics_workbook-*.whl",
+             "assets/vendor/pyodide/workbook.compiled*.zip",  # the grading package compiled (split_stdlib.py)
              "assets/dist/*", "assets/dist/chunks/*",
              "manifest.webmanifest", "assets/icons/*")  # the app (docs/hooks/app.py: icons drawn in code)
 # Built by the workbook's scripts from the runtime's files (the notices of those are above): the

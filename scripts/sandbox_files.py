@@ -13,11 +13,12 @@ files this writes, next to them:
   ahead of a run whose imports need it, or when an import no one saw asks. So a
   first Build run on a first visit waits for 0.4 MB, not for the whole 2 MB
   standard library (issue 48).
-* ``python_stdlib.sandbox.compiled.zip``: the same from the grader's compiled
-  core (``.pyc`` without column positions), for a plain start on a link fast
-  enough to bring its 0.4 MB more (the rule is the grader's: boot.js). In Node
-  the sandbox's Python then starts in 0.6 s instead of 1.5 s. Like the grader's
-  compiled core, it is not in the offline copy.
+* nothing compiled: on a plain start over a link fast enough (the grader's rule,
+  boot.js) the sandbox takes the grader's own ``python_stdlib.core.compiled.zip``,
+  which holds no grading package (``scripts/split_stdlib.py`` writes the package
+  beside it), and which the grader fetched already: in Node the sandbox's Python
+  then starts in 0.6 s instead of 1.5 s, and on a first visit it finds the file in
+  the HTTP cache.
 * ``pyodide-lock.sandbox.json``: the lock file without the package that provides
   ``workbook``; it is the sandbox's manifest too: the only files its guarded
   fetch will get are the ones this lock names (and its finder fetches only the
@@ -33,12 +34,12 @@ import sys
 import zipfile
 from pathlib import Path
 
+from split_stdlib import GRADER  # scripts/, beside this file: the top-level package the sandbox must not hold
+
 ROOT = Path(__file__).resolve().parent.parent
 VENDOR = ROOT / "docs" / "assets" / "vendor" / "pyodide"
 CORE, SANDBOX = "python_stdlib.core.zip", "python_stdlib.sandbox.zip"
-COMPILED, SANDBOX_COMPILED = "python_stdlib.core.compiled.zip", "python_stdlib.sandbox.compiled.zip"
 LOCK, SANDBOX_LOCK = "pyodide-lock.json", "pyodide-lock.sandbox.json"
-GRADER = "workbook"  # the top-level package the sandbox must not hold
 
 
 def sandbox_zip(core: Path, out: Path) -> int:
@@ -63,11 +64,9 @@ def main(vendor: Path = VENDOR) -> None:
     if not (vendor / CORE).exists():
         sys.exit("sandbox_files: run scripts/split_stdlib.py first (make does)")
     count = sandbox_zip(vendor / CORE, vendor / SANDBOX)
-    sandbox_zip(vendor / COMPILED, vendor / SANDBOX_COMPILED)
     lock = sandbox_lock(json.loads((vendor / LOCK).read_text()))
     (vendor / SANDBOX_LOCK).write_text(json.dumps(lock, indent=2, sort_keys=True) + "\n")
-    print(f"sandbox: {SANDBOX} {count} files, {(vendor / SANDBOX).stat().st_size / 1e6:.2f} MB "
-          f"(compiled {(vendor / SANDBOX_COMPILED).stat().st_size / 1e6:.2f} MB); "
+    print(f"sandbox: {SANDBOX} {count} files, {(vendor / SANDBOX).stat().st_size / 1e6:.2f} MB; "
           f"{SANDBOX_LOCK} lists {', '.join(sorted(lock['packages'])) or 'no packages'}")
 
 

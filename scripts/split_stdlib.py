@@ -15,17 +15,26 @@ worker starts from
   mounts the first time an import asks for it (the page fetches it ahead of a
   Build run that imports anything).
 
-and ``python_stdlib.core.compiled.zip``: the same core compiled (``.pyc``, what
-CPython 3.12 writes), for a plain start on a first visit (the snapshot skipped).
+and, for a plain start on a first visit (the snapshot skipped), the same compiled
+(``.pyc``, what CPython 3.12 writes) in two parts:
+
+* ``python_stdlib.core.compiled.zip``: the core without the grading package. The
+  sandbox starts from this very file too (``docs/assets/js/sandbox.js``), so on a
+  first visit its start finds it in the HTTP cache instead of downloading 0.8 MB
+  more just as the learner runs code;
+* ``workbook.compiled.zip``: the grading package ``workbook``, which the grader's
+  worker mounts beside it; and ``workbook.compiled.chN.zip``, chapter N's part of
+  it (``chapter_cores``), for that chapter's pages.
+
 Compiling the core's sources is most of such a start: in Node, booting and
-importing took 2.7 s from sources and 1.2 s compiled. The compiled core is
-0.7 MB larger, so the worker takes it only on a link where that costs less than
+importing took 2.7 s from sources and 1.2 s compiled. The compiled files are
+0.7 MB larger, so the worker takes them only on a link where that costs less than
 it saves (docs/assets/js/boot.js); a snapshot start imports nothing and always
 takes the sources (the snapshot's zip importer knows that file), and so does a
-stored site. It is compiled without the column positions that CPython 3.12 keeps for every
+stored site. They are compiled without the column positions that CPython 3.12 keeps for every
 instruction (``-X no_debug_ranges``, in a child interpreter: the option is the
 interpreter's, not the compiler's): tracebacks through the grader's own
-modules then mark no columns, and the file is 0.5 MB smaller (1.87 -> 1.35 MB).
+modules then mark no columns, and the files are 0.5 MB smaller (1.87 -> 1.35 MB).
 Line numbers stay. Learner code is compiled in the sandbox and keeps them. The core's sources are written without their
 docstrings and comments (what ``python -OO`` drops, which the standard library
 supports): 40 % fewer bytes and less to compile. That needs Python 3.12, the
@@ -54,8 +63,12 @@ USED = ROOT / "build" / "stdlib-used.json"
 PACKAGES = (ROOT / "pyodide_pkg" / "workbook", ROOT / "pyodide_pkg" / "workbook_sandbox")
 OUT = ROOT / "docs" / "assets" / "vendor" / "pyodide"
 CORE, REST = "python_stdlib.core.zip", "python_stdlib.rest.zip"
-COMPILED = "python_stdlib.core.compiled.zip"
-CHAPTER_COMPILED = "python_stdlib.core.compiled.ch{}.zip"  # chapter N's page: its part of the package only
+COMPILED = "python_stdlib.core.compiled.zip"  # without the grading package: the grader's and the sandbox's
+PACKAGE_COMPILED = "workbook.compiled.zip"  # the grading package, compiled: mounted beside it by the grader
+CHAPTER_COMPILED = "workbook.compiled.ch{}.zip"  # chapter N's page: its part of the package only
+GRADER = "workbook"  # the top-level package the sandbox must not hold
+# Files earlier builds wrote here that no page asks for now (a checkout's vendored folder outlives them).
+STALE = ("python_stdlib.sandbox.compiled.zip", "python_stdlib.core.compiled.ch*.zip")
 ZIP_PATH = "/lib/python312.zip"  # where Pyodide 0.27 puts the standard library's zip (on sys.path)
 
 
@@ -142,10 +155,14 @@ def _package_module(name: str) -> str | None:
     return module if module and module.split(".")[0] in ("workbook", "workbook_sandbox") else None
 
 
+def _grader_entry(name: str) -> bool:
+    return name.split("/")[0] == GRADER
+
+
 def chapter_cores(compiled_entries: list[tuple[str, bytes]], out: Path) -> dict[int, int]:
-    """Write chapter N's compiled core for every chapter of the bank: the compiled core without the
-    package's modules its page does not use (scripts/chapter_modules.py), whose names it lists in
-    PACKAGE_INDEX. Returns each one's size."""
+    """Write chapter N's part of the compiled grading package for every chapter of the bank: the
+    package without the modules its page does not use (scripts/chapter_modules.py), whose names it
+    lists in PACKAGE_INDEX. ``compiled_entries``: the package's entries. Returns each one's size."""
     import chapter_modules  # scripts/, beside this file
 
     package = {m for m in map(_package_module, (n for n, _ in compiled_entries)) if m}
@@ -179,11 +196,17 @@ def split(source: Path, used: list[str], out: Path) -> dict:
     out.mkdir(parents=True, exist_ok=True)
     _write(out / CORE, core_entries)
     compiled_entries = compiled_without_columns(core_entries)
-    _write(out / COMPILED, compiled_entries)
-    chapters = chapter_cores(compiled_entries, out)
+    _write(out / COMPILED, [(n, data) for n, data in compiled_entries if not _grader_entry(n)])
+    package = [(n, data) for n, data in compiled_entries if _grader_entry(n)]
+    _write(out / PACKAGE_COMPILED, package)
+    chapters = chapter_cores(package, out)
     _write(out / REST, [(n, files[n]) for n in rest])
+    for pattern in STALE:
+        for stale in out.glob(pattern):
+            stale.unlink()
     return {"core_files": len(core_entries), "rest_files": len(rest), "core_bytes": (out / CORE).stat().st_size,
-            "compiled_bytes": (out / COMPILED).stat().st_size, "rest_bytes": (out / REST).stat().st_size,
+            "compiled_bytes": (out / COMPILED).stat().st_size,
+            "package_bytes": (out / PACKAGE_COMPILED).stat().st_size, "rest_bytes": (out / REST).stat().st_size,
             "chapter_bytes": chapters}
 
 
@@ -197,9 +220,10 @@ def main() -> None:
                  f"{sys.version.split()[0]}: run it with .venv/bin/python (make does)")
     info = split(SOURCE, json.loads(USED.read_text()), OUT)
     print(f"stdlib: core {info['core_files']} files, {info['core_bytes'] / 1e6:.2f} MB"
-          f" (without docstrings and comments; compiled {info['compiled_bytes'] / 1e6:.2f} MB); "
+          f" (without docstrings and comments; compiled {info['compiled_bytes'] / 1e6:.2f} MB"
+          f" and the package {info['package_bytes'] / 1e6:.2f} MB); "
           f"rest {info['rest_files']} files, {info['rest_bytes'] / 1e6:.2f} MB (fetched on first use); "
-          f"compiled per chapter {min(info['chapter_bytes'].values()) / 1e6:.2f}-"
+          f"the package compiled per chapter {min(info['chapter_bytes'].values()) / 1e6:.2f}-"
           f"{max(info['chapter_bytes'].values()) / 1e6:.2f} MB")
 
 

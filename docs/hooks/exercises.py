@@ -184,22 +184,22 @@ def on_nav(nav, config, files, **kwargs):
     return nav
 
 
-CHAPTER_CORE = "python_stdlib.core.compiled.ch{}.zip"  # scripts/split_stdlib.py writes one per chapter
+CHAPTER_PACKAGE = "workbook.compiled.ch{}.zip"  # scripts/split_stdlib.py writes one per chapter
 
 
-def chapter_core(ids: list[str] | None, config) -> str | None:
-    """The compiled core a page's grader starts from on a plain start: its chapter's when all its exercises
-    are one chapter's (and the build wrote it), else None (the whole package's)."""
+def chapter_package(ids: list[str] | None, config) -> str | None:
+    """The part of the compiled grading package a page's grader mounts on a plain start: its chapter's when
+    all its exercises are one chapter's (and the build wrote it), else None (the whole package)."""
     chapters = {i.split(".")[0] for i in ids or []}
     if len(chapters) != 1:
         return None
-    name = CHAPTER_CORE.format(chapters.pop())
+    name = CHAPTER_PACKAGE.format(chapters.pop())
     return name if (Path(config["docs_dir"]) / "assets/vendor/pyodide" / name).is_file() else None
 
 
 def on_page_context(context, page, config, nav, **kwargs):
     _built().pages[page.file.src_uri] = (page.url, page.title or "")
-    context["wb_grader_core"] = chapter_core(_built().ids.get(page.file.src_uri), config)
+    context["wb_grader_package"] = chapter_package(_built().ids.get(page.file.src_uri), config)
     if page.content and CHAPTER_LIST in page.content:
         # Every page has been read by now: the chapters' own titles (their H1s) are known.
         chapters = [(get_relative_url(p.url, page.url), p.title) for p in nav.pages if _built().ids.get(p.file.src_uri)]

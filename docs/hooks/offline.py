@@ -22,8 +22,8 @@ and wheels, KaTeX, bundles, CSS, the search index), hash it, and write
 
 Source maps and the gzipped sitemap are left out (nothing at runtime reads them),
 and so are the search's word splitters and stemmers for other languages when the
-search is in English only (it then never loads them). So are the compiled cores
-of the standard library (the whole package's, each chapter's and the sandbox's):
+search is in English only (it then never loads them). So are the compiled core
+of the standard library and the compiled grading package (whole, and each chapter's):
 only a first visit over a link that is fast but not very fast takes one
 (docs/assets/js/boot.js); a stored site starts from its snapshot, and a start
 without one takes the sources. ``sitemap.xml`` is left
@@ -50,8 +50,8 @@ TEMPLATE = "assets/js/sw.js"
 OUTPUT = "sw.js"
 SKIP_SUFFIXES = (".map",)
 SKIP_FILES = {"sitemap.xml.gz", "sitemap.xml"}
-# The compiled cores: the whole package's, each chapter's (.chN) and the sandbox's.
-COMPILED_CORES = re.compile(r"assets/vendor/pyodide/python_stdlib\.(core|sandbox)\.compiled(\.ch\d+)?\.zip")
+# The compiled core (the grader's and the sandbox's) and the compiled package: whole, and each chapter's (.chN).
+COMPILED_CORES = re.compile(r"assets/vendor/pyodide/(python_stdlib\.core|workbook)\.compiled(\.ch\d+)?\.zip")
 INFLATED = ".snapshot.gz"  # stored inflated by the service worker
 LATER = ("assets/vendor/pyodide/sandbox.snapshot.gz",)  # kept when first fetched, not with the copy
 LUNR_LANGUAGES = "assets/javascripts/lunr/"

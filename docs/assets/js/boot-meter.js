@@ -58,10 +58,10 @@ export function progressMeter(indexURL, files, onProgress) {
       expected.delete(name);
       report(true);
     },
-    /** Count `to` instead of `from` (the start took another file for the same part). */
-    swap(from, to) {
+    /** Count the files `to` instead of `from` (the start took others for the same part). */
+    swap(from, ...to) {
       expected.delete(from);
-      expected.set(to, SIZES[to] || 0);
+      for (const name of to) expected.set(name, SIZES[name] || 0);
       report(true);
     },
     phase(next) {

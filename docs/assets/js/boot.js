@@ -10,7 +10,8 @@
 // - `stdLibURL`: the standard library zip to start with (the grader: the small
 //   core of scripts/split_stdlib.py, which holds the grading package too);
 //   `compiledStdLibURL`: the same compiled, for a plain start where the link
-//   brings its extra bytes in less time than compiling the sources takes.
+//   brings its extra bytes in less time than compiling the sources takes; it holds no
+//   grading package, which the grader gives as `compiledPackageURL` (mounted beside it).
 // - `snapshotURL`: a memory snapshot made at build time (scripts/build_snapshot.mjs)
 //   to restore instead of booting; null boots plainly.
 // - `linkSpeed`: the link's speed in bytes per ms when the caller knows it (the
@@ -185,13 +186,18 @@ function checkSnapshot(bytes) {
 // they save on a link near 3.6 Mbps (a share near 120; it was 6 Mbps for 1.1 MB).
 const COMPILED_MIN_SPEED = 120;
 
-function coreChoice(sourceURL, compiledURL, meter) {
+// The compiled core holds no grading package (the sandbox starts from it too): the grader names the
+// package's compiled part (`packageURL`), fetched with the core when it is chosen and mounted beside it.
+function coreChoice(sourceURL, compiledURL, meter, packageURL) {
   let choose;
   let decided = !compiledURL; // nothing to choose: the sources
   const chosen = decided ? Promise.resolve(sourceURL) : new Promise((resolve) => (choose = resolve));
+  let packageBytes = null;
   return {
     /** The URL Pyodide's request for `resource` stands for, once chosen; null for any other request. */
     held: (resource) => (String(resource) === sourceURL ? chosen : null),
+    /** The bytes of the package's compiled part when the compiled core was chosen (a promise), else null. */
+    package: () => packageBytes,
     /** Decide (the first call only): the compiled core for a plain start on a link at least COMPILED_MIN_SPEED
      *  fast, never for a stored site (`stored`: a promise; the offline copy holds the sources only, and a
      *  loaded machine can make even the stored copy's link look slow before the cache has answered). */
@@ -201,11 +207,28 @@ function coreChoice(sourceURL, compiledURL, meter) {
       stored.then((hit) => {
         const compiled = plain && speed >= COMPILED_MIN_SPEED && !hit;
         stages.stdlib = compiled ? "compiled" : "sources";
-        if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL));
+        if (compiled && packageURL) packageBytes = downloadBytes(packageURL, meter);
+        if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL), meter.fileName(packageURL));
         choose(compiled ? compiledURL : sourceURL);
       });
     },
   };
+}
+
+async function downloadBytes(url, meter) {
+  const name = meter.fileName(url);
+  const response = meter.watch(name, await networkFetch(url, { credentials: "same-origin" }));
+  if (!response.ok) throw new Error(`${name}: HTTP ${response.status}`);
+  return new Uint8Array(await response.arrayBuffer());
+}
+
+/** Put the zip `bytes` on Python's path, after the standard library's core (`name`: its file in /lib). */
+function mountZip(py, bytes, name) {
+  const path = "/lib/" + name;
+  py.FS.writeFile(path, bytes);
+  const sys = py.pyimport("sys");
+  sys.path.insert(1, path);
+  sys.destroy();
 }
 
 // ---- The WebAssembly -------------------------------------------------------------------
@@ -298,7 +321,8 @@ function patchWasm(url, meter, compiledStep, given, used, core, controlled) {
 }
 
 // ---- The start ----------------------------------------------------------------------------
-export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = null, snapshotURL = null,
+export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = null, compiledPackageURL = null,
+  snapshotURL = null,
   onProgress = null, lockFileURL = null, quiet = false, linkSpeed: knownSpeed = null, module: given = null,
   controlled = false }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
@@ -313,7 +337,7 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
   snapshot?.then(() => mark("snapshot"), () => {}); // handled below
   let skipped = !download;
   const used = { module: null };
-  const core = coreChoice(stdLibURL, compiledStdLibURL, meter);
+  const core = coreChoice(stdLibURL, compiledStdLibURL, meter, compiledPackageURL);
   download?.stored.then((hit) => hit && core.choose(false, null)); // a stored snapshot is used: the sources, at once
   const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore), given, used, core,
     controlled);
@@ -345,6 +369,8 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
   try {
     const py = await loadPyodide(options);
     if (skipped) {
+      const compiledPackage = core.package();
+      if (compiledPackage) mountZip(py, await compiledPackage, meter.fileName(compiledPackageURL));
       mark("booted");
       return { py, from: "boot", stages, step, module: used.module };
     }

@@ -55,6 +55,7 @@ export class Runtime {
    */
   constructor(workerURL, early, { role = "grader", ackMs = 0 } = {}) {
     this.workerURL = workerURL;
+    this.workerName = early?.name ?? ""; // what the page's head told its worker (worker.js), told again to a successor
     this.role = role;
     this.setState = role === "grader" ? setRuntimeState : () => {};
     this.ackMs = ackMs;
@@ -75,7 +76,7 @@ export class Runtime {
     this.setState(RUNTIME.loading);
     const worker = early
       ? early.worker
-      : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL);
+      : typeof this.workerURL === "function" ? this.workerURL() : new Worker(this.workerURL, { name: this.workerName });
     this.worker = worker;
     this.spawns = (this.spawns || 0) + 1; // workers started, the first included
     this.reportBoot({ phase: BOOT_PHASE.download, loaded: 0, total: 0, step: null }); // a new start: nothing yet

@@ -60,6 +60,8 @@ const jobs = new Map(); // "exercise variant" -> {job, limit}
 
 async function runBuild(grader, { code, ...request }, options) {
   const asked = grader.request({ ...request, op: "cases", code });
+  // Started (if it is not yet) before the first job is known: its start goes on while the grader picks the cases.
+  startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule);
   const key = `${request.exercise} ${request.variant}`;
   if (!jobs.has(key)) {
     const cases = await asked;
@@ -67,7 +69,7 @@ async function runBuild(grader, { code, ...request }, options) {
     jobs.set(key, { job: cases.value.job, limit: cases.value.limit });
   }
   const { job, limit } = jobs.get(key);
-  const box = startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule);
+  const box = startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule); // the same, unless it failed
   if (!box.ready && !box.failure) options.onWait?.();
   const { interrupts, restarts } = box;
   const ran = await box.request({ op: "run", job, code }, { ...options, limitMs: limit * 1000 || options.limitMs });

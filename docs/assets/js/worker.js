@@ -18,20 +18,22 @@ let lazyStdlib = null; // workbook_sandbox.lazy_stdlib
 // boot.js starts Pyodide: it restores the memory snapshot made at build time
 // (the interpreter with the grading package imported), or boots when that is
 // not worth it or fails. Either way Python's standard library is the small
-// core, which holds the grading package too (compiled for a plain start on a
-// link fast enough to bring its extra bytes: boot.js); the rest is mounted on first use
-// (scripts/split_stdlib.py, workbook_sandbox/lazy_stdlib.py). Its progress (bytes of
+// core, which holds the grading package too; on a plain start over a link fast
+// enough to bring their extra bytes (boot.js) the same compiled, in two files: the core
+// without the package (the sandbox starts from it too) and the package. The rest is mounted
+// on first use (scripts/split_stdlib.py, workbook_sandbox/lazy_stdlib.py). Its progress (bytes of
 // the runtime files, then Python's start) goes to the page as it happens.
 
 const STDLIB_CORE = indexURL + "python_stdlib.core.zip";
-const STDLIB_CORE_COMPILED = "python_stdlib.core.compiled.zip"; // for a plain start on a fast enough link
+const STDLIB_CORE_COMPILED = indexURL + "python_stdlib.core.compiled.zip"; // without the grading package
+const PACKAGE_COMPILED = "workbook.compiled.zip"; // the package, compiled
 // The page tells this worker two things in its name (docs/overrides/main.html), which it reads before
-// anything: `core`, a chapter page's own compiled core (the same, with only that chapter's part of the
-// grading package; the package's other modules then come from the sources' core on first use:
-// lazy_stdlib.py), and `sw`, whether the page is under the service worker.
-const CHAPTER_CORE = /^python_stdlib\.core\.compiled\.ch\d+\.zip$/;
+// anything: `package`, a chapter page's own part of the compiled package (only that chapter's modules;
+// the package's other modules then come from the sources' core on first use: lazy_stdlib.py), and `sw`,
+// whether the page is under the service worker.
+const CHAPTER_PACKAGE = /^workbook\.compiled\.ch\d+\.zip$/;
 const told = new URLSearchParams(self.name);
-const chapterCore = CHAPTER_CORE.test(told.get("core") ?? "") ? told.get("core") : null;
+const chapterPackage = CHAPTER_PACKAGE.test(told.get("package") ?? "") ? told.get("package") : null;
 const STDLIB_REST = indexURL + "python_stdlib.rest.zip";
 const SNAPSHOT = indexURL + "workbook.snapshot.gz";
 
@@ -53,15 +55,15 @@ const answer = (request) => JSON.parse(handle(JSON.stringify(request)));
 // ---- Requests ------------------------------------------------------------------
 const ready = (async () => {
   const t0 = performance.now();
-  const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE,
-    compiledStdLibURL: indexURL + (chapterCore ?? STDLIB_CORE_COMPILED), snapshotURL: SNAPSHOT,
+  const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE, compiledStdLibURL: STDLIB_CORE_COMPILED,
+    compiledPackageURL: indexURL + (chapterPackage ?? PACKAGE_COMPILED), snapshotURL: SNAPSHOT,
     onProgress: reportBoot, controlled: told.get("sw") === "1" });
   pyodide = started.py;
   started.step(BOOT_STEP.import); // the grading package and this page's exercises
   lazyStdlib = pyodide.pyimport("workbook_sandbox.lazy_stdlib");
   lazyStdlib.install(STDLIB_REST).destroy();
-  // Only a chapter's compiled core leaves modules of the package out (and lists them).
-  if (chapterCore && stages.stdlib === "compiled") lazyStdlib.install_package_rest(STDLIB_CORE);
+  // Only a chapter's part of the compiled package leaves modules of the package out (and lists them).
+  if (chapterPackage && stages.stdlib === "compiled") lazyStdlib.install_package_rest(STDLIB_CORE);
   handle = pyodide.pyimport("workbook.api").handle;
   mark("handle");
   const api = pyodide.pyimport("workbook.api");
