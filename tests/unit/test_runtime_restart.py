@@ -1,5 +1,6 @@
-"""A replaced grader is told what the page's head told the first (docs/assets/js/runtime.js), in Node:
-``tests/js/restart.test.mjs`` holds the cases."""
+"""What a new worker is told, in Node: a replaced grader what the page's head told the first
+(docs/assets/js/runtime.js, ``tests/js/restart.test.mjs``), and a sandbox started for a run that a run
+is waiting (docs/assets/js/sandbox-client.js, ``tests/js/sandbox-start.test.mjs``)."""
 
 from __future__ import annotations
 
@@ -8,4 +9,9 @@ from node_tests import run_node_test
 
 def test_a_replaced_worker_gets_the_first_one_s_name():
     out = run_node_test("restart.test.mjs", timeout=60)
+    assert "# fail 0" in out and "# pass 2" in out, out[-3000:]
+
+
+def test_a_sandbox_started_for_a_run_is_told_so_and_its_replacement_is_not():
+    out = run_node_test("sandbox-start.test.mjs", timeout=60)
     assert "# fail 0" in out and "# pass 2" in out, out[-3000:]

@@ -34,8 +34,9 @@ const reports = new Map(); // exercise -> {variant, outputs}: the report of its 
 const linkSpeedOf = (grader) => (typeof grader?.startStages?.link === "number" ? grader.startStages.link : null);
 
 /** The tab's sandbox, started now if it is not running yet (or again, if it could not start);
- *  `module`: the grader's compiled WebAssembly, if it has one. */
-export function startSandbox(graderURL, linkSpeed = null, module = null) {
+ *  `module`: the grader's compiled WebAssembly, if it has one; `forRun`: a run the learner asked for
+ *  waits for this start (the sandbox then skips its warm-up: sandbox.js). */
+export function startSandbox(graderURL, linkSpeed = null, module = null, forRun = false) {
   if (sandbox?.failure) sandbox.worker.terminate();
   if (!sandbox || sandbox.failure) {
     const script = new URL("sandbox.js", graderURL).href;
@@ -49,6 +50,7 @@ export function startSandbox(graderURL, linkSpeed = null, module = null) {
       return worker;
     };
     sandbox = new Runtime(spawn, null, { role: "sandbox", ackMs: ACK_MS });
+    if (forRun) sandbox.worker.postMessage({ type: "run-waiting" }); // the first start only, not a replacement's
     if (window.workbook) window.workbook.sandbox = sandbox; // for tests and tools
   }
   return sandbox;
@@ -61,7 +63,7 @@ const jobs = new Map(); // "exercise variant" -> {job, limit}
 async function runBuild(grader, { code, ...request }, options) {
   const asked = grader.request({ ...request, op: "cases", code });
   // Started (if it is not yet) before the first job is known: its start goes on while the grader picks the cases.
-  startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule);
+  startSandbox(grader.workerURL, linkSpeedOf(grader), grader.wasmModule, true);
   const key = `${request.exercise} ${request.variant}`;
   if (!jobs.has(key)) {
     const cases = await asked;
