@@ -207,7 +207,10 @@ function coreChoice(sourceURL, compiledURL, meter, packageURL) {
       stored.then((hit) => {
         const compiled = plain && speed >= COMPILED_MIN_SPEED && !hit;
         stages.stdlib = compiled ? "compiled" : "sources";
-        if (compiled && packageURL) packageBytes = downloadBytes(packageURL, meter);
+        if (compiled && packageURL) {
+          packageBytes = downloadBytes(packageURL, meter);
+          packageBytes.catch(() => {}); // a failure is the start's, once Python has started and waits for it
+        }
         if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL), meter.fileName(packageURL));
         choose(compiled ? compiledURL : sourceURL);
       });
