@@ -24,7 +24,7 @@ and, for a plain start on a first visit (the snapshot skipped), the same compile
   more just as the learner runs code;
 * ``workbook.compiled.zip``: the grading package ``workbook``, which the grader's
   worker mounts beside it; and ``workbook.compiled.chN.zip``, chapter N's part of
-  it (``chapter_cores``), for that chapter's pages.
+  it (``chapter_packages``), for that chapter's pages.
 
 Compiling the core's sources is most of such a start: in Node, booting and
 importing took 2.7 s from sources and 1.2 s compiled. The compiled files are
@@ -155,11 +155,12 @@ def _package_module(name: str) -> str | None:
     return module if module and module.split(".")[0] in ("workbook", "workbook_sandbox") else None
 
 
-def _grader_entry(name: str) -> bool:
+def grader_entry(name: str) -> bool:
+    """Whether the zip entry ``name`` belongs to the grading package (the sandbox holds none)."""
     return name.split("/")[0] == GRADER
 
 
-def chapter_cores(compiled_entries: list[tuple[str, bytes]], out: Path) -> dict[int, int]:
+def chapter_packages(compiled_entries: list[tuple[str, bytes]], out: Path) -> dict[int, int]:
     """Write chapter N's part of the compiled grading package for every chapter of the bank: the
     package without the modules its page does not use (scripts/chapter_modules.py), whose names it
     lists in PACKAGE_INDEX. ``compiled_entries``: the package's entries. Returns each one's size."""
@@ -196,10 +197,10 @@ def split(source: Path, used: list[str], out: Path) -> dict:
     out.mkdir(parents=True, exist_ok=True)
     _write(out / CORE, core_entries)
     compiled_entries = compiled_without_columns(core_entries)
-    _write(out / COMPILED, [(n, data) for n, data in compiled_entries if not _grader_entry(n)])
-    package = [(n, data) for n, data in compiled_entries if _grader_entry(n)]
+    _write(out / COMPILED, [(n, data) for n, data in compiled_entries if not grader_entry(n)])
+    package = [(n, data) for n, data in compiled_entries if grader_entry(n)]
     _write(out / PACKAGE_COMPILED, package)
-    chapters = chapter_cores(package, out)
+    chapters = chapter_packages(package, out)
     _write(out / REST, [(n, files[n]) for n in rest])
     for pattern in STALE:
         for stale in out.glob(pattern):

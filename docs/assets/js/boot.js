@@ -211,7 +211,8 @@ function coreChoice(sourceURL, compiledURL, meter, packageURL) {
           packageBytes = downloadBytes(packageURL, meter);
           packageBytes.catch(() => {}); // a failure is the start's, once Python has started and waits for it
         }
-        if (compiled) meter.swap(meter.fileName(sourceURL), meter.fileName(compiledURL), meter.fileName(packageURL));
+        const taken = [compiledURL, packageURL].filter(Boolean).map(meter.fileName);
+        if (compiled) meter.swap(meter.fileName(sourceURL), ...taken);
         choose(compiled ? compiledURL : sourceURL);
       });
     },
@@ -225,7 +226,8 @@ async function downloadBytes(url, meter) {
   return new Uint8Array(await response.arrayBuffer());
 }
 
-/** Put the zip `bytes` on Python's path, after the standard library's core (`name`: its file in /lib). */
+/** Put the zip `bytes` on Python's path (`name`: its file in /lib), after the working folder and ahead of the
+ *  standard library's core; the two hold no module in common. */
 function mountZip(py, bytes, name) {
   const path = "/lib/" + name;
   py.FS.writeFile(path, bytes);
