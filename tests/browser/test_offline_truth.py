@@ -216,8 +216,11 @@ def test_the_grader_reads_its_largest_files_from_the_copy_and_never_a_planted_on
         wait_runtime(page, timeout=LONG)
         assert grades_through_the_runtime(page)  # the sandbox's Python holds no grader: not the planted one
         assert vendor + "workbook.snapshot.gz" in asked
-        held = page.evaluate("async (u) => (await (await caches.match(u)).arrayBuffer()).byteLength",
-                             vendor + "workbook.snapshot.gz")
+        # The service worker deleted the planted file when it did not match, and stores the real one again
+        # after it has answered (sw.js: resume(), in the background): wait until it is there.
+        held = page.wait_for_function(
+            "async (u) => { const r = await caches.match(u); return r ? (await r.arrayBuffer()).byteLength : 0; }",
+            arg=vendor + "workbook.snapshot.gz", timeout=LONG, polling=200).json_value()
         entry = next(e for e in MANIFEST if e[0] == "assets/vendor/pyodide/workbook.snapshot.gz")
         assert held == entry[4]  # the real inflated snapshot, stored again
     finally:
