@@ -119,7 +119,7 @@ def network_targets(net: dict) -> list[dict]:
         + (f" ({', '.join(slowed)}: CPU x4, for information)" if slowed else ""))
     add("localhost: first Build run right after ready <= 1.5 s (click -> verdict)",
         _med(net, "localhost", "first_build_ms"), 1500.0,
-        "median; its sandbox starts when the page is idle after ready, from its own snapshot; "
+        "median; the Run starts the sandbox (right after a Check, the grader is not quiet yet), from its own snapshot; "
         + shown("first_build_ms", lambda v: f"{v:.0f} ms"))
     return targets
 

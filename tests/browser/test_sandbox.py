@@ -24,6 +24,7 @@ from helpers import (
     run_build,
     set_editor,
     settle,
+    wait_runtime,
 )
 from test_offline import kept_later
 from workbook import bank
@@ -252,6 +253,43 @@ def test_the_sandbox_starts_from_its_snapshot_near_build_code_once_the_grader_is
     assert run_build(ex, LONG) == "correct"
     page.wait_for_function("n => workbook.sandbox.spawns > n && workbook.sandbox.ready", arg=spawns, timeout=LONG)
     assert page.evaluate("workbook.sandbox.startStages.wasm") == "shared"
+
+
+def test_the_sandbox_waits_while_the_learner_checks_answers(page, site_url):
+    """The sandbox's start takes a core for a while: near Build code, it still waits until the grader
+    has been quiet for 3 s (kinds/build.js), so a learner checking answers right after the page
+    opened is not slowed down by it. Moving into the Build exercise starts it at once."""
+    open_chapter(page, site_url, 0)
+    ex = exercise(page, "0.5")
+    ex.scroll_into_view_if_needed()  # near the viewport, the grader ready
+    # A learner checking 0.1 every 0.8 s for 4 s: each Check starts the grader's quiet time again.
+    last = page.evaluate("""async () => {
+      const el = document.querySelector('[data-exercise-id="0.1"]');
+      let last = 0;
+      for (let i = 0; i < 6; i++) {
+        el.querySelector('[data-role="answer"]').value = String(i);
+        const answered = new Promise((resolve) => new MutationObserver((_, mo) => {
+          if (el.dataset.state !== 'pending') { mo.disconnect(); resolve(); }
+        }).observe(el, { attributes: true, attributeFilter: ['data-state'] }));
+        el.querySelector('[data-role="check"]').click();
+        await answered;
+        last = performance.now();
+        if ('sandbox' in window.workbook) return null;
+        await new Promise((resolve) => setTimeout(resolve, 800));
+      }
+      return last;
+    }""")
+    assert last is not None, "the sandbox started while the learner was checking answers"
+    page.wait_for_function("() => window.workbook.sandbox && window.workbook.sandbox.ready", timeout=LONG)
+    assert page.evaluate("workbook.sandbox.startedAt") >= last + 3000
+    # Moving into a Build exercise starts it without waiting.
+    page.reload()
+    wait_runtime(page)
+    assert page.evaluate("""() => {
+      document.querySelector('[data-exercise-id="0.1"] [data-role="check"]').click(); // the grader busy
+      document.querySelector('[data-exercise-id="0.5"] [data-role="run"]').focus();
+      return 'sandbox' in window.workbook;
+    }""")
 
 
 def test_runs_that_queue_up_are_sent_one_at_a_time(lab):

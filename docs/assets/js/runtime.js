@@ -46,6 +46,8 @@ function timeoutReply(entry, how) {
 const crashReply = () =>
   failure(ERROR.crash, "The Python runtime crashed while running this; it was restarted. Your code is kept.");
 
+const QUIET_POLL_MS = 100; // quietFor looks again at least this long after a busy moment
+
 export class Runtime {
   /**
    * `workerURL`: the worker's script, or a function that starts the worker; `early`: a worker
@@ -67,6 +69,7 @@ export class Runtime {
     this.interrupts = 0; // runs stopped by KeyboardInterrupt
     this.lastStop = null; // "interrupt" | "terminate"
     this.wasmModule = null; // once ready: the compiled WebAssembly its worker started from, when it says
+    this.lastActivityAt = performance.now(); // the last request sent or answered (quietFor)
     this.spawn(early);
   }
 
@@ -153,6 +156,7 @@ export class Runtime {
       clearTimeout(entry.timer);
       clearTimeout(entry.ackTimer);
       this.pending.delete(data.id);
+      this.lastActivityAt = performance.now();
       const kind = data.reply.ok ? null : data.reply.error.kind;
       if (entry.interrupted) {
         this.interrupts++;
@@ -272,7 +276,25 @@ export class Runtime {
       const msg = { ...request, id: this.nextId++ };
       const entry = { msg, resolve, limitMs, onProgress, timer: null };
       this.pending.set(msg.id, entry);
+      this.lastActivityAt = performance.now();
       if (this.ready) this.send(entry);
+    });
+  }
+
+  /**
+   * Resolves once this runtime has had nothing to do for `ms`: no request waiting or running, and
+   * none sent or answered in the last `ms`. Work that would compete with the learner's Checks (the
+   * sandbox's start: kinds/build.js) waits for it.
+   * @returns {Promise<void>}
+   */
+  quietFor(ms) {
+    return new Promise((resolve) => {
+      const check = () => {
+        const since = performance.now() - this.lastActivityAt;
+        if (this.pending.size === 0 && since >= ms) resolve();
+        else setTimeout(check, Math.max(QUIET_POLL_MS, ms - since));
+      };
+      check();
     });
   }
 }

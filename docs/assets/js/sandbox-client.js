@@ -9,8 +9,9 @@
 //   grader  {op: "run-figure", exercise, outputs}         -> {figure} (asked for by kinds/build.js)
 //
 // The sandbox (sandbox.js) is one worker per tab, started on a page with a Build
-// exercise once the grader is ready and the page is idle (or when the learner
-// moves into one, or at the first Run, if that comes first), from a blob: URL, so
+// exercise once the grader is ready and has been quiet for a while and the page is
+// idle (kinds/build.js), or when the learner moves into one, or at the first Run, if
+// that comes first; from a blob: URL, so
 // that it inherits the page's Content-Security-Policy. It starts from a memory
 // snapshot of its own when that is stored or the link is fast (the grader's
 // measure of the link is passed on), and from the grader's compiled WebAssembly

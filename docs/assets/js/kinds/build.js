@@ -15,10 +15,18 @@ import { delay, idle, runtimeReady, runtimeSettled } from "../wait.js";
 
 const EDITOR_WAITS_MS = 8000; // a slow start of the grader should not keep the editor away for long
 const IDLE_MS = 1500;
+// The sandbox's start takes a core for about a second (several on a phone). Started while the learner
+// is checking answers, it made those Checks 5-10 times slower until it was done (3.8's round trip:
+// 2-3 ms, 20-45 ms meanwhile): so, unless the learner asks for it, it waits until the grader has had
+// nothing to do for this long.
+const GRADER_QUIET_MS = 3000;
 // The editor, once the grader has settled (or a while has passed) and the browser is idle.
 const editorMayOpen = () => Promise.race([runtimeSettled(), delay(EDITOR_WAITS_MS)]).then(() => idle(IDLE_MS));
-// The sandbox, once the grader is ready (its start must not compete with the grader's) and the browser is idle.
-const sandboxMayStart = () => runtimeReady().then(() => idle(IDLE_MS));
+// The sandbox, once the grader is ready (its start must not compete with the grader's) and quiet (nor
+// with the learner's Checks), and the browser is idle.
+const sandboxMayStart = (grader) => runtimeReady()
+  .then(() => (typeof grader.quietFor === "function" ? grader.quietFor(GRADER_QUIET_MS) : undefined))
+  .then(() => idle(IDLE_MS));
 
 /** The plain code first, the editor when it is wanted; `code()` is always the latest text. */
 function lazyEditor(ctx, host, onRun) {
@@ -89,16 +97,16 @@ export function init(ctx) {
   // This exercise's runs go through the sandbox (`via` below); ctx.runtime stays the grader's, which the page shares.
   const sandboxed = withSandbox(ctx.runtime);
   // The sandbox is a second Python (about 21 MB): it starts once a Build exercise is within a
-  // screen and a half of the viewport, the grader is ready and the browser idle, so that it
-  // is ready by the time the learner reaches the code (from its snapshot it takes about a
-  // second; sandbox-client.js); at once if the learner moves into a Build exercise or runs
-  // one. A page read elsewhere never pays for it. A Run that still has to wait for it shows
-  // its start, as a Check shows the grader's.
+  // screen and a half of the viewport, the grader is ready and has been quiet for a while, and
+  // the browser is idle, so that it is ready by the time the learner reaches the code (from its
+  // snapshot it takes about a second; sandbox-client.js); at once if the learner moves into a
+  // Build exercise or runs one. A page read elsewhere never pays for it. A Run that still has
+  // to wait for it shows its start, as a Check shows the grader's.
   const prepare = () => sandboxed.prepare();
   const nearSandbox = new IntersectionObserver((entries) => {
     if (!entries.some((entry) => entry.isIntersecting)) return;
     nearSandbox.disconnect();
-    sandboxMayStart().then(prepare);
+    sandboxMayStart(ctx.runtime).then(prepare);
   }, { rootMargin: "150% 0px" });
   nearSandbox.observe(ctx.el);
   ctx.el.addEventListener("focusin", prepare, { once: true });
