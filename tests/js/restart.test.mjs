@@ -37,3 +37,22 @@ test("a worker started without the head's has no name to pass on", () => {
   runtime.replace();
   assert.deepEqual(made.map((m) => m.options?.name), ["", ""]);
 });
+
+test("once the page has started, a successor is told so at once, and a first worker only when it is", () => {
+  const sent = [];
+  globalThis.Worker = class {
+    postMessage(message) {
+      sent.push(message);
+    }
+    terminate() {}
+  };
+  const runtime = new Runtime(URL_, null, { role: "sandbox" });
+  const told = () => sent.filter((m) => m?.type === "page-started").length;
+  assert.equal(told(), 0); // the page has not started yet: Python's start waits (worker.js)
+  runtime.replace();
+  assert.equal(told(), 0);
+  runtime.pageStarted();
+  assert.equal(told(), 1);
+  runtime.replace(); // a successor must not wait for a start that happened long ago
+  assert.equal(told(), 2);
+});

@@ -8,9 +8,9 @@ from __future__ import annotations
 from node_tests import run_node_test
 
 
-def test_a_replaced_worker_gets_the_first_one_s_name():
+def test_a_replaced_worker_gets_the_first_one_s_name_and_is_told_the_page_has_started():
     out = run_node_test("restart.test.mjs", timeout=60)
-    assert "# fail 0" in out and "# pass 2" in out, out[-3000:]
+    assert "# fail 0" in out and "# pass 3" in out, out[-3000:]
 
 
 def test_a_sandbox_started_for_a_run_is_told_so_and_its_replacement_is_not():

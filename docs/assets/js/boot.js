@@ -3,10 +3,9 @@
 //   const { py, from, why, stages, step, module } =
 //     await startPyodide({ indexURL, stdLibURL, snapshotURL, onProgress });
 //
-// Both workers start here: the grader (worker.js: the core standard library and a
-// snapshot) and the sandbox for learners' code (sandbox.js: its own standard
-// library, lock file and snapshot, Python's output silenced: `lockFileURL`,
-// `quiet`).
+// Both workers start here: the grader (worker.js: the core standard library and a snapshot) and the
+// sandbox for learners' code (sandbox.js: its own standard library, lock file and snapshot, Python's
+// output silenced: `lockFileURL`, `quiet`).
 // - `stdLibURL`: the standard library zip to start with (the grader: the small
 //   core of scripts/split_stdlib.py, which holds the grading package too);
 //   `compiledStdLibURL`: the same compiled, for a plain start where the link
@@ -21,6 +20,8 @@
 //   result's `module` is the one this start used, for the caller to share.
 // - `controlled`: the page is under the service worker, so its stored copy is
 //   likely (the WebAssembly is then looked up there before it is downloaded).
+// - `startAfter`: a promise Python's start waits for (the grader's on a first visit: the page's own
+//   start, worker.js); the WebAssembly's download goes on meanwhile. `stages.held`: when it ended.
 // - `onProgress({phase, loaded, total, step})`: phase "download" (bytes of the runtime
 //   files, counted as they arrive), "start" (Python starting), then the caller
 //   says "ready"; `step` (boot-steps.js) what is happening now: the start's steps
@@ -237,23 +238,19 @@ function mountZip(py, bytes, name) {
 }
 
 // ---- The WebAssembly -------------------------------------------------------------------
-// Pyodide 0.27 reads the whole snapshot before it starts compiling its
-// WebAssembly. When the service worker has stored the WebAssembly, compiling it
-// meanwhile takes that wait off the critical path: the compile starts here,
-// Pyodide's own fetch of the file gets a stand-in response, and its
-// instantiateStreaming call with that stand-in is answered with the module
-// compiled here. On a first visit Pyodide compiles it as usual (compiling early
-// then competed with the downloads and was slower). Either way its download
-// starts here, with the worker: Pyodide asks for the file only once
-// pyodide.asm.js has arrived and run, and asking the cache first takes a while
-// on a first visit, which on a slow link left the largest file of the start to
-// begin 1.6 s after the others (on a first visit its bytes are counted for the
-// progress bar). If the compile here fails, Pyodide compiles after all. A module
-// the caller already has (`given`) is used at once:
-// nothing is fetched or compiled, and the compiled code (with what the browser has
-// optimised of it since) is shared, not made again. `used.module` is the module
-// the start instantiated, however it came.
-function patchWasm(url, meter, compiledStep, given, used, core, controlled) {
+// Pyodide 0.27 reads the whole snapshot before it starts compiling its WebAssembly. When the service
+// worker has stored the WebAssembly, compiling it meanwhile takes that wait off the critical path: the
+// compile starts here, Pyodide's own fetch of the file gets a stand-in response, and its
+// instantiateStreaming call with that stand-in is answered with the module compiled here. On a first
+// visit Pyodide compiles it as usual (compiling early then competed with the downloads and was slower).
+// Either way its download starts here, with the worker: Pyodide asks for the file only once
+// pyodide.asm.js has arrived and run, and asking the cache first takes a while on a first visit, which
+// on a slow link left the largest file of the start to begin 1.6 s after the others (on a first visit
+// its bytes are counted for the progress bar). If the compile here fails, Pyodide compiles after all. A
+// module the caller already has (`given`) is used at once: nothing is fetched or compiled, and the
+// compiled code (with what the browser has optimised of it since) is shared, not made again.
+// `used.module` is the module the start instantiated, however it came.
+function patchWasm(url, meter, compiledStep, given, used, core, controlled, waiting) {
   const realFetch = self.fetch;
   const { instantiateStreaming: realInstantiate } = WebAssembly;
   const counted = (resource, init) => {
@@ -269,6 +266,9 @@ function patchWasm(url, meter, compiledStep, given, used, core, controlled) {
   const abort = new AbortController();
   const fresh = () => realFetch(url, { credentials: "same-origin", signal: abort.signal });
   let download = given || controlled ? null : fresh();
+  // While Python's start is `waiting`, nothing reads the download: counting it from the start keeps its bytes coming.
+  const countedEarly = Boolean(download && waiting);
+  if (countedEarly) download = download.then((response) => meter.watch(meter.fileName(url), response));
   download?.catch(() => {}); // reported where it is used
   const takeDownload = () => {
     const mine = download ?? fresh();
@@ -293,7 +293,8 @@ function patchWasm(url, meter, compiledStep, given, used, core, controlled) {
     self.fetch = realFetch;
     WebAssembly.instantiateStreaming = realInstantiate;
   };
-  const countedDownload = () => takeDownload().then((response) => meter.watch(meter.fileName(url), response));
+  const countedDownload = () => (countedEarly ? takeDownload()
+    : takeDownload().then((response) => meter.watch(meter.fileName(url), response)));
   self.fetch = (resource, init) => {
     if (String(resource) === url) return stored.then((hit) => (hit ? standIn : countedDownload()));
     const held = core.held(resource);
@@ -329,7 +330,7 @@ function patchWasm(url, meter, compiledStep, given, used, core, controlled) {
 export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = null, compiledPackageURL = null,
   snapshotURL = null,
   onProgress = null, lockFileURL = null, quiet = false, linkSpeed: knownSpeed = null, module: given = null,
-  controlled = false }) {
+  controlled = false, startAfter = null }) {
   const wasmURL = indexURL + "pyodide.asm.wasm";
   const lock = lockFileURL ? fileIn(indexURL, lockFileURL) : "pyodide-lock.json"; // the lock this start reads
   const files = ["pyodide.js", "pyodide.asm.js", "pyodide.asm.wasm", lock, fileIn(indexURL, stdLibURL)];
@@ -345,7 +346,7 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
   const core = coreChoice(stdLibURL, compiledStdLibURL, meter, compiledPackageURL);
   download?.stored.then((hit) => hit && core.choose(false, null)); // a stored snapshot is used: the sources, at once
   const unpatch = patchWasm(wasmURL, meter, () => (skipped ? BOOT_STEP.boot : BOOT_STEP.restore), given, used, core,
-    controlled);
+    controlled, Boolean(startAfter));
   importScripts(indexURL + "pyodide.js");
   meter.done("pyodide.js");
   mark("pyodide.js");
@@ -371,6 +372,10 @@ export async function startPyodide({ indexURL, stdLibURL, compiledStdLibURL = nu
     },
   });
   const step = (name) => meter.step(name);
+  if (startAfter) {
+    await startAfter;
+    mark("held"); // when the wait ended
+  }
   try {
     const py = await loadPyodide(options);
     if (skipped) {

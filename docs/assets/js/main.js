@@ -23,6 +23,7 @@ import { learnerProgress } from "./lms/learner.js";
 import { renderMath } from "./math.js";
 import { initSearchStart } from "./search-start.js";
 import { initApp } from "./app.js";
+import { idle } from "./wait.js";
 
 const siteRoot = window.__workbookBase || new URL("../../", import.meta.url).href;
 // In an LMS (the SCORM package, lms/): the page keeps the record of the learner the LMS names
@@ -50,6 +51,7 @@ function showRuntimeProblem(message) {
   }
 }
 
+const PAGE_IDLE_MS = 1000; // Python's start waits for the page's idle moment this long at most
 let runtime = null;
 if (typeof Worker === "undefined") {
   setRootState("runtime", RUNTIME.failed);
@@ -58,6 +60,11 @@ if (typeof Worker === "undefined") {
   window.__workbookEarly = null;
   runtime = new Runtime(new URL("assets/dist/worker.js", siteRoot), early);
   runtime.announce([...exercises()].map((el) => el.getAttribute(ATTR.exercise)));
+  // The page has started once, after DOMContentLoaded (the theme's own start-up work), the browser is
+  // idle: then Python's start may take the CPU (worker.js).
+  const started = () => idle(PAGE_IDLE_MS).then(() => runtime.pageStarted());
+  if (document.readyState === "loading") document.addEventListener("DOMContentLoaded", started, { once: true });
+  else started();
 }
 window.workbook = { runtime, progress, checkScrollRegionsNow, lms: null };
 lmsSession?.then((session) => { window.workbook.lms = session; }, (err) => {

@@ -70,6 +70,7 @@ export class Runtime {
     this.lastStop = null; // "interrupt" | "terminate"
     this.wasmModule = null; // once ready: the compiled WebAssembly its worker started from, when it says
     this.lastActivityAt = performance.now(); // the last request sent or answered (quietFor)
+    this.started = false; // whether the page said it has started (pageStarted)
     this.spawn(early);
   }
 
@@ -105,12 +106,20 @@ export class Runtime {
       this.interrupt = new Int32Array(new SharedArrayBuffer(8));
       this.worker.postMessage({ type: "interrupt-buffer", buffer: this.interrupt });
     }
+    if (this.started) worker.postMessage({ type: "page-started" }); // a successor: the page started long ago
     if (early) for (const data of early.messages.splice(0)) this.receive(data);
   }
 
   /** Name the page's exercises, so that the worker warms up for them (worker.js). */
   announce(ids) {
     this.worker.postMessage({ type: "page", ids });
+  }
+
+  /** The page has started (after DOMContentLoaded): the worker's Python may start now (worker.js); so
+   *  may every later worker's, at once. */
+  pageStarted() {
+    this.started = true;
+    this.worker.postMessage({ type: "page-started" });
   }
 
   /** The worker's start, as it goes: {phase, loaded, total, step} (boot.js, boot-steps.js); an event each
