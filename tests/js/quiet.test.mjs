@@ -22,12 +22,13 @@ const URL_ = new URL("https://example.org/workbook/assets/dist/worker.js");
 const QUIET_MS = 150;
 const sleep = (ms) => new Promise((resolve) => setTimeout(resolve, ms));
 
-/** A runtime whose worker said it is ready; `settled()` tells whether quietFor has resolved yet. */
+/** A runtime whose worker said it is ready. */
 function readyRuntime() {
   const runtime = new Runtime(URL_, null, { role: "sandbox" });
   runtime.receive({ type: "ready" });
   return runtime;
 }
+/** `done`: whether `promise` (a quietFor) has resolved yet. */
 function watch(promise) {
   const state = { done: false };
   promise.then(() => { state.done = true; });

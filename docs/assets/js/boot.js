@@ -268,7 +268,8 @@ function patchWasm(url, meter, compiledStep, given, used, core, controlled, wait
   let download = given || controlled ? null : fresh();
   // While Python's start is `waiting`, nothing reads the download: counting it from the start keeps its bytes coming.
   const countedEarly = Boolean(download && waiting);
-  if (countedEarly) download = download.then((response) => meter.watch(meter.fileName(url), response));
+  const watched = (response) => meter.watch(meter.fileName(url), response);
+  if (countedEarly) download = download.then(watched);
   download?.catch(() => {}); // reported where it is used
   const takeDownload = () => {
     const mine = download ?? fresh();
@@ -293,8 +294,7 @@ function patchWasm(url, meter, compiledStep, given, used, core, controlled, wait
     self.fetch = realFetch;
     WebAssembly.instantiateStreaming = realInstantiate;
   };
-  const countedDownload = () => (countedEarly ? takeDownload()
-    : takeDownload().then((response) => meter.watch(meter.fileName(url), response)));
+  const countedDownload = () => (countedEarly ? takeDownload() : takeDownload().then(watched));
   self.fetch = (resource, init) => {
     if (String(resource) === url) return stored.then((hit) => (hit ? standIn : countedDownload()));
     const held = core.held(resource);

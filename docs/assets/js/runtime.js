@@ -70,7 +70,7 @@ export class Runtime {
     this.lastStop = null; // "interrupt" | "terminate"
     this.wasmModule = null; // once ready: the compiled WebAssembly its worker started from, when it says
     this.lastActivityAt = performance.now(); // the last request sent or answered (quietFor)
-    this.started = false; // whether the page said it has started (pageStarted)
+    this.pageHasStarted = false; // whether the page said so (pageStarted)
     this.spawn(early);
   }
 
@@ -106,7 +106,7 @@ export class Runtime {
       this.interrupt = new Int32Array(new SharedArrayBuffer(8));
       this.worker.postMessage({ type: "interrupt-buffer", buffer: this.interrupt });
     }
-    if (this.started) worker.postMessage({ type: "page-started" }); // a successor: the page started long ago
+    if (this.pageHasStarted) worker.postMessage({ type: "page-started" }); // a successor: the page started long ago
     if (early) for (const data of early.messages.splice(0)) this.receive(data);
   }
 
@@ -118,7 +118,7 @@ export class Runtime {
   /** The page has started (after DOMContentLoaded): the worker's Python may start now (worker.js); so
    *  may every later worker's, at once. */
   pageStarted() {
-    this.started = true;
+    this.pageHasStarted = true;
     this.worker.postMessage({ type: "page-started" });
   }
 

@@ -46,8 +46,9 @@ const reportBoot = (progress) => self.postMessage({ type: "boot", ...progress })
 // page says it has started ({type: "page-started"}, after DOMContentLoaded: main.js), PAGE_WAIT_MS at
 // most. The WebAssembly's download does not wait (boot.js keeps its bytes meanwhile).
 const PAGE_WAIT_MS = 3000;
+const controlled = told.get("sw") === "1";
 let pageStarted;
-const pageHasStarted = told.get("sw") === "1" ? null : new Promise((resolve) => {
+const pageHasStarted = controlled ? null : new Promise((resolve) => {
   pageStarted = resolve;
   setTimeout(resolve, PAGE_WAIT_MS);
 });
@@ -70,7 +71,7 @@ const ready = (async () => {
   const t0 = performance.now();
   const started = await startPyodide({ indexURL, stdLibURL: STDLIB_CORE, compiledStdLibURL: STDLIB_CORE_COMPILED,
     compiledPackageURL: indexURL + (chapterPackage ?? PACKAGE_COMPILED), snapshotURL: SNAPSHOT,
-    onProgress: reportBoot, controlled: told.get("sw") === "1", startAfter: pageHasStarted });
+    onProgress: reportBoot, controlled, startAfter: pageHasStarted });
   pyodide = started.py;
   started.step(BOOT_STEP.import); // the grading package and this page's exercises
   lazyStdlib = pyodide.pyimport("workbook_sandbox.lazy_stdlib");
