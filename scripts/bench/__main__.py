@@ -136,6 +136,7 @@ def measure_profile(args, pw, profile, runs: int, site: Path, mounts: dict, dead
     seen["profiles"][profile.name] = phases.runs
     seen["version"] = seen["version"] or browsers.version
     seen["executable"] = browsers.executable
+    seen["args"] = browsers.args
     seen["external"] += browsers.external
     seen["page_errors"] += browsers.page_errors
 
@@ -155,7 +156,7 @@ def build_report(args, seen: dict, started: dt.datetime, t0: float, machine: dic
         "duration_s": round(time.monotonic() - t0, 1),
         "machine": machine,
         "browser": {"name": "chromium", "version": seen["version"], "executable": seen["executable"],
-                    "args": CHROMIUM_ARGS, "headless": True},
+                    "args": seen.get("args", CHROMIUM_ARGS), "headless": True},
         "git": git_info(),
         "config": {"runs": args.runs, "checks": args.checks, "build_repeats": args.build_repeats,
                    "server": "Python ThreadingHTTPServer, HTTP/1.1 keep-alive, Cache-Control: max-age=600, "

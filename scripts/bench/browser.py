@@ -10,7 +10,15 @@ from find_browser import find_browser
 from workbook.contract import ATTR
 
 from . import pagejs
-from .config import BASELINE_PATH, CHROMIUM_ARGS, DEAD_PROXY, READY_TIMEOUT_MS, STOCK_PATH, SUBPATH
+from .config import (
+    BASELINE_PATH,
+    BROWSER_UI_FEATURES_OFF,
+    CHROMIUM_ARGS,
+    DEAD_PROXY,
+    READY_TIMEOUT_MS,
+    STOCK_PATH,
+    SUBPATH,
+)
 from .cpu_limit import CpuLimit, open_limit
 from .records import attribute_long_tasks, net_summary
 
@@ -19,6 +27,27 @@ RUNTIME = f"document.documentElement.getAttribute({ATTR.runtime!r})"
 
 class BenchError(RuntimeError):
     pass
+
+
+FEATURES_OFF = "--disable-features="
+
+
+def launch_args(pw, executable: str) -> tuple[list[str], list[str]]:
+    """The browser's flags, and Playwright's defaults to leave out: CHROMIUM_ARGS, with BROWSER_UI_FEATURES_OFF
+    added to the features Playwright switches off. Chromium reads only the last --disable-features, so the
+    two lists are merged into one flag, in place of Playwright's; its list is read from a browser it
+    starts (CDP Browser.getBrowserCommandLine, which needs --enable-automation), so a newer Playwright's list
+    is kept too."""
+    browser = pw.chromium.launch(executable_path=executable, headless=True,
+                                 args=[*CHROMIUM_ARGS, "--enable-automation"])
+    try:
+        line = browser.new_browser_cdp_session().send("Browser.getBrowserCommandLine")["arguments"]
+    finally:
+        browser.close()
+    theirs = [a for a in line if a.startswith(FEATURES_OFF)]
+    off = [f for a in theirs for f in a[len(FEATURES_OFF):].split(",") if f]
+    merged = FEATURES_OFF + ",".join(dict.fromkeys([*off, *BROWSER_UI_FEATURES_OFF]))
+    return [*CHROMIUM_ARGS, merged], theirs
 
 
 class Browsers:
@@ -33,6 +62,7 @@ class Browsers:
         if not exe:
             raise BenchError("no Chromium found: install Debian's chromium (or `playwright install chromium`)")
         self.executable = exe
+        self.args, self.ignore_default_args = launch_args(pw, exe)
         self.version = ""
         self.service_workers = "allow"  # "block" measures the HTTP cache alone
         self.cpu_slowdown = cpu_slowdown  # > 1: CDP Emulation.setCPUThrottlingRate on every page
@@ -67,7 +97,7 @@ class Browsers:
         try:
             ctx = self.pw.chromium.launch_persistent_context(
                 profile, executable_path=str(self.cpu_limit.wrapper) if self.cpu_limit else self.executable,
-                args=CHROMIUM_ARGS, headless=True, proxy=DEAD_PROXY,
+                args=self.args, ignore_default_args=self.ignore_default_args, headless=True, proxy=DEAD_PROXY,
                 service_workers=self.service_workers)
         except Exception:
             shutil.rmtree(profile, ignore_errors=True)

@@ -16,6 +16,10 @@ STOCK_PATH = "/stock/"  # chapter 0 on the stock theme (stock_page.py)
 # The tests' flags (tests/browser/conftest.py).
 CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networking", "--disable-component-update",
                  "--disable-sync", "--no-first-run", "--disable-quic"]
+# Features of the full browser's own interface switched off, on top of Playwright's list (as Puppeteer does by
+# default): the address bar's popup is a WebUI page that the full Chromium renders in a renderer of its own
+# for each new tab, about 1 s of CPU on this 2-core machine that competed with the page measured (browser.py).
+BROWSER_UI_FEATURES_OFF = ("WebUIOmniboxPopup", "WebUIOmniboxAimPopup")
 # Nothing listens on port 9 ("discard"): every request that is not to 127.0.0.1 fails.
 DEAD_PROXY = {"server": "http://127.0.0.1:9", "bypass": "127.0.0.1"}
 # What GitHub Pages sends.
