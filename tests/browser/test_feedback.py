@@ -99,3 +99,27 @@ def test_memory_error_is_a_verdict_and_the_sandbox_replaced(tour):
     assert "2 ** 30" in editor_code(ex)
     set_editor(page, ex, bank.get("0.5").solution)
     assert run_build(ex, timeout=60_000) == "correct"
+
+
+# The exercise's height in each state its Check takes it through, with the last result's feedback in place.
+HEIGHTS = """(el) => {
+  const kept = el.getAttribute('data-state');
+  const out = {};
+  for (const state of ['pending', 'incorrect', 'correct', 'invalid']) {
+    el.setAttribute('data-state', state);
+    out[state] = el.getBoundingClientRect().height;
+  }
+  el.setAttribute('data-state', kept);
+  return out;
+}"""
+
+
+def test_checking_again_does_not_move_the_page(tour):
+    """While a Check waits ("checking…") the exercise keeps its height: nothing below it moves, and the
+    theme does not measure the whole page again (its table of contents follows the page's size). The
+    label of the pending state made the card 1.8 px taller and shorter again on every Check."""
+    page = tour(3)
+    ex = exercise(page, "3.4")
+    assert answer_derive(ex, "1.11") == "incorrect"  # a result with its feedback shown
+    heights = ex.evaluate(HEIGHTS)
+    assert len(set(heights.values())) == 1, heights
