@@ -18,7 +18,7 @@ CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-background-networki
                  "--disable-sync", "--no-first-run", "--disable-quic"]
 # Features of the full browser's own interface switched off, on top of Playwright's list (as Puppeteer does by
 # default): the address bar's popup is a WebUI page that the full Chromium renders in a renderer of its own
-# for each new tab, about 1 s of CPU on this 2-core machine that competed with the page measured (browser.py).
+# for the pages the bench opens, about 1 s of CPU on this 2-core machine that competed with the page measured.
 BROWSER_UI_FEATURES_OFF = ("WebUIOmniboxPopup", "WebUIOmniboxAimPopup")
 # Nothing listens on port 9 ("discard"): every request that is not to 127.0.0.1 fails.
 DEAD_PROXY = {"server": "http://127.0.0.1:9", "bypass": "127.0.0.1"}
