@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import functools
 import shutil
 import tempfile
 from typing import Any
@@ -32,12 +33,13 @@ class BenchError(RuntimeError):
 FEATURES_OFF = "--disable-features="
 
 
+@functools.cache
 def launch_args(pw, executable: str) -> tuple[list[str], list[str]]:
     """The browser's flags, and Playwright's defaults to leave out: CHROMIUM_ARGS, with BROWSER_UI_FEATURES_OFF
     added to the features Playwright switches off. Chromium reads only the last --disable-features, so the
     two lists are merged into one flag, in place of Playwright's; its list is read from a browser it
     starts (CDP Browser.getBrowserCommandLine, which needs --enable-automation), so a newer Playwright's list
-    is kept too."""
+    is kept too. Once per run: every profile's Browsers shares the answer (callers must not change it)."""
     browser = pw.chromium.launch(executable_path=executable, headless=True,
                                  args=[*CHROMIUM_ARGS, "--enable-automation"])
     try:
@@ -62,7 +64,8 @@ class Browsers:
         if not exe:
             raise BenchError("no Chromium found: install Debian's chromium (or `playwright install chromium`)")
         self.executable = exe
-        self.args, self.ignore_default_args = launch_args(pw, exe)
+        args, ignored = launch_args(pw, exe)
+        self.args, self.ignore_default_args = list(args), list(ignored)
         self.version = ""
         self.service_workers = "allow"  # "block" measures the HTTP cache alone
         self.cpu_slowdown = cpu_slowdown  # > 1: CDP Emulation.setCPUThrottlingRate on every page

@@ -57,3 +57,11 @@ def test_without_a_flag_of_playwright_s_the_bench_s_features_are_the_flag():
     args, ignored = launch_args(pw, "/usr/bin/chromium")
     assert ignored == []
     assert args[-1] == "--disable-features=" + ",".join(BROWSER_UI_FEATURES_OFF)
+
+
+def test_the_flags_are_read_once_for_every_profile_of_a_run():
+    pw = FakePlaywright(["/usr/bin/chromium", "--disable-features=PaintHolding"])
+    first = launch_args(pw, "/usr/bin/chromium")
+    pw.launched = {}
+    assert launch_args(pw, "/usr/bin/chromium") == first
+    assert pw.launched == {}  # no second throwaway browser
